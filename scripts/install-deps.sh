@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package MROLR needs to build, test and run. Idempotent: it asks dpkg-query
+# first and calls apt-get only for what is missing, so a second run takes well under a second.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake make pkg-config git
+  libmrpt-dev mrpt-apps mrpt-common
+  libeigen3-dev
+  libopencv-dev libopencv-contrib-dev
+  libopengv-dev
+  liborocos-kdl-dev
+  libgtest-dev libgmock-dev googletest
+  libbenchmark-dev
+  xvfb xauth
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "installed" ] || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: done"
