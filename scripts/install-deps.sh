@@ -6,7 +6,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake make pkg-config git
   libmrpt-dev mrpt-apps mrpt-common
-  libeigen3-dev
+  libeigen3-dev nlohmann-json3-dev
   libopencv-dev libopencv-contrib-dev
   libopengv-dev
   liborocos-kdl-dev

@@ -1,3 +1,4 @@
+#include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
@@ -80,4 +81,17 @@ TEST(Config, RangeCheckNamesKey)
 	const std::string msg =
 		errorOf([&] { mrolr::util::requireInRange(cfg, "s", "good", 1.5, 2, 3); });
 	EXPECT_NE(msg.find("[s] good"), std::string::npos) << msg;
+}
+
+TEST(Cli, NegativeNumbersSurviveAndParse)
+{
+	const char* argv[] = {"prog", "project", "-0.2", "--json", "-3e-4", "-x"};
+	const auto args = mrolr::util::argsWithNegativeNumbersProtected(6, argv);
+	EXPECT_EQ(args[2], " -0.2");
+	EXPECT_EQ(args[3], "--json");
+	EXPECT_EQ(args[5], "-x");
+	EXPECT_DOUBLE_EQ(mrolr::util::parseNumberArg(args[4], "Z"), -3e-4);
+	EXPECT_THROW(mrolr::util::parseNumberArg("1.2.3", "Z"), mrolr::util::UsageError);
+	EXPECT_EQ(mrolr::util::parseNumberList("1,-2,3", 3, "pose").at(1), -2.0);
+	EXPECT_THROW(mrolr::util::parseNumberList("1,2", 3, "pose"), mrolr::util::UsageError);
 }
