@@ -1,5 +1,6 @@
 #include <mrolr/geometry/RayTriangulation.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <sstream>
