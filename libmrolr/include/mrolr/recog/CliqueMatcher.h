@@ -1,0 +1,51 @@
+#pragma once
+/** Clique matching (thesis 6.3.2, paper 3.2): for a model clique, every scene feature that passes
+ * the unary gates of the focus feature is a candidate; each candidate is grown to a maximal set of
+ * scene matches for the other clique members that are pairwise consistent with each other and
+ * with the focus match, no model or scene feature used twice. */
+
+#include <mrolr/recog/ModelTable.h>
+#include <mrolr/recog/RecognitionOptions.h>
+
+#include <vector>
+
+namespace mrolr::recog
+{
+/** A scene prepared for matching: every feature at least the level's length threshold long, in both
+ * orientations (oriented index 2k is feature k as given, 2k+1 flipped). */
+struct OrientedScene
+{
+	std::vector<Feature> features;  ///< the kept scene features
+	std::vector<Feature> oriented;  ///< 2 × features.size()
+};
+
+/** Keeps the features of @p scene at least @p min_len_mm long and adds their flipped copies. */
+OrientedScene orientScene(const std::vector<Feature>& scene, double min_len_mm);
+
+/** One model feature matched to one oriented scene feature. */
+struct FeatureMatch
+{
+	size_t model = 0;  ///< index into ModelTable::features()
+	size_t oriented = 0;  ///< index into OrientedScene::oriented
+	size_t scene() const { return oriented / 2; }
+};
+
+/** A matched clique: the focus match first, then the members found. */
+struct CliqueMatch
+{
+	size_t clique = 0;
+	std::vector<FeatureMatch> matches;
+	double strength_mm = 0;  ///< summed lengths of the matched model features
+};
+
+/** Unary gate: same kind; a scene line no longer than the model line plus 2 beta and, for a focus,
+ * at least length_ratio times it; conic radii within 2 beta + 5 %. */
+bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus);
+
+/** All matches of clique @p clique_index with at least p.clique_size features, largest and
+ * strongest first. @p max_nodes bounds the search per focus candidate. */
+std::vector<CliqueMatch> matchClique(
+	const ModelTable& model, size_t clique_index, const OrientedScene& scene,
+	const LevelParams& p, int max_nodes);
+
+}  // namespace mrolr::recog

@@ -1,0 +1,50 @@
+#pragma once
+/** The seven matching parameters of thesis 6.3.2 / paper 3.2 and their fine-to-coarse schedule of
+ * thesis 6.4 (12 levels by default), read from config/recognition.ini. */
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace mrolr::recog
+{
+/** One confidence level of the search: the seven parameters (a)–(g) plus the verification
+ * threshold that keeps coarse levels from accepting wrong matches. */
+struct LevelParams
+{
+	int clique_size = 4;  ///< (a) minimum matched features in a clique, focus included
+	double position_error_mm = 3;  ///< (b) beta: allowed error on a feature's position (mm)
+	double rotation_deg = 2;  ///< (c) theta: allowed error on a feature's direction (deg)
+	double length_threshold_mm = 10;  ///< (d) scene segments shorter than this are ignored (mm)
+	double max_rotation_deg = 4;  ///< (e) clique transforms closer than this agree (deg)
+	double max_translation_mm = 8;  ///< (f) clique transforms closer than this agree (mm)
+	double length_ratio = 0.5;  ///< (g) focus match: scene length / model length at least this
+	double verify_min_score = 0.3;  ///< supported fraction of the model needed to accept, [0,1]
+};
+
+/** Options of the Recognizer (section [recognition] of config/recognition.ini). */
+struct RecognitionOptions
+{
+	/** The levels, finest first; the search stops at the first level that recognises. */
+	std::vector<LevelParams> levels;
+	/** Pose estimator for clique hypotheses: "faugeras_hebert", "arun" (OpenGV) or "both". */
+	std::string pose_method = "faugeras_hebert";
+	int auto_clique_count = 12;  ///< cliques chosen automatically when a model has none
+	int auto_clique_size = 7;  ///< features per automatic clique, focus included
+	int max_search_nodes = 4000;  ///< budget of the maximal-consistent-set search per focus match
+	int refine_iterations = 2;  ///< least-squares refinements on the verified correspondences
+
+	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
+	static RecognitionOptions defaults();
+
+	/** Reads the keys of @p section; each per-level key holds `levels` numbers. Throws
+	 * util::ConfigError naming file, section and key for missing or bad values. */
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+
+	/** Writes the options as `key = values` lines. */
+	void dump(std::ostream& out) const;
+};
+
+}  // namespace mrolr::recog

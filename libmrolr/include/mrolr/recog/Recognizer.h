@@ -1,0 +1,62 @@
+#pragma once
+/** Recognition of one object model in scene wire-frames (thesis 6.3–6.4, paper 3.2–3.3): clique
+ * matching, Faugeras–Hebert (and/or OpenGV Arun) poses, clustering of agreeing clique transforms,
+ * verification of the whole model in the scene, all repeated over the fine-to-coarse levels until
+ * recognition; and the search over the scene models of a pan sweep. Unlike the thesis, every
+ * answer carries a confidence and an absent object is reported as not found. */
+
+#include <mrolr/recog/ModelTable.h>
+#include <mrolr/recog/RecognitionOptions.h>
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace mrolr::recog
+{
+struct RecognitionResult
+{
+	std::string model;
+	bool found = false;
+	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< model → scene frame (mm)
+	double score = 0;  ///< verified fraction of the model's length supported by the scene
+	int matched = 0;  ///< model features supported in the scene
+	int level = 0;  ///< 1-based level that recognised (0 when not found)
+	double confidence = 0;  ///< score × (1 − 0.5 (level − 1)/(levels − 1)); 0 when not found
+	int agreeing_cliques = 0;  ///< clique transforms in the winning cluster
+	double spread_rot_deg = 0;  ///< RMS spread of those transforms (deg)
+	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
+	int scene_index = -1;  ///< which scene of a sweep held it (-1 when not found)
+	double ms = 0;  ///< wall time of the search (ms)
+};
+
+class Recognizer
+{
+   public:
+	/** Builds the model's pairwise tables and cliques once. Throws std::invalid_argument for a
+	 * model that cannot be matched (fewer than two features, degenerate elements, bad cliques). */
+	Recognizer(const model::WireFrame& model, const RecognitionOptions& opts);
+
+	/** Runs the levels fine to coarse on one scene and stops at the first that recognises. */
+	RecognitionResult recognize(const model::WireFrame& scene) const;
+	RecognitionResult recognize(const std::vector<Feature>& scene) const;
+
+	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's
+	 * verify_min_score. */
+	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level) const;
+
+	/** Thesis 6.4: scene models of a pan sweep in order; the first scene where the object is
+	 * recognised ends the search. */
+	RecognitionResult searchSweep(const std::vector<model::WireFrame>& scenes) const;
+
+	const ModelTable& table() const { return table_; }
+	const RecognitionOptions& options() const { return opts_; }
+
+   private:
+	ModelTable table_;
+	RecognitionOptions opts_;
+	Eigen::Vector3d centroid_O_;
+};
+
+}  // namespace mrolr::recog

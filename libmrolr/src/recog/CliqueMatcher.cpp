@@ -1,0 +1,157 @@
+#include <mrolr/recog/CliqueMatcher.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrolr::recog
+{
+namespace
+{
+Tolerance toleranceOf(const LevelParams& p)
+{
+	return {p.position_error_mm, p.rotation_deg * M_PI / 180.0};
+}
+
+/** Depth-first search for the largest pairwise-consistent choice of one candidate (or none) per
+ * clique member, with a node budget. */
+class ConsistentSetSearch
+{
+   public:
+	ConsistentSetSearch(
+		const ModelTable& m, const OrientedScene& s, const Tolerance& t, int max_nodes)
+		: model_(m), scene_(s), tol_(t), budget_(max_nodes)
+	{
+	}
+
+	std::vector<FeatureMatch> run(
+		const FeatureMatch& focus, const std::vector<std::vector<FeatureMatch>>& candidates)
+	{
+		cands_ = candidates;
+		std::sort(cands_.begin(), cands_.end(), [](const auto& a, const auto& b) {
+			return a.size() < b.size();
+		});
+		chosen_ = {focus};
+		best_ = chosen_;
+		dfs(0);
+		return best_;
+	}
+
+   private:
+	bool fits(const FeatureMatch& c) const
+	{
+		for (const auto& x : chosen_)
+		{
+			if (x.scene() == c.scene()) return false;
+			const auto& rel = model_.relation(x.model, c.model);
+			const auto& mf = model_.features();
+			if (!consistent(
+					rel, mf[x.model], mf[c.model], scene_.oriented[x.oriented],
+					scene_.oriented[c.oriented], tol_))
+				return false;
+		}
+		return true;
+	}
+
+	void dfs(size_t k)
+	{
+		if (chosen_.size() > best_.size()) best_ = chosen_;
+		if (k == cands_.size() || --budget_ <= 0) return;
+		if (chosen_.size() + (cands_.size() - k) <= best_.size()) return;
+		for (const auto& c : cands_[k])
+		{
+			if (!fits(c)) continue;
+			chosen_.push_back(c);
+			dfs(k + 1);
+			chosen_.pop_back();
+			if (budget_ <= 0) return;
+		}
+		dfs(k + 1);
+	}
+
+	const ModelTable& model_;
+	const OrientedScene& scene_;
+	Tolerance tol_;
+	int budget_;
+	std::vector<std::vector<FeatureMatch>> cands_;
+	std::vector<FeatureMatch> chosen_, best_;
+};
+
+/** Scene matches of member j consistent with the focus match. */
+std::vector<FeatureMatch> memberCandidates(
+	const ModelTable& model, size_t j, const FeatureMatch& focus, const OrientedScene& scene,
+	const LevelParams& p, const Tolerance& tol)
+{
+	const auto& mf = model.features();
+	const auto& rel = model.relation(focus.model, j);
+	std::vector<FeatureMatch> out;
+	for (size_t o = 0; o < scene.oriented.size(); ++o)
+	{
+		if (o / 2 == focus.scene()) continue;
+		const Feature& s = scene.oriented[o];
+		if (!passesUnaryGate(mf[j], s, p, false)) continue;
+		if (consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented], s, tol))
+			out.push_back({j, o});
+	}
+	return out;
+}
+
+double strengthOf(const ModelTable& model, const std::vector<FeatureMatch>& ms)
+{
+	double s = 0;
+	for (const auto& m : ms) s += model.features()[m.model].len_mm;
+	return s;
+}
+}  // namespace
+
+OrientedScene orientScene(const std::vector<Feature>& scene, double min_len_mm)
+{
+	OrientedScene s;
+	for (const auto& f : scene)
+	{
+		if (f.len_mm < min_len_mm) continue;
+		s.features.push_back(f);
+		s.oriented.push_back(f);
+		s.oriented.push_back(f.flipped());
+	}
+	return s;
+}
+
+bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus)
+{
+	if (m.kind != s.kind) return false;
+	const double b2 = 2 * p.position_error_mm;
+	if (s.len_mm > m.len_mm + b2 + (m.isLine() ? 0.0 : 0.05 * m.len_mm)) return false;
+	if (focus && s.len_mm < p.length_ratio * m.len_mm) return false;
+	if (m.isLine()) return true;
+	const double rtol = b2 + 0.05 * m.a_mm;
+	return std::abs(s.a_mm - m.a_mm) <= rtol && std::abs(s.b_mm - m.b_mm) <= rtol;
+}
+
+std::vector<CliqueMatch> matchClique(
+	const ModelTable& model, size_t clique_index, const OrientedScene& scene,
+	const LevelParams& p, int max_nodes)
+{
+	const auto& clique = model.cliques().at(clique_index);
+	const Tolerance tol = toleranceOf(p);
+	const Feature& mfocus = model.features()[clique.focus];
+	std::vector<CliqueMatch> out;
+	for (size_t o = 0; o < scene.oriented.size(); ++o)
+	{
+		if (!passesUnaryGate(mfocus, scene.oriented[o], p, true)) continue;
+		const FeatureMatch focus{clique.focus, o};
+		std::vector<std::vector<FeatureMatch>> cands;
+		for (size_t j : clique.members)
+			cands.push_back(memberCandidates(model, j, focus, scene, p, tol));
+		ConsistentSetSearch search(model, scene, tol, max_nodes);
+		auto ms = search.run(focus, cands);
+		if (static_cast<int>(ms.size()) < p.clique_size) continue;
+		out.push_back({clique_index, ms, strengthOf(model, ms)});
+	}
+	std::sort(out.begin(), out.end(), [](const CliqueMatch& a, const CliqueMatch& b) {
+		if (a.matches.size() != b.matches.size()) return a.matches.size() > b.matches.size();
+		return a.strength_mm > b.strength_mm;
+	});
+	return out;
+}
+
+}  // namespace mrolr::recog

@@ -1,0 +1,128 @@
+#include <mrolr/recog/PairRelation.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrolr::recog
+{
+namespace
+{
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+	return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+}
+
+/** Paper section 3: d, h, q1, q2 and the endpoint intervals of two non-parallel lines. */
+void lineLineSkew(const Feature& a, const Feature& b, PairRelation& r)
+{
+	const Eigen::Vector3d w0 = a.m - b.m;
+	const double c = a.u.dot(b.u), d1 = a.u.dot(w0), e = b.u.dot(w0);
+	const double denom = 1 - c * c;
+	r.q1 = (c * e - d1) / denom;
+	r.q2 = (e - c * d1) / denom;
+	const Eigen::Vector3d d = a.u.cross(b.u).normalized();
+	r.h = (b.m - a.m).dot(d);
+	r.lo1 = -0.5 * a.len_mm - r.q1;
+	r.hi1 = 0.5 * a.len_mm - r.q1;
+	r.lo2 = -0.5 * b.len_mm - r.q2;
+	r.hi2 = 0.5 * b.len_mm - r.q2;
+}
+
+/** Near-parallel lines: the perpendicular distance of b's midpoint from line a. */
+void lineLineParallel(const Feature& a, const Feature& b, PairRelation& r)
+{
+	const Eigen::Vector3d w = b.m - a.m;
+	r.q1 = w.dot(a.u);
+	r.h = (w - r.q1 * a.u).norm();
+}
+
+/** Line l and conic c: foot of the perpendicular from the centre onto the line. */
+void lineConic(const Feature& l, const Feature& c, PairRelation& r)
+{
+	const double f = (c.m - l.m).dot(l.u);
+	const Eigen::Vector3d foot = l.m + f * l.u;
+	r.h = (c.m - foot).norm();
+	r.lo1 = -0.5 * l.len_mm - f;
+	r.hi1 = 0.5 * l.len_mm - f;
+	r.ax1 = (foot - c.m).dot(c.u);
+}
+
+void conicConic(const Feature& a, const Feature& b, PairRelation& r)
+{
+	const Eigen::Vector3d w = b.m - a.m;
+	r.h = w.norm();
+	r.ax1 = w.dot(a.u);
+	r.ax2 = -w.dot(b.u);
+}
+
+bool within(double scene, double model, double tol) { return std::abs(scene - model) <= tol; }
+
+/** A scene segment [lo, hi] must lie inside the model's [lo, hi] widened by tol. */
+bool inside(double slo, double shi, double mlo, double mhi, double tol)
+{
+	return slo >= mlo - tol && shi <= mhi + tol;
+}
+
+bool consistentLineLine(const PairRelation& m, const PairRelation& s, const Tolerance& t)
+{
+	const double tanT = std::tan(t.theta_rad), b2 = 2 * t.beta_mm;
+	if (m.parallel) return within(s.h, m.h, b2 + std::abs(m.q1) * tanT);
+	if (!within(s.h, m.h, b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT)) return false;
+	const double sinA = std::max(std::sin(m.alpha), 1e-3);
+	const double tol1 = b2 + std::abs(m.q2) * tanT / sinA;
+	const double tol2 = b2 + std::abs(m.q1) * tanT / sinA;
+	return inside(s.lo1, s.hi1, m.lo1, m.hi1, tol1) && inside(s.lo2, s.hi2, m.lo2, m.hi2, tol2);
+}
+
+bool consistentLineConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
+{
+	const double tol = 2 * t.beta_mm + (m.h + std::abs(m.ax1)) * std::tan(t.theta_rad);
+	return within(s.h, m.h, tol) && within(s.ax1, m.ax1, tol) &&
+		inside(s.lo1, s.hi1, m.lo1, m.hi1, tol);
+}
+
+bool consistentConicConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
+{
+	const double b2 = 2 * t.beta_mm, tol = b2 + m.h * std::tan(t.theta_rad);
+	return within(s.h, m.h, b2) && within(s.ax1, m.ax1, tol) && within(s.ax2, m.ax2, tol);
+}
+}  // namespace
+
+PairRelation relate(const Feature& a, const Feature& b, bool parallel)
+{
+	PairRelation r;
+	r.alpha = angleBetween(a.u, b.u);
+	r.parallel = parallel;
+	if (a.isLine() && b.isLine())
+		parallel ? lineLineParallel(a, b, r) : lineLineSkew(a, b, r);
+	else if (a.isLine())
+		lineConic(a, b, r);
+	else if (b.isLine())
+		lineConic(b, a, r);
+	else
+		conicConic(a, b, r);
+	return r;
+}
+
+PairRelation relateModel(const Feature& a, const Feature& b)
+{
+	const double alpha = angleBetween(a.u, b.u);
+	const bool parallel = a.isLine() && b.isLine() &&
+		(alpha < kParallelAngle || alpha > M_PI - kParallelAngle);
+	return relate(a, b, parallel);
+}
+
+bool consistent(
+	const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
+	const Feature& sb, const Tolerance& tol)
+{
+	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
+	const double alpha = angleBetween(sa.u, sb.u);
+	if (!within(alpha, m.alpha, 2 * tol.theta_rad)) return false;
+	const PairRelation s = relate(sa, sb, m.parallel);
+	if (ma.isLine() && mb.isLine()) return consistentLineLine(m, s, tol);
+	if (ma.isLine() || mb.isLine()) return consistentLineConic(m, s, tol);
+	return consistentConicConic(m, s, tol);
+}
+
+}  // namespace mrolr::recog

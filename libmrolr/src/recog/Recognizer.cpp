@@ -1,0 +1,153 @@
+#include <mrolr/recog/CliqueMatcher.h>
+#include <mrolr/recog/PoseEstimation.h>
+#include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/TransformCluster.h>
+#include <mrolr/recog/Verification.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace mrolr::recog
+{
+namespace
+{
+constexpr size_t kMatchesPerClique = 20;  // strongest clique matches kept as hypotheses
+constexpr size_t kClustersVerified = 6;  // heaviest clusters checked against the whole scene
+
+std::vector<Correspondence> correspondencesOf(
+	const ModelTable& model, const OrientedScene& scene, const CliqueMatch& cm)
+{
+	std::vector<Correspondence> cs;
+	for (const auto& m : cm.matches)
+		cs.push_back({model.features()[m.model], scene.oriented[m.oriented]});
+	return cs;
+}
+
+void addPoses(
+	const std::vector<Correspondence>& cs, const RecognitionOptions& o, const LevelParams& p,
+	double weight, std::vector<PoseHypothesis>& out)
+{
+	if (o.pose_method != "arun")
+		if (auto T = faugerasHebertPose(cs)) out.push_back({*T, weight});
+	if (o.pose_method != "faugeras_hebert")
+		if (auto T = arunPose(cs, 2 * p.position_error_mm)) out.push_back({*T, weight});
+}
+
+std::vector<PoseHypothesis> hypothesesAt(
+	const ModelTable& model, const OrientedScene& scene, const RecognitionOptions& o,
+	const LevelParams& p)
+{
+	std::vector<PoseHypothesis> hyps;
+	for (size_t c = 0; c < model.cliques().size(); ++c)
+	{
+		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes);
+		for (size_t k = 0; k < matches.size() && k < kMatchesPerClique; ++k)
+			addPoses(
+				correspondencesOf(model, scene, matches[k]), o, p,
+				static_cast<double>(matches[k].matches.size()), hyps);
+	}
+	return hyps;
+}
+
+/** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
+std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
+	const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
+	const LevelParams& p, int iterations)
+{
+	const double beta = 2 * p.position_error_mm, theta = 2 * p.rotation_deg * M_PI / 180.0;
+	VerificationResult v = verifyPose(model, scene, T, beta, theta, p.length_threshold_mm);
+	for (int i = 0; i < iterations; ++i)
+	{
+		const auto T2 = faugerasHebertPose(v.correspondences);
+		if (!T2) break;
+		VerificationResult v2 = verifyPose(model, scene, *T2, beta, theta, p.length_threshold_mm);
+		if (v2.score < v.score) break;
+		T = *T2;
+		v = std::move(v2);
+	}
+	return {T, std::move(v)};
+}
+
+double confidenceOf(double score, size_t level, size_t levels)
+{
+	const double f = levels > 1 ? static_cast<double>(level) / (levels - 1) : 0.0;
+	return score * (1.0 - 0.5 * f);
+}
+}  // namespace
+
+Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
+	: table_(model, opts.auto_clique_count, opts.auto_clique_size), opts_(opts)
+{
+	if (opts_.levels.empty()) throw std::invalid_argument("recognition options have no levels");
+	centroid_O_.setZero();
+	for (const auto& f : table_.features()) centroid_O_ += f.m;
+	centroid_O_ /= static_cast<double>(table_.features().size());
+}
+
+RecognitionResult Recognizer::recognizeAtLevel(
+	const std::vector<Feature>& scene, size_t level) const
+{
+	const LevelParams& p = opts_.levels.at(level);
+	RecognitionResult best;
+	best.model = table_.name();
+	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
+	const auto hyps = hypothesesAt(table_, os, opts_, p);
+	const auto clusters =
+		clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
+	for (size_t k = 0; k < clusters.size() && k < kClustersVerified; ++k)
+	{
+		const auto [T, v] =
+			verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_.refine_iterations);
+		if (v.score <= best.score) continue;
+		best.T_OinS = T;
+		best.score = v.score;
+		best.matched = v.matched;
+		best.agreeing_cliques = static_cast<int>(clusters[k].members.size());
+		best.spread_rot_deg = clusters[k].spread_rot_deg;
+		best.spread_trans_mm = clusters[k].spread_trans_mm;
+	}
+	best.found = best.score >= p.verify_min_score;
+	best.level = best.found ? static_cast<int>(level) + 1 : 0;
+	best.confidence = best.found ? confidenceOf(best.score, level, opts_.levels.size()) : 0.0;
+	return best;
+}
+
+RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	RecognitionResult best;
+	best.model = table_.name();
+	for (size_t l = 0; l < opts_.levels.size(); ++l)
+	{
+		RecognitionResult r = recognizeAtLevel(scene, l);
+		if (r.found || r.score > best.score) best = r;
+		if (r.found) break;
+	}
+	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
+	best.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+				  .count();
+	return best;
+}
+
+RecognitionResult Recognizer::recognize(const model::WireFrame& scene) const
+{
+	return recognize(featuresOf(scene));
+}
+
+RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& scenes) const
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	RecognitionResult best;
+	best.model = table_.name();
+	for (size_t i = 0; i < scenes.size() && !best.found; ++i)
+	{
+		RecognitionResult r = recognize(scenes[i]);
+		if (r.found || r.score > best.score) best = r;
+		if (r.found) best.scene_index = static_cast<int>(i);
+	}
+	best.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+				  .count();
+	return best;
+}
+
+}  // namespace mrolr::recog

@@ -1,0 +1,126 @@
+#include <mrolr/recog/Feature.h>
+#include <mrolr/recog/SyntheticScene.h>
+
+#include <algorithm>
+
+namespace mrolr::recog
+{
+namespace
+{
+Eigen::Vector3d gaussian3(std::mt19937& rng, double sigma)
+{
+	std::normal_distribution<double> n(0, sigma > 0 ? sigma : 1e-300);
+	return {n(rng), n(rng), n(rng)};
+}
+
+bool chance(std::mt19937& rng, double p) { return std::uniform_real_distribution<>(0, 1)(rng) < p; }
+
+/** Hidden when on the far half of the object as seen along +z (the camera's optic axis). */
+bool hidden(const Eigen::Vector3d& p, const Eigen::Vector3d& centroid, double extent)
+{
+	return p.z() - centroid.z() > 0.15 * extent;
+}
+
+void addLine(
+	model::WireFrame& out, const model::Line3& l, const SceneNoise& n, std::mt19937& rng)
+{
+	std::vector<std::pair<double, double>> parts = {{0.0, 1.0}};
+	if (chance(rng, n.fragment_probability))
+	{
+		const double cut = std::uniform_real_distribution<>(0.3, 0.7)(rng);
+		parts = {{0.0, cut - 0.05}, {cut + 0.05, 1.0}};
+	}
+	for (const auto& [a, b] : parts)
+	{
+		model::Line3 f;
+		f.id = static_cast<int>(out.lines.size() + out.conics.size()) + 1;
+		f.p1 = l.p1 + a * (l.p2 - l.p1) + gaussian3(rng, n.endpoint_sigma_mm);
+		f.p2 = l.p1 + b * (l.p2 - l.p1) + gaussian3(rng, n.endpoint_sigma_mm);
+		if (chance(rng, n.flip_probability)) std::swap(f.p1, f.p2);
+		out.lines.push_back(f);
+	}
+}
+
+void addConic(
+	model::WireFrame& out, model::Conic3 c, const SceneNoise& n, std::mt19937& rng)
+{
+	c.id = static_cast<int>(out.lines.size() + out.conics.size()) + 1;
+	c.centre += gaussian3(rng, n.endpoint_sigma_mm);
+	c.normal = (c.normal + gaussian3(rng, n.endpoint_sigma_mm / std::max(c.a, 1.0))).normalized();
+	const double dr = std::normal_distribution<>(0, n.endpoint_sigma_mm > 0 ? n.endpoint_sigma_mm : 1e-300)(rng);
+	c.a += dr;
+	c.b += dr;
+	if (chance(rng, n.flip_probability))
+	{
+		c.normal = -c.normal;  // the same arc is traced with t -> -t
+		std::tie(c.t1, c.t2) = std::make_pair(-c.t2, -c.t1);
+	}
+	out.conics.push_back(c);
+}
+}  // namespace
+
+model::WireFrame transformWireFrame(const model::WireFrame& wf, const Eigen::Isometry3d& T)
+{
+	model::WireFrame out = wf;
+	out.frame = model::WireFrameFrame::LeftCamera;
+	for (auto& l : out.lines) l.p1 = T * l.p1, l.p2 = T * l.p2;
+	for (auto& c : out.conics)
+	{
+		c.centre = T * c.centre;
+		c.normal = T.linear() * c.normal;
+		c.major = T.linear() * c.major;
+	}
+	out.grasp.p_mm = T * out.grasp.p_mm;
+	return out;
+}
+
+model::WireFrame corruptScene(
+	const model::WireFrame& wf, const SceneNoise& noise, std::mt19937& rng,
+	double* visible_fraction)
+{
+	const auto fs = featuresOf(wf);
+	Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+	double extent = 0, total = 0, kept = 0;
+	for (const auto& f : fs) centroid += f.m / static_cast<double>(fs.size());
+	for (const auto& f : fs) extent = std::max(extent, 2 * (f.m - centroid).norm());
+	model::WireFrame out;
+	out.name = wf.name;
+	out.frame = wf.frame;
+	auto keep = [&](const Eigen::Vector3d& m, double len) {
+		total += len;
+		const bool k = !(noise.hide_back_side && hidden(m, centroid, extent)) &&
+			!chance(rng, noise.missing_fraction);
+		if (k) kept += len;
+		return k;
+	};
+	for (const auto& l : wf.lines)
+		if (keep(0.5 * (l.p1 + l.p2), l.length())) addLine(out, l, noise, rng);
+	for (const auto& c : wf.conics)
+		if (keep(c.centre, arcLength(c))) addConic(out, c, noise, rng);
+	if (visible_fraction) *visible_fraction = total > 0 ? kept / total : 0;
+	return out;
+}
+
+void appendWireFrame(model::WireFrame& a, const model::WireFrame& b)
+{
+	int id = static_cast<int>(a.lines.size() + a.conics.size());
+	for (const auto& l : a.lines) id = std::max(id, l.id);
+	for (const auto& c : a.conics) id = std::max(id, c.id);
+	for (auto l : b.lines) l.id = ++id, a.lines.push_back(l);
+	for (auto c : b.conics) c.id = ++id, a.conics.push_back(c);
+}
+
+Eigen::Isometry3d tablePose(double yaw_deg, double tilt_deg, const Eigen::Vector3d& p_mm)
+{
+	// Object z (up) becomes the camera's +y (up); the table is seen from slightly above.
+	const double d2r = M_PI / 180.0;
+	const Eigen::Matrix3d upToY =
+		Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = Eigen::AngleAxisd(tilt_deg * d2r, Eigen::Vector3d::UnitX()) * upToY *
+		Eigen::AngleAxisd(yaw_deg * d2r, Eigen::Vector3d::UnitZ());
+	T.translation() = p_mm;
+	return T;
+}
+
+}  // namespace mrolr::recog
