@@ -10,11 +10,11 @@ namespace
 {
 constexpr double kRadToDeg = 180.0 / M_PI;
 
-std::string describePoint(const Eigen::Vector3d& p)
+[[noreturn]] void failFor(const Eigen::Vector3d& p, const char* reason)
 {
 	std::ostringstream s;
-	s << "point (" << p.x() << ", " << p.y() << ", " << p.z() << ") m in C0";
-	return s.str();
+	s << "point (" << p.x() << ", " << p.y() << ", " << p.z() << ") m in C0 " << reason;
+	throw FixationError(s.str());
 }
 
 void checkJoint(const char* name, double angle_rad, double limit_deg)
@@ -37,9 +37,8 @@ void BiSightHead::checkJointLimits(const HeadAngles& a) const
 
 HeadAngles BiSightHead::fixate(const Eigen::Vector3d& m) const
 {
-	const std::string what = describePoint(m);
 	if (std::hypot(m.x(), m.z()) < 1e-9)
-		throw FixationError(what + " lies on the pan axis, where the pan angle is undefined");
+		failFor(m, "lies on the pan axis, where the pan angle is undefined");
 	HeadAngles a;
 	a.pan = std::atan2(m.x(), m.z());  // eq 4.27: m_C1,x = 0
 	const Eigen::Vector3d m1 = R_C1fromC0(a.pan) * m;
@@ -47,16 +46,16 @@ HeadAngles BiSightHead::fixate(const Eigen::Vector3d& m) const
 	const double y = m1.y(), zr = m1.z() - options_.pan_offset_m;
 	const double r = std::hypot(y, zr), c = options_.tilt_offset_m;
 	if (r <= std::abs(c))
-		throw FixationError(what + " is closer to the tilt axis than the tilt offset c");
+		failFor(m, "is closer to the tilt axis than the tilt offset c");
 	a.tilt = std::atan2(y, zr) - std::asin(c / r);
 	// After the tilt m_C2 = (∓I/2, 0, z2) with z2 = r cos(φ − e) > 0; eq 4.32: m_L,x = 0.
 	const double z2 = std::sqrt(r * r - c * c), half_I = options_.interocular_m / 2;
 	if (std::hypot(half_I, z2) <= options_.optic_offset_m)
-		throw FixationError(what + " is behind the optic centres (closer than the offset n)");
+		failFor(m, "is behind the optic centres (closer than the offset n)");
 	a.verg_left = std::atan2(-half_I, z2);
 	a.verg_right = -a.verg_left;  // eq 4.33
 	if (m.z() < 0 && std::abs(a.pan) * kRadToDeg > options_.pan_limit_deg)
-		throw FixationError(what + " is behind the head, beyond the pan limit");
+		failFor(m, "is behind the head, beyond the pan limit");
 	checkJointLimits(a);
 	return a;
 }
