@@ -127,7 +127,7 @@ BENCHMARK(BM_OpenCvTriangulatePoints_Batch);
 // Console output plus the per-point time of both triangulations and their ratio.
 class RatioReporter : public benchmark::ConsoleReporter
 {
-   public:
+ public:
 	void ReportRuns(const std::vector<Run>& runs) override
 	{
 		ConsoleReporter::ReportRuns(runs);
@@ -140,12 +140,12 @@ class RatioReporter : public benchmark::ConsoleReporter
 		const auto cv = ns_per_iter_.find("BM_OpenCvTriangulatePoints_Batch");
 		if (ours == ns_per_iter_.end() || cv == ns_per_iter_.end()) return;
 		std::printf(
-			"summary: CPU time per point: midpoint (eqs 4.45-4.50) %.1f ns, OpenCV "
-			"cv::triangulatePoints %.1f ns; CPU-time ratio midpoint/OpenCV = %.2f\n",
-			ours->second / kPoints, cv->second / kPoints, ours->second / cv->second);
+		    "summary: CPU time per point: midpoint (eqs 4.45-4.50) %.1f ns, OpenCV "
+		    "cv::triangulatePoints %.1f ns; CPU-time ratio midpoint/OpenCV = %.2f\n",
+		    ours->second / kPoints, cv->second / kPoints, ours->second / cv->second);
 	}
 
-   private:
+ private:
 	std::map<std::string, double> ns_per_iter_;
 };
 
@@ -159,17 +159,18 @@ void printAccuracy()
 	for (int i = 0; i < kPoints; ++i)
 	{
 		const Eigen::Vector3d m = s.head.triangulatePoint(s.pixels[i], s.angles);
-		const Eigen::Vector3d c(
-			X.at<double>(0, i) / X.at<double>(3, i), X.at<double>(1, i) / X.at<double>(3, i),
-			X.at<double>(2, i) / X.at<double>(3, i));
+		const Eigen::Vector3d c(X.at<double>(0, i) / X.at<double>(3, i),
+		                        X.at<double>(1, i) / X.at<double>(3, i),
+		                        X.at<double>(2, i) / X.at<double>(3, i));
 		ours += (m - s.points[i]).norm() / kPoints;
 		theirs += (c - s.points[i]).norm() / kPoints;
 		between += (m - c).norm() / kPoints;
 	}
 	std::printf(
-		"summary: mean 3D error with 0.5 px noise, %d points 1-5 m: midpoint %.4f m, OpenCV %.4f m, "
-		"between them %.4f m\n",
-		kPoints, ours, theirs, between);
+	    "summary: mean 3D error with 0.5 px noise, %d points 1-5 m: midpoint %.4f m, OpenCV %.4f "
+	    "m, "
+	    "between them %.4f m\n",
+	    kPoints, ours, theirs, between);
 }
 }  // namespace
 

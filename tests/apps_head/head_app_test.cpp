@@ -24,7 +24,8 @@ std::string runApp(std::vector<std::string> args, HeadApp* app_out = nullptr)
 	std::vector<const char*> argv;
 	for (const auto& a : args) argv.push_back(a.c_str());
 	HeadApp app;
-	app.initialize(mrolr::util::argsWithNegativeNumbersProtected(static_cast<int>(argv.size()), argv.data()));
+	app.initialize(
+	    mrolr::util::argsWithNegativeNumbersProtected(static_cast<int>(argv.size()), argv.data()));
 	std::ostringstream out;
 	EXPECT_EQ(app.run(out), mrolr::util::kExitOk);
 	if (app_out) *app_out = app;
@@ -62,7 +63,8 @@ TEST(HeadApp, BadArgumentsAreUsageErrors)
 	}
 	catch (const UsageError& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("X Y Z PAN TILT VL VR"), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find("X Y Z PAN TILT VL VR"), std::string::npos)
+		    << e.what();
 	}
 }
 
@@ -92,7 +94,8 @@ TEST(HeadApp, ProjectAcceptsNegativeNumbersAndMatchesTheLibrary)
 {
 	HeadApp app;
 	runApp({"project", "0.5", "-0.2", "2", "-0.1", "0", "0.05", "-0.05"}, &app);
-	const Eigen::Vector4d px = shippedHead().project({0.5, -0.2, 2}, {-0.1, 0, 0.05, -0.05}).asVector();
+	const Eigen::Vector4d px =
+	    shippedHead().project({0.5, -0.2, 2}, {-0.1, 0, 0.05, -0.05}).asVector();
 	ASSERT_EQ(app.output_values.size(), 4u);
 	for (int i = 0; i < 4; ++i) EXPECT_EQ(app.output_values[i], px[i]);
 	EXPECT_EQ(app.output_names, (std::vector<std::string>{"uL", "vL", "uR", "vR"}));
@@ -114,7 +117,7 @@ TEST(HeadApp, TriangulateJsonHasThePointAndCovariance)
 	EXPECT_NEAR(j.at("Y").get<double>(), -0.3, 1e-9);
 	EXPECT_NEAR(j.at("Z").get<double>(), 2.2, 1e-9);
 	const Eigen::Matrix3d cov =
-		shippedHead().triangulate(geo::StereoPixels::fromVector(px), a, 0.5).cov;
+	    shippedHead().triangulate(geo::StereoPixels::fromVector(px), a, 0.5).cov;
 	ASSERT_EQ(j.at("cov").size(), 3u);
 	for (int r = 0; r < 3; ++r)
 		for (int c = 0; c < 3; ++c)
@@ -123,7 +126,8 @@ TEST(HeadApp, TriangulateJsonHasThePointAndCovariance)
 
 TEST(HeadApp, MeasureIsTheIdealHead)
 {
-	const nlohmann::json j = nlohmann::json::parse(runApp({"--json", "measure", "-0.5", "0.2", "3"}));
+	const nlohmann::json j =
+	    nlohmann::json::parse(runApp({"--json", "measure", "-0.5", "0.2", "3"}));
 	const Eigen::Vector3d h = geo::idealHeadMeasure({-0.5, 0.2, 3}, 0.25);
 	EXPECT_EQ(j.at("pan").get<double>(), h[0]);
 	EXPECT_EQ(j.at("elevation").get<double>(), h[1]);
@@ -140,6 +144,7 @@ TEST(HeadApp, TextOutputHasAtLeast12SignificantDigits)
 
 TEST(HeadApp, ConfigAndGeometryErrorsAreNotUsageErrors)
 {
-	EXPECT_THROW(runApp({"--config", "/nonexistent.ini", "measure", "1", "1", "1"}), mrolr::util::ConfigError);
+	EXPECT_THROW(runApp({"--config", "/nonexistent.ini", "measure", "1", "1", "1"}),
+	             mrolr::util::ConfigError);
 	EXPECT_THROW(runApp({"fixate", "0", "0", "-3"}), geo::FixationError);
 }

@@ -12,21 +12,6 @@ using mrolr::geometry::test_util::numericJacobian;
 
 namespace
 {
-// Offsets all non-zero and different, so that a swapped offset cannot pass.
-BiSightOptions testOptions()
-{
-	BiSightOptions o;
-	o.interocular_m = 0.25;
-	o.pan_offset_m = 0.031;
-	o.tilt_offset_m = 0.052;
-	o.optic_offset_m = 0.067;
-	o.focal_px_u = 801;
-	o.focal_px_v = 807;
-	o.u0_px = 318.5;
-	o.v0_px = 244.25;
-	return o;
-}
-
 std::string messageOf(const BiSightHead& head, const Eigen::Vector3d& p)
 {
 	try
@@ -43,7 +28,7 @@ std::string messageOf(const BiSightHead& head, const Eigen::Vector3d& p)
 
 TEST(BiSightHead, OpticCentresAtZeroAnglesAreTheSummedOffsets)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	const Eigen::Isometry3d L = head.T_LinC0({}), R = head.T_RinC0({});
 	EXPECT_TRUE(L.translation().isApprox(Eigen::Vector3d(0.125, 0.052, 0.031 + 0.067), 1e-15));
 	EXPECT_TRUE(R.translation().isApprox(Eigen::Vector3d(-0.125, 0.052, 0.031 + 0.067), 1e-15));
@@ -53,7 +38,7 @@ TEST(BiSightHead, OpticCentresAtZeroAnglesAreTheSummedOffsets)
 
 TEST(BiSightHead, JointsTurnTheOpticAxisTheDocumentedWay)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	// Positive pan looks left (+x), positive tilt looks up (+y).
 	EXPECT_NEAR(head.T_LinC0({0.3, 0, 0, 0}).linear().col(2).x(), std::sin(0.3), 1e-15);
 	EXPECT_NEAR(head.T_LinC0({0, 0.2, 0, 0}).linear().col(2).y(), std::sin(0.2), 1e-15);
@@ -65,7 +50,7 @@ TEST(BiSightHead, JointsTurnTheOpticAxisTheDocumentedWay)
 
 TEST(BiSightHead, PointInCameraIsEquation4_22)
 {
-	const BiSightOptions o = testOptions();
+	const BiSightOptions o = test_util::offsetTestOptions();
 	const BiSightHead head(o);
 	const Eigen::Vector3d pL(o.interocular_m / 2, 0, o.pan_offset_m), pR(-pL.x(), 0, pL.z());
 	const Eigen::Vector3d c(0, o.tilt_offset_m, 0), n(0, 0, o.optic_offset_m);
@@ -85,7 +70,7 @@ TEST(BiSightHead, PointInCameraIsEquation4_22)
 
 TEST(BiSightHead, ComputerVisionPoseFlipsXAndYOnly)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	const HeadAngles a{0.2, -0.1, -0.05, 0.07};
 	for (Side s : {Side::Left, Side::Right})
 	{
@@ -106,7 +91,7 @@ TEST(BiSightHead, ComputerVisionPoseFlipsXAndYOnly)
 
 TEST(BiSightHead, ProjectionJacobianMatchesCentralDifferences)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	std::mt19937 rng(4);
 	for (int k = 0; k < 200; ++k)
 	{
@@ -122,7 +107,7 @@ TEST(BiSightHead, ProjectionJacobianMatchesCentralDifferences)
 
 TEST(BiSightHead, ProjectionRejectsPointsBehindACamera)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	EXPECT_THROW(head.project({0, 0, -1}, {}), ProjectionError);
 	try
 	{
@@ -138,14 +123,15 @@ TEST(BiSightHead, ProjectionRejectsPointsBehindACamera)
 
 TEST(BiSightHead, FixationPutsThePointOnBothPrincipalPoints)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	const Eigen::Vector4d pp(318.5, 244.25, 318.5, 244.25);
 	std::mt19937 rng(5);
 	for (int k = 0; k < 500; ++k)
 	{
 		const Eigen::Vector3d m = test_util::randomPointAhead(rng);
 		const HeadAngles a = head.fixate(m);
-		EXPECT_LT((head.project(m, a).asVector() - pp).cwiseAbs().maxCoeff(), 1e-6) << m.transpose();
+		EXPECT_LT((head.project(m, a).asVector() - pp).cwiseAbs().maxCoeff(), 1e-6)
+		    << m.transpose();
 		EXPECT_EQ(a.verg_right, -a.verg_left);  // eq 4.33
 		EXPECT_LT(a.verg_left, 0);
 	}
@@ -153,27 +139,27 @@ TEST(BiSightHead, FixationPutsThePointOnBothPrincipalPoints)
 
 TEST(BiSightHead, FixationAnglesHaveTheirClosedFormsWithoutOffsets)
 {
-	BiSightOptions o = testOptions();
+	BiSightOptions o = test_util::offsetTestOptions();
 	o.pan_offset_m = o.tilt_offset_m = o.optic_offset_m = 0;
 	const BiSightHead head(o);
 	const Eigen::Vector3d m(0.4, 0.3, 1.2);
 	const HeadAngles a = head.fixate(m);
 	EXPECT_NEAR(a.pan, std::atan2(0.4, 1.2), 1e-14);  // eq 4.27
 	const double horiz = std::hypot(0.4, 1.2);
-	EXPECT_NEAR(a.tilt, std::atan2(0.3, horiz), 1e-14);  // eq 4.30 with p = c = 0
+	EXPECT_NEAR(a.tilt, std::atan2(0.3, horiz), 1e-14);             // eq 4.30 with p = c = 0
 	EXPECT_NEAR(a.verg_left, -std::atan2(0.125, m.norm()), 1e-14);  // eq 4.32 with n = 0
 }
 
 TEST(BiSightHead, UnfixatablePointsGiveAClearError)
 {
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	EXPECT_NE(messageOf(head, {0, 1, 0}).find("pan axis"), std::string::npos);
 	EXPECT_NE(messageOf(head, {0.2, 0, -2}).find("behind the head"), std::string::npos);
 	EXPECT_NE(messageOf(head, {0, 3, 1}).find("tilt"), std::string::npos);
 	EXPECT_NE(messageOf(head, {0, 0.03, 0.04}).find("tilt axis"), std::string::npos);
 	EXPECT_NE(messageOf(head, {0, 0.05, 0.15}).find("vergence"), std::string::npos);
 	EXPECT_EQ(messageOf(head, {0, 0, 2}), "no error");
-	BiSightOptions narrow = testOptions();
+	BiSightOptions narrow = test_util::offsetTestOptions();
 	narrow.pan_limit_deg = 60;
 	EXPECT_NE(messageOf(BiSightHead(narrow), {3, 0, 1}).find("pan 71.5"), std::string::npos);
 }
@@ -181,7 +167,7 @@ TEST(BiSightHead, UnfixatablePointsGiveAClearError)
 TEST(BiSightHead, TwoPixelFixationErrorIsAbout0_0024Rad)
 {
 	// Thesis 5.3.1: δε ≈ δv / (f k_v) = 2 / 807 ≈ 0.0024 rad for f·k_v = 807 px.
-	const BiSightHead head(testOptions());
+	const BiSightHead head(test_util::offsetTestOptions());
 	const Eigen::Vector3d ray0 = head.camera().backProject({318.5, 244.25});
 	const Eigen::Vector3d ray2 = head.camera().backProject({318.5, 244.25 + 2});
 	const double angle = std::acos(ray0.normalized().dot(ray2.normalized()));

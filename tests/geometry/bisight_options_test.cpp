@@ -27,8 +27,7 @@ std::string sectionWith(const std::string& key, const std::string& line)
 {
 	std::istringstream in(dumped(BiSightOptions()));
 	std::string out = "[bisight]\n", l;
-	while (std::getline(in, l))
-		out += (l.rfind(key + " ", 0) == 0 ? line : l) + "\n";
+	while (std::getline(in, l)) out += (l.rfind(key + " ", 0) == 0 ? line : l) + "\n";
 	return out;
 }
 
@@ -51,7 +50,7 @@ TEST(BiSightOptions, ShippedConfigHasTheThesisValues)
 {
 	const BiSightOptions o = BiSightOptions::fromFile(MROLR_SOURCE_DIR "/config/bisight.ini");
 	EXPECT_EQ(o.interocular_m, 0.25);  // thesis 5.3.1
-	EXPECT_EQ(o.focal_px_v, 807);  // thesis 5.3.1
+	EXPECT_EQ(o.focal_px_v, 807);      // thesis 5.3.1
 	EXPECT_EQ(o.image_width_px, 640);
 	EXPECT_EQ(o.image_height_px, 480);
 	// The struct's defaults are the shipped file, key for key.
@@ -72,14 +71,20 @@ TEST(BiSightOptions, DumpReadsBack)
 TEST(BiSightOptions, ErrorsNameFileSectionAndKey)
 {
 	EXPECT_EQ(errorOf(sectionWith("none", "")), "no error");
-	EXPECT_NE(errorOf(sectionWith("focal_px_v", "")).find("[bisight] focal_px_v"), std::string::npos);
+	EXPECT_NE(errorOf(sectionWith("focal_px_v", "")).find("[bisight] focal_px_v"),
+	          std::string::npos);
 	const std::string bad = errorOf(sectionWith("tilt_offset_m", "tilt_offset_m = 5cm"));
 	EXPECT_NE(bad.find("[bisight] tilt_offset_m"), std::string::npos) << bad;
 	EXPECT_NE(bad.find("5cm"), std::string::npos) << bad;
-	EXPECT_NE(errorOf(sectionWith("focal_px_u", "focal_px_u = -807")).find("focal_px_u"), std::string::npos);
-	EXPECT_NE(errorOf(sectionWith("image_width_px", "image_width_px = 640.5")).find("image_width_px"), std::string::npos);
-	EXPECT_NE(errorOf(sectionWith("pan_limit_deg", "pan_limit_deg = 270")).find("pan_limit_deg"), std::string::npos);
-	EXPECT_NE(errorOf(sectionWith("interocular_m", "interocular_m = 0")).find("interocular_m"), std::string::npos);
+	EXPECT_NE(errorOf(sectionWith("focal_px_u", "focal_px_u = -807")).find("focal_px_u"),
+	          std::string::npos);
+	EXPECT_NE(
+	    errorOf(sectionWith("image_width_px", "image_width_px = 640.5")).find("image_width_px"),
+	    std::string::npos);
+	EXPECT_NE(errorOf(sectionWith("pan_limit_deg", "pan_limit_deg = 270")).find("pan_limit_deg"),
+	          std::string::npos);
+	EXPECT_NE(errorOf(sectionWith("interocular_m", "interocular_m = 0")).find("interocular_m"),
+	          std::string::npos);
 }
 
 TEST(BiSightOptions, FileErrorsNameTheFile)
@@ -93,9 +98,11 @@ TEST(BiSightOptions, FileErrorsNameTheFile)
 	}
 	catch (const ConfigError& e)
 	{
-		EXPECT_NE(std::string(e.what()).find(path + " [bisight] v0_px"), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find(path + " [bisight] v0_px"), std::string::npos)
+		    << e.what();
 	}
 	std::remove(path.c_str());
 	EXPECT_THROW(BiSightOptions::fromFile("/nonexistent/bisight.ini"), ConfigError);
-	EXPECT_THROW(BiSightOptions::fromFile(MROLR_SOURCE_DIR "/config/bisight.ini", "nosuch"), ConfigError);
+	EXPECT_THROW(BiSightOptions::fromFile(MROLR_SOURCE_DIR "/config/bisight.ini", "nosuch"),
+	             ConfigError);
 }

@@ -12,14 +12,7 @@ namespace
 {
 BiSightHead testHead()
 {
-	BiSightOptions o;
-	o.pan_offset_m = 0.031;
-	o.tilt_offset_m = 0.052;
-	o.optic_offset_m = 0.067;
-	o.focal_px_u = 801;
-	o.u0_px = 318.5;
-	o.v0_px = 244.25;
-	return BiSightHead(o);
+	return BiSightHead(test_util::offsetTestOptions());
 }
 }  // namespace
 
@@ -54,9 +47,11 @@ TEST(BiSightTriangulation, PixelJacobianMatchesCentralDifferences)
 		{ return head.triangulatePoint(StereoPixels::fromVector(x), a); };
 		const auto num = numericJacobian<3, 4>(f, px, 1e-4);
 		const Eigen::Matrix<double, 3, 4> J =
-			head.triangulate(StereoPixels::fromVector(px), a).J_wrt_pixels;
+		    head.triangulate(StereoPixels::fromVector(px), a).J_wrt_pixels;
 		EXPECT_LT((J - num).cwiseAbs().maxCoeff(), 1e-6 * (1 + num.cwiseAbs().maxCoeff()))
-			<< "analytic\n" << J << "\nnumeric\n" << num;
+		    << "analytic\n"
+		    << J << "\nnumeric\n"
+		    << num;
 	}
 }
 

@@ -20,12 +20,15 @@ Eigen::Isometry3d randomPose(std::mt19937& rng)
 	std::uniform_real_distribution<double> d(-2, 2);
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.linear() = Eigen::Quaterniond(Eigen::Vector4d(d(rng), d(rng), d(rng), d(rng)).normalized())
-					 .toRotationMatrix();
+	                 .toRotationMatrix();
 	T.translation() << d(rng), d(rng), d(rng);
 	return T;
 }
 
-Eigen::Vector3d toEigen(const mrpt::math::TPoint3D& p) { return {p.x, p.y, p.z}; }
+Eigen::Vector3d toEigen(const mrpt::math::TPoint3D& p)
+{
+	return {p.x, p.y, p.z};
+}
 }  // namespace
 
 TEST(Frames, AxesMapForwardLeftUp)
@@ -75,7 +78,7 @@ TEST(Frames, ForwardCameraMatchesMrptsCameraConvention)
 	const BiSightHead head;
 	const mrpt::poses::CPose3D left = cameraPoseToMrpt(head.T_CamCvInC0(Side::Left, {}));
 	EXPECT_TRUE(left.getRotationMatrix().asEigen().isApprox(
-		mrptCamera.getRotationMatrix().asEigen(), 1e-12));
+	    mrptCamera.getRotationMatrix().asEigen(), 1e-12));
 	// The left camera is on the robot's left (+y in MRPT) and above C0 by the tilt offset c.
 	EXPECT_NEAR(left.y(), head.options().interocular_m / 2, 1e-15);
 	EXPECT_NEAR(left.z(), head.options().tilt_offset_m, 1e-15);

@@ -25,6 +25,22 @@ Eigen::Matrix<double, M, N> numericJacobian(F f, const Eigen::Matrix<double, N, 
 	return J;
 }
 
+/** Head options with every offset non-zero and distinct, and a principal point off the image
+ * centre, so that a swapped offset or axis cannot pass a test. */
+inline BiSightOptions offsetTestOptions()
+{
+	BiSightOptions o;
+	o.interocular_m = 0.25;
+	o.pan_offset_m = 0.031;
+	o.tilt_offset_m = 0.052;
+	o.optic_offset_m = 0.067;
+	o.focal_px_u = 801;
+	o.focal_px_v = 807;
+	o.u0_px = 318.5;
+	o.v0_px = 244.25;
+	return o;
+}
+
 /** A point in front of the head within the default joint limits: 0.6–6 m away, azimuth ±60°,
  * elevation ±35° (C0, metres). */
 inline Eigen::Vector3d randomPointAhead(std::mt19937& rng)
@@ -35,8 +51,8 @@ inline Eigen::Vector3d randomPointAhead(std::mt19937& rng)
 }
 
 /** Head angles that roughly look at @p p but are perturbed, so the point is not fixated. */
-inline HeadAngles randomAnglesLookingNear(
-	const BiSightHead& head, const Eigen::Vector3d& p, std::mt19937& rng)
+inline HeadAngles randomAnglesLookingNear(const BiSightHead& head, const Eigen::Vector3d& p,
+                                          std::mt19937& rng)
 {
 	std::uniform_real_distribution<double> d(-0.08, 0.08);
 	HeadAngles a = head.fixate(p);

@@ -52,10 +52,12 @@ TEST(IdealHead, JacobiansMatchCentralDifferences)
 	for (int k = 0; k < 200; ++k)
 	{
 		const Eigen::Vector3d m = randomPoint(rng);
-		const auto num = numericJacobian([](const Eigen::Vector3d& x) { return idealHeadMeasure(x, kI); }, m);
+		const auto num =
+		    numericJacobian([](const Eigen::Vector3d& x) { return idealHeadMeasure(x, kI); }, m);
 		EXPECT_LT((idealHeadJacobian(m, kI) - num).cwiseAbs().maxCoeff(), 1e-7) << m.transpose();
 		const Eigen::Vector3d h = idealHeadMeasure(m, kI);
-		const auto numInv = numericJacobian([](const Eigen::Vector3d& x) { return idealHeadInverse(x, kI); }, h, 1e-7);
+		const auto numInv = numericJacobian(
+		    [](const Eigen::Vector3d& x) { return idealHeadInverse(x, kI); }, h, 1e-7);
 		const double scale = 1 + numInv.cwiseAbs().maxCoeff();
 		EXPECT_LT((idealHeadInverseJacobian(h, kI) - numInv).cwiseAbs().maxCoeff() / scale, 1e-6);
 	}
@@ -67,7 +69,8 @@ TEST(IdealHead, InverseRoundTrips)
 	for (int k = 0; k < 1000; ++k)
 	{
 		const Eigen::Vector3d m = randomPoint(rng);
-		EXPECT_LT((idealHeadInverse(idealHeadMeasure(m, kI), kI) - m).norm(), 1e-9 * (1 + m.norm()));
+		EXPECT_LT((idealHeadInverse(idealHeadMeasure(m, kI), kI) - m).norm(),
+		          1e-9 * (1 + m.norm()));
 	}
 	EXPECT_THROW(idealHeadInverse({0, 0, 0}, kI), std::invalid_argument);
 	EXPECT_THROW(idealHeadInverse({0, 0, -0.1}, kI), std::invalid_argument);
@@ -80,7 +83,7 @@ TEST(IdealHead, InverseJacobianIsTheInverseOfTheJacobian)
 	{
 		const Eigen::Vector3d m = randomPoint(rng);
 		const Eigen::Matrix3d prod =
-			idealHeadJacobian(m, kI) * idealHeadInverseJacobian(idealHeadMeasure(m, kI), kI);
+		    idealHeadJacobian(m, kI) * idealHeadInverseJacobian(idealHeadMeasure(m, kI), kI);
 		EXPECT_LT((prod - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff(), 1e-8);
 	}
 }

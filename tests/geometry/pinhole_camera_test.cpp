@@ -42,7 +42,8 @@ TEST(PinholeCamera, JacobianMatchesCentralDifferences)
 		const Eigen::Vector3d m = test_util::randomPointAhead(rng);
 		Eigen::Matrix<double, 2, 3> J;
 		c.project(m, &J);
-		const auto num = numericJacobian<2, 3>([&](const Eigen::Vector3d& x) { return c.project(x); }, m, 1e-6);
+		const auto num =
+		    numericJacobian<2, 3>([&](const Eigen::Vector3d& x) { return c.project(x); }, m, 1e-6);
 		EXPECT_LT((J - num).cwiseAbs().maxCoeff(), 1e-5) << m.transpose();
 	}
 }
@@ -59,7 +60,8 @@ TEST(PinholeCamera, BackProjectionIsTheRayOfThePixel)
 	const Eigen::Vector3d Cm = c.calibrationMatrix() * Eigen::Vector3d(0.3, -0.2, 1.7);
 	EXPECT_TRUE((Cm / Cm.z()).head<2>().isApprox(c.project({0.3, -0.2, 1.7}), 1e-12));
 	EXPECT_TRUE((c.calibrationMatrix() * c.inverseCalibrationMatrix()).isIdentity(1e-14));
-	const auto num = numericJacobian<3, 2>([&](const Eigen::Vector2d& x) { return c.backProject(x); }, uv, 1e-3);
+	const auto num =
+	    numericJacobian<3, 2>([&](const Eigen::Vector2d& x) { return c.backProject(x); }, uv, 1e-3);
 	EXPECT_TRUE(c.backProjectJacobian().isApprox(num, 1e-9));
 }
 

@@ -53,7 +53,7 @@ TEST(RayTriangulation, DirectionJacobianMatchesCentralDifferences)
 		{ return midpointOfCommonPerpendicular(a, x.head<3>(), c, x.tail<3>(), 1e-9).point; };
 		const auto num = test_util::numericJacobian<3, 6>(f, bd, 1e-6);
 		const Eigen::Matrix<double, 3, 6> J =
-			midpointJacobianWrtDirections(a, bd.head<3>(), c, bd.tail<3>(), f(bd));
+		    midpointJacobianWrtDirections(a, bd.head<3>(), c, bd.tail<3>(), f(bd));
 		EXPECT_LT((J - num).cwiseAbs().maxCoeff(), 1e-5 * (1 + num.cwiseAbs().maxCoeff()));
 	}
 }

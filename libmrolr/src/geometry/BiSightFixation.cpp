@@ -45,8 +45,7 @@ HeadAngles BiSightHead::fixate(const Eigen::Vector3d& m) const
 	// eq 4.30: m_C2,y = cos e·y − sin e·(z − p) − c = r sin(φ − e) − c = 0.
 	const double y = m1.y(), zr = m1.z() - options_.pan_offset_m;
 	const double r = std::hypot(y, zr), c = options_.tilt_offset_m;
-	if (r <= std::abs(c))
-		failFor(m, "is closer to the tilt axis than the tilt offset c");
+	if (r <= std::abs(c)) failFor(m, "is closer to the tilt axis than the tilt offset c");
 	a.tilt = std::atan2(y, zr) - std::asin(c / r);
 	// After the tilt m_C2 = (∓I/2, 0, z2) with z2 = r cos(φ − e) > 0; eq 4.32: m_L,x = 0.
 	const double z2 = std::sqrt(r * r - c * c), half_I = options_.interocular_m / 2;

@@ -14,12 +14,15 @@ Eigen::Matrix3d aboutY(double a)
 	const double c = std::cos(a), s = std::sin(a);
 	Eigen::Matrix3d R;
 	R << c, 0, -s,  //
-		0, 1, 0,  //
-		s, 0, c;
+	    0, 1, 0,    //
+	    s, 0, c;
 	return R;
 }
 
-double sideSign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
+double sideSign(Side side)
+{
+	return side == Side::Left ? 1.0 : -1.0;
+}
 
 double vergence(Side side, const HeadAngles& a)
 {
@@ -27,24 +30,33 @@ double vergence(Side side, const HeadAngles& a)
 }
 }  // namespace
 
-Eigen::Matrix3d R_C1fromC0(double pan) { return aboutY(pan); }
+Eigen::Matrix3d R_C1fromC0(double pan)
+{
+	return aboutY(pan);
+}
 
 Eigen::Matrix3d R_C2fromC1(double tilt)
 {
 	const double c = std::cos(tilt), s = std::sin(tilt);
 	Eigen::Matrix3d R;
 	R << 1, 0, 0,  //
-		0, c, -s,  //
-		0, s, c;
+	    0, c, -s,  //
+	    0, s, c;
 	return R;
 }
 
-Eigen::Matrix3d R_LfromC2(double vergence) { return aboutY(vergence); }
+Eigen::Matrix3d R_LfromC2(double vergence)
+{
+	return aboutY(vergence);
+}
 
-Eigen::Matrix3d R_thesisFromCv() { return Eigen::Vector3d(-1, -1, 1).asDiagonal(); }
+Eigen::Matrix3d R_thesisFromCv()
+{
+	return Eigen::Vector3d(-1, -1, 1).asDiagonal();
+}
 
 BiSightHead::BiSightHead(const BiSightOptions& options)
-	: options_(options), camera_(options.camera())
+    : options_(options), camera_(options.camera())
 {
 }
 
@@ -80,8 +92,8 @@ Eigen::Isometry3d BiSightHead::T_CamCvInC0(Side side, const HeadAngles& angles) 
 	return T;
 }
 
-Eigen::Vector3d BiSightHead::pointInCamera(
-	Side side, const Eigen::Vector3d& p_GinC0, const HeadAngles& angles) const
+Eigen::Vector3d BiSightHead::pointInCamera(Side side, const Eigen::Vector3d& p_GinC0,
+                                           const HeadAngles& angles) const
 {
 	return T_CamInC0(side, angles).inverse(Eigen::Isometry) * p_GinC0;
 }

@@ -11,17 +11,16 @@ namespace mrolr::geometry
 {
 namespace
 {
-double readPositive(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
-	double hi)
+double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                    const std::string& key, double hi)
 {
 	const double v = util::readDouble(cfg, section, key);
 	util::requireInRange(cfg, section, key, v, 1e-12, hi);
 	return v;
 }
 
-int readPixels(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key)
+int readPixels(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+               const std::string& key)
 {
 	const long v = util::readInt(cfg, section, key);
 	util::requireInRange(cfg, section, key, static_cast<double>(v), 1, 100000);
@@ -29,8 +28,8 @@ int readPixels(
 }
 }  // namespace
 
-void BiSightOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void BiSightOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                        const std::string& section)
 {
 	using util::readDouble;
 	interocular_m = readPositive(cfg, section, "interocular_m", 10);
@@ -62,13 +61,13 @@ BiSightOptions BiSightOptions::fromFile(const std::string& path, const std::stri
 void BiSightOptions::dump(std::ostream& out) const
 {
 	out << std::setprecision(17) << "interocular_m = " << interocular_m
-		<< "\nhead_height_m = " << head_height_m << "\npan_offset_m = " << pan_offset_m
-		<< "\ntilt_offset_m = " << tilt_offset_m << "\noptic_offset_m = " << optic_offset_m
-		<< "\nfocal_px_u = " << focal_px_u << "\nfocal_px_v = " << focal_px_v
-		<< "\nu0_px = " << u0_px << "\nv0_px = " << v0_px << "\nimage_width_px = " << image_width_px
-		<< "\nimage_height_px = " << image_height_px << "\npan_limit_deg = " << pan_limit_deg
-		<< "\ntilt_limit_deg = " << tilt_limit_deg
-		<< "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
+	    << "\nhead_height_m = " << head_height_m << "\npan_offset_m = " << pan_offset_m
+	    << "\ntilt_offset_m = " << tilt_offset_m << "\noptic_offset_m = " << optic_offset_m
+	    << "\nfocal_px_u = " << focal_px_u << "\nfocal_px_v = " << focal_px_v
+	    << "\nu0_px = " << u0_px << "\nv0_px = " << v0_px << "\nimage_width_px = " << image_width_px
+	    << "\nimage_height_px = " << image_height_px << "\npan_limit_deg = " << pan_limit_deg
+	    << "\ntilt_limit_deg = " << tilt_limit_deg
+	    << "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
 }
 
 PinholeCamera BiSightOptions::camera() const

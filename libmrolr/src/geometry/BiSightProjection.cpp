@@ -3,9 +3,8 @@
 
 namespace mrolr::geometry
 {
-StereoPixels BiSightHead::project(
-	const Eigen::Vector3d& p_GinC0, const HeadAngles& angles,
-	Eigen::Matrix<double, 4, 3>* J_wrt_point) const
+StereoPixels BiSightHead::project(const Eigen::Vector3d& p_GinC0, const HeadAngles& angles,
+                                  Eigen::Matrix<double, 4, 3>* J_wrt_point) const
 {
 	Eigen::Vector2d uv[2];
 	int row = 0;
@@ -19,8 +18,8 @@ StereoPixels BiSightHead::project(
 		}
 		catch (const ProjectionError& e)
 		{
-			throw ProjectionError(
-				std::string(side == Side::Left ? "left" : "right") + " camera: " + e.what());
+			throw ProjectionError(std::string(side == Side::Left ? "left" : "right") +
+			                      " camera: " + e.what());
 		}
 		// ∂m_cam/∂m_G is the rotation R_camFromC0 (eqs 4.22, 4.23).
 		if (J_wrt_point) J_wrt_point->middleRows<2>(row) = J_pix * T_camFromC0.linear();

@@ -17,9 +17,8 @@ struct Ray
 
 Ray rayInC0(const Eigen::Isometry3d& T_camInC0, const PinholeCamera& cam, double u, double v)
 {
-	return {
-		T_camInC0.translation(), T_camInC0.linear() * cam.backProject({u, v}),
-		T_camInC0.linear() * cam.backProjectJacobian()};
+	return {T_camInC0.translation(), T_camInC0.linear() * cam.backProject({u, v}),
+	        T_camInC0.linear() * cam.backProjectJacobian()};
 }
 
 void requireInFront(const RayMidpoint& r)
@@ -32,27 +31,28 @@ void requireInFront(const RayMidpoint& r)
 }
 }  // namespace
 
-Eigen::Vector3d BiSightHead::triangulatePoint(const StereoPixels& px, const HeadAngles& angles) const
+Eigen::Vector3d BiSightHead::triangulatePoint(const StereoPixels& px,
+                                              const HeadAngles& angles) const
 {
 	const Ray L = rayInC0(T_LinC0(angles), camera_, px.uL, px.vL);
 	const Ray R = rayInC0(T_RinC0(angles), camera_, px.uR, px.vR);
 	const RayMidpoint mid =
-		midpointOfCommonPerpendicular(L.origin, L.direction, R.origin, R.direction);
+	    midpointOfCommonPerpendicular(L.origin, L.direction, R.origin, R.direction);
 	requireInFront(mid);
 	return mid.point;
 }
 
-Triangulation BiSightHead::triangulate(
-	const StereoPixels& px, const HeadAngles& angles, double sigma_px) const
+Triangulation BiSightHead::triangulate(const StereoPixels& px, const HeadAngles& angles,
+                                       double sigma_px) const
 {
 	if (!(sigma_px >= 0)) throw GeometryError("sigma_px must be >= 0");
 	const Ray L = rayInC0(T_LinC0(angles), camera_, px.uL, px.vL);
 	const Ray R = rayInC0(T_RinC0(angles), camera_, px.uR, px.vR);
 	const RayMidpoint mid =
-		midpointOfCommonPerpendicular(L.origin, L.direction, R.origin, R.direction);
+	    midpointOfCommonPerpendicular(L.origin, L.direction, R.origin, R.direction);
 	requireInFront(mid);
 	const Eigen::Matrix<double, 3, 6> J_dir =
-		midpointJacobianWrtDirections(L.origin, L.direction, R.origin, R.direction, mid.point);
+	    midpointJacobianWrtDirections(L.origin, L.direction, R.origin, R.direction, mid.point);
 	// Chain rule to the pixels: ∂m/∂(uL, vL, uR, vR) (3×4), then Σ = σ² J Jᵀ.
 	Eigen::Matrix<double, 3, 4> J;
 	J << J_dir.leftCols<3>() * L.J_dir_wrt_pixel, J_dir.rightCols<3>() * R.J_dir_wrt_pixel;

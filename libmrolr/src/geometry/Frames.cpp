@@ -29,14 +29,20 @@ Eigen::Matrix3d R_mrptFromThesis()
 {
 	Eigen::Matrix3d P;
 	P << 0, 0, 1,  //
-		1, 0, 0,  //
-		0, 1, 0;
+	    1, 0, 0,   //
+	    0, 1, 0;
 	return P;
 }
 
-mrpt::math::TPoint3D pointToMrpt(const Eigen::Vector3d& p) { return {p.z(), p.x(), p.y()}; }
+mrpt::math::TPoint3D pointToMrpt(const Eigen::Vector3d& p)
+{
+	return {p.z(), p.x(), p.y()};
+}
 
-Eigen::Vector3d pointFromMrpt(const mrpt::math::TPoint3D& p) { return {p.y, p.z, p.x}; }
+Eigen::Vector3d pointFromMrpt(const mrpt::math::TPoint3D& p)
+{
+	return {p.y, p.z, p.x};
+}
 
 mrpt::poses::CPose3D poseToMrpt(const Eigen::Isometry3d& T)
 {
@@ -84,8 +90,8 @@ Eigen::Isometry3d T_C0inW(const Eigen::Vector3d& xv, double head_height_m)
 	const double c = std::cos(xv[2]), s = std::sin(xv[2]);
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.linear() << c, 0, s,  //
-		0, 1, 0,  //
-		-s, 0, c;
+	    0, 1, 0,            //
+	    -s, 0, c;
 	T.translation() = Eigen::Vector3d(xv[1], head_height_m, xv[0]);
 	return T;
 }

@@ -5,7 +5,8 @@
 
 namespace mrolr::geometry
 {
-Eigen::Vector2d PinholeCamera::project(const Eigen::Vector3d& m, Eigen::Matrix<double, 2, 3>* J) const
+Eigen::Vector2d PinholeCamera::project(const Eigen::Vector3d& m,
+                                       Eigen::Matrix<double, 2, 3>* J) const
 {
 	if (!(m.z() > 0))
 	{
@@ -18,7 +19,7 @@ Eigen::Vector2d PinholeCamera::project(const Eigen::Vector3d& m, Eigen::Matrix<d
 	{
 		// d(u0 - fu x/z)/d(x, y, z) = (-fu/z, 0, fu x/z²), likewise for v.
 		*J << -focal_px_u * iz, 0, focal_px_u * m.x() * iz * iz,  //
-			0, -focal_px_v * iz, focal_px_v * m.y() * iz * iz;
+		    0, -focal_px_v * iz, focal_px_v * m.y() * iz * iz;
 	}
 	return {u0_px - focal_px_u * m.x() * iz, v0_px - focal_px_v * m.y() * iz};
 }
@@ -40,8 +41,8 @@ Eigen::Matrix3d PinholeCamera::calibrationMatrix() const
 {
 	Eigen::Matrix3d C;
 	C << -focal_px_u, 0, u0_px,  //
-		0, -focal_px_v, v0_px,  //
-		0, 0, 1;
+	    0, -focal_px_v, v0_px,   //
+	    0, 0, 1;
 	return C;
 }
 
@@ -49,8 +50,8 @@ Eigen::Matrix3d PinholeCamera::inverseCalibrationMatrix() const
 {
 	Eigen::Matrix3d Ci;
 	Ci << -1.0 / focal_px_u, 0, u0_px / focal_px_u,  //
-		0, -1.0 / focal_px_v, v0_px / focal_px_v,  //
-		0, 0, 1;
+	    0, -1.0 / focal_px_v, v0_px / focal_px_v,    //
+	    0, 0, 1;
 	return Ci;
 }
 
@@ -75,8 +76,8 @@ PinholeCamera PinholeCamera::fromTCamera(const mrpt::img::TCamera& cam)
 	for (size_t i = 0; i < cam.dist.size(); ++i)
 		if (cam.dist[i] != 0)
 			throw GeometryError(
-				"TCamera has lens distortion (dist[" + std::to_string(i) +
-				"] != 0), which the distortion-free pinhole model cannot represent");
+			    "TCamera has lens distortion (dist[" + std::to_string(i) +
+			    "] != 0), which the distortion-free pinhole model cannot represent");
 	PinholeCamera c;
 	c.focal_px_u = cam.fx();
 	c.focal_px_v = cam.fy();

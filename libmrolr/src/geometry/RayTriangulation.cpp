@@ -25,9 +25,9 @@ Eigen::Vector3d projectorDerivativeTimes(const Eigen::Vector3d& b, int k, const 
 }
 }  // namespace
 
-RayMidpoint midpointOfCommonPerpendicular(
-	const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-	const Eigen::Vector3d& d, double min_sin_angle)
+RayMidpoint midpointOfCommonPerpendicular(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          const Eigen::Vector3d& c, const Eigen::Vector3d& d,
+                                          double min_sin_angle)
 {
 	const Eigen::Vector3d u1 = b.normalized(), u2 = d.normalized();  // eqs 4.45, 4.46
 	const Eigen::Vector3d cross = u1.cross(u2);
@@ -37,7 +37,7 @@ RayMidpoint midpointOfCommonPerpendicular(
 	{
 		std::ostringstream msg;
 		msg << "rays are near-parallel (angle " << r.sin_angle << " rad < " << min_sin_angle
-			<< " rad): the point is too far to triangulate";
+		    << " rad): the point is too far to triangulate";
 		throw TriangulationError(msg.str());
 	}
 	const Eigen::Vector3d u3 = cross / r.sin_angle;
@@ -52,9 +52,11 @@ RayMidpoint midpointOfCommonPerpendicular(
 	return r;
 }
 
-Eigen::Matrix<double, 3, 6> midpointJacobianWrtDirections(
-	const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-	const Eigen::Vector3d& d, const Eigen::Vector3d& m)
+Eigen::Matrix<double, 3, 6> midpointJacobianWrtDirections(const Eigen::Vector3d& a,
+                                                          const Eigen::Vector3d& b,
+                                                          const Eigen::Vector3d& c,
+                                                          const Eigen::Vector3d& d,
+                                                          const Eigen::Vector3d& m)
 {
 	// m = A⁻¹ (P1 a + P2 c) with A = P1 + P2, so dm = A⁻¹ (dP1 (a − m) + dP2 (c − m)).
 	const Eigen::Matrix3d P1 = -skewSquared(b.normalized()), P2 = -skewSquared(d.normalized());

@@ -23,7 +23,7 @@ namespace mrolr::apps
 {
 class HeadApp
 {
-   public:
+ public:
 	/** Parses the command line (argv[0] first, negative numbers protected by
 	 * util::argsWithNegativeNumbersProtected); throws util::UsageError for bad arguments. */
 	void initialize(const std::vector<std::string>& args);
@@ -34,10 +34,10 @@ class HeadApp
 	int run(std::ostream& out);
 
 	// Inputs (set by initialize)
-	std::string config_path;  ///< --config; empty means config/bisight.ini
-	std::string command;  ///< fixate | project | triangulate | measure
+	std::string config_path;      ///< --config; empty means config/bisight.ini
+	std::string command;          ///< fixate | project | triangulate | measure
 	std::vector<double> numbers;  ///< the command's positional numbers
-	double sigma_px = 1.0;  ///< pixel noise for triangulate's covariance
+	double sigma_px = 1.0;        ///< pixel noise for triangulate's covariance
 	bool json = false;
 	bool help_shown = false;  ///< --help was printed; run() does nothing
 
@@ -51,7 +51,7 @@ class HeadApp
 	 * directory if it exists, else the one in the source tree. */
 	static std::string defaultConfigPath();
 
-   private:
+ private:
 	void print(std::ostream& out) const;
 };
 

@@ -33,9 +33,9 @@ namespace mrolr::geometry
 /** The four joint angles of the head in radians (thesis α, e, γL, γR). */
 struct HeadAngles
 {
-	double pan = 0;  ///< α, positive towards +x (left)
-	double tilt = 0;  ///< e, positive upwards
-	double verg_left = 0;  ///< γL, positive towards +x (left); negative when converging
+	double pan = 0;         ///< α, positive towards +x (left)
+	double tilt = 0;        ///< e, positive upwards
+	double verg_left = 0;   ///< γL, positive towards +x (left); negative when converging
 	double verg_right = 0;  ///< γR, positive towards +x; positive when converging
 };
 
@@ -52,7 +52,7 @@ struct StereoPixels
 struct Triangulation
 {
 	Eigen::Vector3d p_GinC0 = Eigen::Vector3d::Zero();  ///< metres, C0 (thesis axes)
-	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();  ///< m², from the pixel noise σ_px
+	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();      ///< m², from the pixel noise σ_px
 	/// ∂p_GinC0/∂(uL, vL, uR, vR), m/px; cov = σ_px² · J Jᵀ
 	Eigen::Matrix<double, 3, 4> J_wrt_pixels = Eigen::Matrix<double, 3, 4>::Zero();
 	double gap_m = 0;  ///< length of the common perpendicular between the two rays
@@ -71,14 +71,15 @@ Eigen::Matrix3d R_C2fromC1(double tilt);
 Eigen::Matrix3d R_LfromC2(double vergence);  ///< also R_RfromC2 (same form, eq 4.17)
 
 /** Rotation taking a vector in the computer-vision camera convention (x right, y down, z forward)
- * to the thesis camera convention (x left, y up, z forward): diag(−1, −1, 1), a half-turn about z. */
+ * to the thesis camera convention (x left, y up, z forward): diag(−1, −1, 1), a half-turn about z.
+ */
 Eigen::Matrix3d R_thesisFromCv();
 
 /** The BiSight head geometry: camera poses, projection, fixation and triangulation. Every method is
  * const and thread-safe. */
 class BiSightHead
 {
-   public:
+ public:
 	explicit BiSightHead(const BiSightOptions& options = BiSightOptions());
 
 	const BiSightOptions& options() const { return options_; }
@@ -101,15 +102,14 @@ class BiSightHead
 	Eigen::Isometry3d T_CamCvInC0(Side side, const HeadAngles& angles) const;
 
 	/** The point m_G (C0, metres) in the camera frame, eqs 4.22 / 4.23. */
-	Eigen::Vector3d pointInCamera(
-		Side side, const Eigen::Vector3d& p_GinC0, const HeadAngles& angles) const;
+	Eigen::Vector3d pointInCamera(Side side, const Eigen::Vector3d& p_GinC0,
+	                              const HeadAngles& angles) const;
 
 	/** Image coordinates (uL, vL, uR, vR) of m_G (C0, metres), eq 4.24, for any head angles.
 	 * If @p J_wrt_point is given it receives the analytic 4×3 Jacobian ∂(uL,vL,uR,vR)/∂m_G.
 	 * Throws ProjectionError if the point is not in front of either camera. */
-	StereoPixels project(
-		const Eigen::Vector3d& p_GinC0, const HeadAngles& angles,
-		Eigen::Matrix<double, 4, 3>* J_wrt_point = nullptr) const;
+	StereoPixels project(const Eigen::Vector3d& p_GinC0, const HeadAngles& angles,
+	                     Eigen::Matrix<double, 4, 3>* J_wrt_point = nullptr) const;
 
 	/** Symmetric fixation (eqs 4.25–4.33): the head angles that bring m_G (C0, metres) onto the
 	 * principal point of both cameras, with γR = −γL. Throws FixationError naming the reason for a
@@ -120,8 +120,8 @@ class BiSightHead
 	 * common perpendicular of the two back-projected rays (eqs 4.34–4.50), with its covariance
 	 * propagated from independent pixel noise of standard deviation @p sigma_px on each of the four
 	 * coordinates. Throws TriangulationError for near-parallel rays or a point behind a camera. */
-	Triangulation triangulate(
-		const StereoPixels& pixels, const HeadAngles& angles, double sigma_px = 1.0) const;
+	Triangulation triangulate(const StereoPixels& pixels, const HeadAngles& angles,
+	                          double sigma_px = 1.0) const;
 
 	/** The triangulated point only, without covariance (for Jacobians and benchmarks). */
 	Eigen::Vector3d triangulatePoint(const StereoPixels& pixels, const HeadAngles& angles) const;
@@ -129,7 +129,7 @@ class BiSightHead
 	/** Throws FixationError unless every angle is within the configured joint limits. */
 	void checkJointLimits(const HeadAngles& angles) const;
 
-   private:
+ private:
 	BiSightOptions options_;
 	PinholeCamera camera_;
 };

@@ -38,7 +38,8 @@ mrpt::poses::CPose3D cameraPoseToMrpt(const Eigen::Isometry3d& T_CamCvInParent_t
 /** The inverse of cameraPoseToMrpt. */
 Eigen::Isometry3d cameraPoseFromMrpt(const mrpt::poses::CPose3D& cameraPose_mrpt);
 
-/** Vehicle state x_v = (z, x, φ) (metres, metres, radians; thesis 4.2.6) as MRPT's CPose2D(z, x, φ). */
+/** Vehicle state x_v = (z, x, φ) (metres, metres, radians; thesis 4.2.6) as MRPT's CPose2D(z, x,
+ * φ). */
 mrpt::poses::CPose2D vehicleToMrpt(const Eigen::Vector3d& xv_zxphi);
 /** The inverse of vehicleToMrpt, with φ wrapped to (−π, π]. */
 Eigen::Vector3d vehicleFromMrpt(const mrpt::poses::CPose2D& pose);

@@ -19,17 +19,18 @@ struct PinholeCamera
 {
 	double focal_px_u = 807;  ///< f·k_u, pixels (thesis 5.3.1 gives f·k_v = 807; square pixels)
 	double focal_px_v = 807;  ///< f·k_v, pixels (thesis 5.3.1)
-	double u0_px = 320;  ///< principal point column (image centre in the ideal case, 4.2.1)
-	double v0_px = 240;  ///< principal point row
+	double u0_px = 320;       ///< principal point column (image centre in the ideal case, 4.2.1)
+	double v0_px = 240;       ///< principal point row
 	int width_px = 640;
 	int height_px = 480;
 
 	/** Pixel (u, v) of the point m (camera frame, thesis axes, any length unit), eq 4.2. If
 	 * @p J is given it receives ∂(u,v)/∂m. Throws ProjectionError unless m_z > 0. */
-	Eigen::Vector2d project(const Eigen::Vector3d& m, Eigen::Matrix<double, 2, 3>* J = nullptr) const;
+	Eigen::Vector2d project(const Eigen::Vector3d& m,
+	                        Eigen::Matrix<double, 2, 3>* J = nullptr) const;
 
-	/** The ray of pixel (u, v): the direction C⁻¹ (u, v, 1)ᵀ scaled to z = 1 (eq 4.6), camera frame,
-	 * thesis axes. project(backProject(uv)) = uv. */
+	/** The ray of pixel (u, v): the direction C⁻¹ (u, v, 1)ᵀ scaled to z = 1 (eq 4.6), camera
+	 * frame, thesis axes. project(backProject(uv)) = uv. */
 	Eigen::Vector3d backProject(const Eigen::Vector2d& uv) const;
 
 	/** ∂backProject/∂(u, v), 3×2 (constant). */

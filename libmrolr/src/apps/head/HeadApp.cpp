@@ -22,21 +22,20 @@ struct CommandSpec
 const std::map<std::string, CommandSpec>& commands()
 {
 	static const std::map<std::string, CommandSpec> specs = {
-		{"fixate", {{"X", "Y", "Z"}, {"pan", "tilt", "verg_left", "verg_right"}}},
-		{"project", {{"X", "Y", "Z", "PAN", "TILT", "VL", "VR"}, {"uL", "vL", "uR", "vR"}}},
-		{"triangulate",
-		 {{"UL", "VL", "UR", "VR", "PAN", "TILT", "VL", "VR"}, {"X", "Y", "Z"}}},
-		{"measure", {{"X", "Y", "Z"}, {"pan", "elevation", "vergence"}}},
+	    {"fixate", {{"X", "Y", "Z"}, {"pan", "tilt", "verg_left", "verg_right"}}},
+	    {"project", {{"X", "Y", "Z", "PAN", "TILT", "VL", "VR"}, {"uL", "vL", "uR", "vR"}}},
+	    {"triangulate", {{"UL", "VL", "UR", "VR", "PAN", "TILT", "VL", "VR"}, {"X", "Y", "Z"}}},
+	    {"measure", {{"X", "Y", "Z"}, {"pan", "elevation", "vergence"}}},
 	};
 	return specs;
 }
 
 const char* kUsage =
-	"commands (points in metres in C0: x left, y up, z forward; angles in radians):\n"
-	"  fixate X Y Z                            -> pan tilt verg_left verg_right\n"
-	"  project X Y Z PAN TILT VL VR            -> uL vL uR vR\n"
-	"  triangulate UL VL UR VR PAN TILT VL VR  -> X Y Z (and cov in --json)\n"
-	"  measure X Y Z                           -> pan elevation vergence (ideal head, eq 5.40)";
+    "commands (points in metres in C0: x left, y up, z forward; angles in radians):\n"
+    "  fixate X Y Z                            -> pan tilt verg_left verg_right\n"
+    "  project X Y Z PAN TILT VL VR            -> uL vL uR vR\n"
+    "  triangulate UL VL UR VR PAN TILT VL VR  -> X Y Z (and cov in --json)\n"
+    "  measure X Y Z                           -> pan elevation vergence (ideal head, eq 5.40)";
 
 std::string joined(const std::vector<std::string>& v)
 {
@@ -48,13 +47,11 @@ std::string joined(const std::vector<std::string>& v)
 std::vector<double> parseInputs(const std::string& cmd, const std::vector<std::string>& args)
 {
 	const auto it = commands().find(cmd);
-	if (it == commands().end())
-		throw util::UsageError("unknown command '" + cmd + "'\n" + kUsage);
+	if (it == commands().end()) throw util::UsageError("unknown command '" + cmd + "'\n" + kUsage);
 	const auto& names = it->second.inputs;
 	if (args.size() != names.size())
-		throw util::UsageError(
-			cmd + " takes " + std::to_string(names.size()) + " numbers (" + joined(names) +
-			"), got " + std::to_string(args.size()));
+		throw util::UsageError(cmd + " takes " + std::to_string(names.size()) + " numbers (" +
+		                       joined(names) + "), got " + std::to_string(args.size()));
 	std::vector<double> out;
 	for (size_t i = 0; i < args.size(); ++i)
 		out.push_back(util::parseNumberArg(args[i], cmd + " " + names[i]));
@@ -75,14 +72,15 @@ std::string HeadApp::defaultConfigPath()
 
 void HeadApp::initialize(const std::vector<std::string>& args)
 {
-	TCLAP::CmdLine cmd(
-		std::string("mrolr-head: BiSight head geometry (thesis 4.2).\n") + kUsage, ' ', "1");
+	TCLAP::CmdLine cmd(std::string("mrolr-head: BiSight head geometry (thesis 4.2).\n") + kUsage,
+	                   ' ', "1");
 	TCLAP::ValueArg<std::string> cfg("", "config", "head .ini ([bisight])", false, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> sigma(
-		"", "sigma-px", "pixel noise for triangulate's covariance (default 1)", false, "1", "S", cmd);
+	TCLAP::ValueArg<std::string> sigma("", "sigma-px",
+	                                   "pixel noise for triangulate's covariance (default 1)",
+	                                   false, "1", "S", cmd);
 	TCLAP::SwitchArg js("", "json", "print one JSON object keyed by the output names", cmd);
 	TCLAP::UnlabeledValueArg<std::string> command_arg(
-		"command", "fixate | project | triangulate | measure", true, "", "COMMAND", cmd);
+	    "command", "fixate | project | triangulate | measure", true, "", "COMMAND", cmd);
 	TCLAP::UnlabeledMultiArg<std::string> rest("numbers", "the command's numbers", false, "N", cmd);
 	help_shown = !parseTclap(cmd, args);
 	if (help_shown) return;
@@ -97,8 +95,8 @@ void HeadApp::initialize(const std::vector<std::string>& args)
 int HeadApp::run(std::ostream& out)
 {
 	if (help_shown) return util::kExitOk;
-	options = geometry::BiSightOptions::fromFile(
-		config_path.empty() ? defaultConfigPath() : config_path);
+	options =
+	    geometry::BiSightOptions::fromFile(config_path.empty() ? defaultConfigPath() : config_path);
 	const geometry::BiSightHead head(options);
 	const Eigen::Vector3d p(numbers[0], numbers[1], numbers[2]);
 	output_names = commands().at(command).outputs;
@@ -140,8 +138,7 @@ void HeadApp::print(std::ostream& out) const
 	nlohmann::json j = nlohmann::json::object();
 	for (size_t i = 0; i < output_values.size(); ++i) j[output_names[i]] = output_values[i];
 	if (cov)
-		for (int r = 0; r < 3; ++r)
-			j["cov"].push_back({(*cov)(r, 0), (*cov)(r, 1), (*cov)(r, 2)});
+		for (int r = 0; r < 3; ++r) j["cov"].push_back({(*cov)(r, 0), (*cov)(r, 1), (*cov)(r, 2)});
 	out << j.dump() << "\n";
 }
 
