@@ -1,0 +1,49 @@
+#pragma once
+/** Epipolar rectification of a calibrated stereo pair (thesis 4.3.1, fig 4.3.1.1) with OpenCV's
+ * stereoRectify: both images are re-projected onto a common plane parallel to the baseline so that
+ * conjugate epipolar lines are the same image row. Rectified left pixel (x, y) with disparity
+ * d = x_left − x_right (px) is the 3D point Z = f·B/d, X = (x − cx)·Z/f, Y = (y − cy)·Z/f in the
+ * rectified left camera (OpenCV axes); pointInLeftCamera returns it in the thesis left camera frame
+ * L of the unrectified left camera (x left, y up, z along the optic axis), millimetres. */
+
+#include <mrolr/stereo/StereoCalibration.h>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+namespace mrolr::stereo
+{
+class Rectifier
+{
+   public:
+	/** Computes the rectifying rotations and the remap tables (full-resolution, alpha = 0: only
+	 * valid pixels). Throws std::runtime_error for a degenerate calibration. */
+	explicit Rectifier(const StereoCalibration& calib);
+
+	/** Rectified left and right images (same type as the input). Throws std::runtime_error if a
+	 * size differs from the calibration's image size. */
+	void rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect, cv::Mat& right_rect)
+		const;
+
+	/** 3D point (mm, thesis frame L of the original left camera) of rectified left pixel (x, y) px
+	 * at disparity d px (d > 0). */
+	Eigen::Vector3d pointInLeftCamera(double x_px, double y_px, double disparity_px) const;
+
+	/** Disparity (px) of a point at depth z_mm along the rectified optic axis. */
+	double disparityAtDepth(double z_mm) const { return f_px_ * baseline_mm_ / z_mm; }
+
+	double focal_px() const { return f_px_; }
+	double baseline_mm() const { return baseline_mm_; }
+	cv::Point2d principalPoint_px() const { return {cx_px_, cy_px_}; }
+	/** Rotation from the original left camera to the rectified left camera (OpenCV axes). */
+	const cv::Matx33d& R_RectFromL() const { return R1_; }
+
+   private:
+	cv::Size size_;
+	cv::Mat map_lx_, map_ly_, map_rx_, map_ry_;
+	cv::Matx33d R1_;
+	Eigen::Matrix3d R_LthesisFromRect_;
+	double f_px_ = 0, cx_px_ = 0, cy_px_ = 0, baseline_mm_ = 0;
+};
+
+}  // namespace mrolr::stereo

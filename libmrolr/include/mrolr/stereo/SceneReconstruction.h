@@ -1,0 +1,51 @@
+#pragma once
+/** 3D wire-frame of a scene from one stereo pair (thesis 4.3.2.3): rectification, sub-pixel edge
+ * strings, PMF-style scanline matching, 3D edge strings, and their segmentation into 3D lines and
+ * conics. Output in millimetres in the thesis left camera frame L (x left, y up, z forward). */
+
+#include <mrolr/stereo/EdgeMatcher.h>
+#include <mrolr/stereo/EdgeStrings.h>
+#include <mrolr/stereo/Fit3.h>
+#include <mrolr/stereo/StereoCalibration.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mrolr::stereo
+{
+/** All options of scene reconstruction, read from one .ini section (config/model.ini [scene]). */
+struct SceneOptions
+{
+	double min_depth_mm = 300;  ///< nearest depth searched (sets the largest disparity)
+	double max_depth_mm = 3000;  ///< farthest depth searched (sets the smallest disparity)
+	EdgeOptions edges;
+	MatchOptions match;
+	FitOptions fit;
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** The reconstructed segments and counts of the intermediate stages. */
+struct StereoScene
+{
+	std::vector<LineFit3> lines;
+	std::vector<ConicFit3> conics;
+	size_t left_strings = 0, right_strings = 0, matches = 0, strings3d = 0;
+};
+
+/** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
+ * more than max_gap_edgels unmatched edgels or a disparity jump beyond max_disparity_jump_px. */
+std::vector<std::vector<StereoEdgel>> stereoStrings(
+	const std::vector<EdgeMatch>& matches, const Rectifier& rect, const FitOptions& o);
+
+/** Reconstructs a scene from an unrectified stereo pair (grey or colour, the calibration's size).
+ * Throws std::runtime_error for images that do not fit the calibration. */
+StereoScene reconstructScene(
+	const cv::Mat& left, const cv::Mat& right, const StereoCalibration& calib,
+	const SceneOptions& options);
+
+}  // namespace mrolr::stereo

@@ -1,0 +1,84 @@
+#include <mrolr/stereo/Rectifier.h>
+#include <mrolr/stereo/SceneReconstruction.h>
+#include <mrolr/util/Config.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <ostream>
+
+namespace mrolr::stereo
+{
+namespace
+{
+cv::Mat toGrey8(const cv::Mat& img)
+{
+	cv::Mat g = img;
+	if (img.channels() == 3) cv::cvtColor(img, g, cv::COLOR_BGR2GRAY);
+	if (img.channels() == 4) cv::cvtColor(img, g, cv::COLOR_BGRA2GRAY);
+	if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
+	return g;
+}
+
+bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
+{
+	return m.string == prev.string && m.edgel - prev.edgel <= o.max_gap_edgels + 1 &&
+		   std::abs(m.disparity_px - prev.disparity_px) <= o.max_disparity_jump_px;
+}
+}  // namespace
+
+void SceneOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	min_depth_mm = util::readDouble(cfg, section, "min_depth_mm", min_depth_mm);
+	max_depth_mm = util::readDouble(cfg, section, "max_depth_mm", max_depth_mm);
+	util::requireInRange(cfg, section, "min_depth_mm", min_depth_mm, 1, 1e6);
+	util::requireInRange(cfg, section, "max_depth_mm", max_depth_mm, min_depth_mm + 1, 1e7);
+	edges.loadFromConfigFile(cfg, section);
+	match.loadFromConfigFile(cfg, section);
+	fit.loadFromConfigFile(cfg, section);
+}
+
+void SceneOptions::dump(std::ostream& out) const
+{
+	out << "min_depth_mm = " << min_depth_mm << "\nmax_depth_mm = " << max_depth_mm << "\n";
+	edges.dump(out);
+	match.dump(out);
+	fit.dump(out);
+}
+
+std::vector<std::vector<StereoEdgel>> stereoStrings(
+	const std::vector<EdgeMatch>& matches, const Rectifier& rect, const FitOptions& o)
+{
+	std::vector<std::vector<StereoEdgel>> out;
+	for (size_t i = 0; i < matches.size(); ++i)
+	{
+		const EdgeMatch& m = matches[i];
+		if (i == 0 || !continues(matches[i - 1], m, o)) out.emplace_back();
+		const cv::Point2d xy(m.x_left_px, m.y_px);
+		out.back().push_back({xy, m.disparity_px, rect.pointInLeftCamera(xy.x, xy.y, m.disparity_px)});
+	}
+	return out;
+}
+
+StereoScene reconstructScene(
+	const cv::Mat& left, const cv::Mat& right, const StereoCalibration& calib,
+	const SceneOptions& o)
+{
+	const Rectifier rect(calib);
+	cv::Mat lr, rr;
+	rect.rectify(toGrey8(left), toGrey8(right), lr, rr);
+	const auto ls = detectEdgeStrings(lr, o.edges), rs = detectEdgeStrings(rr, o.edges);
+	const auto matches = matchEdgeStrings(
+		ls, rs, rect.disparityAtDepth(o.max_depth_mm), rect.disparityAtDepth(o.min_depth_mm), o.match);
+	StereoScene scene;
+	scene.left_strings = ls.size();
+	scene.right_strings = rs.size();
+	scene.matches = matches.size();
+	const auto strings = stereoStrings(matches, rect, o.fit);
+	scene.strings3d = strings.size();
+	for (const auto& s : strings) segmentString(s, rect, o.fit, scene.lines, scene.conics);
+	return scene;
+}
+
+}  // namespace mrolr::stereo
