@@ -1,0 +1,135 @@
+#include <mrolr/model/SceneModel.h>
+#include <mrolr/model/TurntableBuilder.h>
+#include <mrolr/model/WireFrameSampling.h>
+#include <mrolr/stereo/StereoCalibration.h>
+#include <mrolr/util/Config.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace mrolr::model
+{
+namespace
+{
+std::string inDir(const std::string& dir, const std::string& file)
+{
+	return (std::filesystem::path(dir) / file).string();
+}
+
+Eigen::Isometry3d readPose(const mrpt::config::CConfigFileBase& cfg, const std::string& sec)
+{
+	const auto r = util::readDoubles(cfg, sec, "R_TfromL", 9);
+	const auto t = util::readDoubles(cfg, sec, "t_LinT_mm", 3);
+	Eigen::Matrix3d R;
+	R << r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8];
+	if ((R * R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
+		throw util::ConfigError(util::describeKey(cfg, sec, "R_TfromL") + ": not a rotation matrix");
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = R;
+	T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
+	return T;
+}
+
+cv::Mat readImage(const std::string& path)
+{
+	cv::Mat img = cv::imread(path, cv::IMREAD_GRAYSCALE);
+	if (img.empty()) throw std::runtime_error("cannot read turntable image '" + path + "'");
+	return img;
+}
+
+bool insideObject(const Eigen::Vector3d& p, const TurntableOptions& o)
+{
+	return p.head<2>().norm() <= o.keep_radius_mm && p.z() >= o.min_height_mm && p.z() <= o.max_height_mm;
+}
+}  // namespace
+
+TurntableSet loadTurntableSet(const std::string& dir)
+{
+	const std::string ini = inDir(dir, "turntable.ini");
+	if (!std::filesystem::exists(ini)) throw std::runtime_error("no turntable.ini in '" + dir + "'");
+	mrpt::config::CConfigFile cfg(ini);
+	TurntableSet s;
+	s.object = util::readString(cfg, "turntable", "object");
+	s.calib_path = inDir(dir, util::readString(cfg, "turntable", "calib"));
+	if (util::hasKey(cfg, "turntable", "truth")) s.truth_path = inDir(dir, util::readString(cfg, "turntable", "truth"));
+	s.T_LinT_mm = readPose(cfg, "turntable");
+	const long n = util::readInt(cfg, "turntable", "views");
+	util::requireInRange(cfg, "turntable", "views", static_cast<double>(n), 1, 1000);
+	for (long i = 0; i < n; ++i)
+	{
+		const std::string sec = "view_" + std::to_string(i);
+		s.views.push_back({inDir(dir, util::readString(cfg, sec, "left")),
+			inDir(dir, util::readString(cfg, sec, "right")), util::readDouble(cfg, sec, "angle_deg")});
+	}
+	return s;
+}
+
+void TurntableOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	keep_radius_mm = util::readDouble(cfg, section, "keep_radius_mm", keep_radius_mm);
+	min_height_mm = util::readDouble(cfg, section, "min_height_mm", min_height_mm);
+	max_height_mm = util::readDouble(cfg, section, "max_height_mm", max_height_mm);
+	merge.max_distance_mm = util::readDouble(cfg, section, "merge_max_distance_mm", merge.max_distance_mm);
+	merge.max_angle_deg = util::readDouble(cfg, section, "merge_max_angle_deg", merge.max_angle_deg);
+	merge.max_gap_mm = util::readDouble(cfg, section, "merge_max_gap_mm", merge.max_gap_mm);
+	merge.max_centre_mm = util::readDouble(cfg, section, "merge_max_centre_mm", merge.max_centre_mm);
+	merge.max_radius_diff_mm =
+		util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
+	util::requireInRange(cfg, section, "keep_radius_mm", keep_radius_mm, 1, 1e5);
+}
+
+void cropToObject(WireFrame& wf, const TurntableOptions& o)
+{
+	auto outside = [&](const std::vector<FeatureSample>& s) {
+		return std::any_of(s.begin(), s.end(), [&](auto& q) { return !insideObject(q.p, o); });
+	};
+	wf.lines.erase(std::remove_if(wf.lines.begin(), wf.lines.end(),
+					   [&](const Line3& l) { return outside(sampleLine(l, 5.0, 0)); }),
+		wf.lines.end());
+	wf.conics.erase(std::remove_if(wf.conics.begin(), wf.conics.end(),
+						[&](const Conic3& c) { return outside(sampleConic(c, 5.0, 0)); }),
+		wf.conics.end());
+}
+
+WireFrame viewInObjectFrame(
+	const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm, double angle_deg,
+	const TurntableOptions& o)
+{
+	const Eigen::Isometry3d T_TinO(Eigen::AngleAxisd(-angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+	WireFrame wf = transformWireFrame(sceneToWireFrame(scene), T_TinO * T_LinT_mm, WireFrameFrame::Object);
+	cropToObject(wf, o);
+	return wf;
+}
+
+void renumber(WireFrame& wf)
+{
+	int id = 1;
+	for (auto& l : wf.lines) l.id = id++;
+	for (auto& c : wf.conics) c.id = id++;
+	wf.cliques.clear();
+}
+
+WireFrame buildFromTurntable(
+	const TurntableSet& set, const stereo::SceneOptions& so, const TurntableOptions& o)
+{
+	const stereo::StereoCalibration calib = stereo::loadStereoCalibration(set.calib_path);
+	WireFrame all;
+	all.name = set.object;
+	all.frame = WireFrameFrame::Object;
+	for (const auto& v : set.views)
+	{
+		const auto scene = stereo::reconstructScene(readImage(v.left_png), readImage(v.right_png), calib, so);
+		const WireFrame w = viewInObjectFrame(scene, set.T_LinT_mm, v.angle_deg, o);
+		all.lines.insert(all.lines.end(), w.lines.begin(), w.lines.end());
+		all.conics.insert(all.conics.end(), w.conics.begin(), w.conics.end());
+	}
+	mergeDuplicates(all, o.merge);
+	renumber(all);
+	return all;
+}
+
+}  // namespace mrolr::model
