@@ -1,0 +1,179 @@
+#include <mrolr/apps/ModelApp.h>
+#include <mrolr/geometry/BiSightOptions.h>
+#include <mrolr/model/AutoCliques.h>
+#include <mrolr/model/ModelEditor.h>
+#include <mrolr/model/ModelRender.h>
+#include <mrolr/model/SceneModel.h>
+#include <mrolr/model/TurntableBuilder.h>
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/model/WireFrameSampling.h>
+#include <mrolr/stereo/SceneReconstruction.h>
+#include <mrolr/util/Cli.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <filesystem>
+#include <ostream>
+
+namespace mrolr::apps
+{
+namespace
+{
+/** config/model.ini, found relative to the working directory or the source tree. */
+mrpt::config::CConfigFile openConfig(const std::string& path)
+{
+	std::string p = path;
+	if (!std::filesystem::exists(p) && std::filesystem::exists(std::string(MROLR_SOURCE_DIR) + "/" + path))
+		p = std::string(MROLR_SOURCE_DIR) + "/" + path;
+	if (!std::filesystem::exists(p)) throw std::runtime_error("configuration file '" + path + "' does not exist");
+	return mrpt::config::CConfigFile(p);
+}
+
+template <typename Opt>
+Opt loadOptions(const std::string& path, const std::string& section)
+{
+	Opt o;
+	o.loadFromConfigFile(openConfig(path), section);
+	return o;
+}
+
+cv::Mat readImage(const std::string& path)
+{
+	cv::Mat img = cv::imread(path, cv::IMREAD_GRAYSCALE);
+	if (img.empty()) throw std::runtime_error("cannot read image '" + path + "'");
+	return img;
+}
+
+nlohmann::json qualityJson(const model::ModelQuality& q)
+{
+	return {{"true_length_mm", q.true_length_mm}, {"recovered_length_mm", q.recovered_length_mm},
+		{"recovered_fraction", q.recovered_fraction}, {"model_features", q.model_features},
+		{"false_segments", q.false_features}, {"median_endpoint_error_mm", q.median_endpoint_error_mm},
+		{"max_endpoint_error_mm", q.max_endpoint_error_mm}, {"conics_compared", q.conics_compared},
+		{"median_conic_radius_error_mm", q.median_conic_radius_error_mm}};
+}
+
+Eigen::Vector3d v3(const std::vector<double>& v, size_t i) { return {v[i], v[i + 1], v[i + 2]}; }
+
+geometry::HeadAngles anglesFromDeg(const std::vector<double>& d)
+{
+	const double k = M_PI / 180;
+	return {d[0] * k, d[1] * k, d[2] * k, d[3] * k};
+}
+}  // namespace
+
+int ModelApp::run(std::ostream& out)
+{
+	if (help_shown) return util::kExitOk;
+	report = {{"command", command}};
+	int rc = util::kExitOk;
+	if (command == "build") rc = runBuild();
+	else if (command == "scene") rc = runScene();
+	else if (command == "edit") rc = runEdit(out);
+	else if (command == "cliques") rc = runCliques();
+	else if (command == "show") rc = runShow();
+	else rc = runStats();
+	report["lines"] = result.lines.size();
+	report["conics"] = result.conics.size();
+	report["cliques"] = result.cliques.size();
+	report["total_length_mm"] = model::totalLength(result);
+	if (json) out << report.dump(2) << "\n";
+	else
+		for (const auto& [k, v] : report.items()) out << k << " " << v.dump() << "\n";
+	return rc;
+}
+
+void ModelApp::addStatsToReport(const model::WireFrame& truth)
+{
+	quality = model::compareToTruth(result, truth, loadOptions<model::QualityOptions>(config_path, "quality"));
+	report["quality"] = qualityJson(*quality);
+}
+
+int ModelApp::runBuild()
+{
+	const auto set = model::loadTurntableSet(turntable_dir);
+	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
+	const auto to = loadOptions<model::TurntableOptions>(config_path, "turntable");
+	result = model::buildFromTurntable(set, so, to);
+	model::addAutomaticCliques(result, loadOptions<model::CliqueOptions>(config_path, "cliques"));
+	model::saveWireFrame(result, out_path);
+	report["views"] = set.views.size();
+	report["out"] = out_path;
+	const std::string truth = truth_path.empty() ? set.truth_path : truth_path;
+	if (!truth.empty()) addStatsToReport(model::loadWireFrame(truth));
+	return util::kExitOk;
+}
+
+int ModelApp::runScene()
+{
+	const auto calib = stereo::loadStereoCalibration(calib_path);
+	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
+	const auto scene = stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
+	result = model::sceneToWireFrame(scene);
+	if (head_deg)
+	{
+		const geometry::BiSightHead head(geometry::BiSightOptions::fromFile(bisight_path));
+		result = model::leftCameraToC0(result, head, anglesFromDeg(*head_deg));
+	}
+	model::saveWireFrame(result, out_path);
+	report["frame"] = model::frameName(result.frame);
+	report["edge_strings_left"] = scene.left_strings;
+	report["edge_matches"] = scene.matches;
+	report["out"] = out_path;
+	if (!truth_path.empty()) addStatsToReport(model::loadWireFrame(truth_path));
+	return util::kExitOk;
+}
+
+int ModelApp::runEdit(std::ostream& out)
+{
+	result = model::loadWireFrame(model_path);
+	size_t removed = remove_ids.empty() ? 0 : model::removeIds(result, remove_ids);
+	for (const auto& b : remove_boxes) removed += model::removeInBox(result, v3(b, 0), v3(b, 3));
+	for (const auto& l : add_lines) model::addLine(result, v3(l, 0), v3(l, 3));
+	for (const auto& c : add_conics)
+		model::addConic(result, {0, v3(c, 0), v3(c, 3), v3(c, 6), c[9], c[10], c[11], c[12]});
+	if (grasp) model::setGrasp(result, v3(*grasp, 0), (*grasp)[3], (*grasp)[4], (*grasp)[5]);
+	const size_t merged = merge ? model::mergeDuplicates(result, loadOptions<model::TurntableOptions>(config_path, "turntable").merge) : 0;
+	if (list) model::listFeatures(result, out);
+	model::saveWireFrame(result, out_path);
+	report["removed"] = removed;
+	report["merged_away"] = merged;
+	report["out"] = out_path;
+	return util::kExitOk;
+}
+
+int ModelApp::runCliques()
+{
+	result = model::loadWireFrame(model_path);
+	if (replace) result.cliques.clear();
+	const auto o = loadOptions<model::CliqueOptions>(config_path, "cliques");
+	report["manual_cliques"] = result.cliques.size();
+	report["added_cliques"] = model::addAutomaticCliques(result, o);
+	report["uncovered_directions"] = model::uncoveredDirections(result, o).size();
+	report["directions"] = model::viewingDirections(o).size();
+	model::saveWireFrame(result, out_path);
+	report["out"] = out_path;
+	return util::kExitOk;
+}
+
+int ModelApp::runShow()
+{
+	result = model::loadWireFrame(model_path);
+	auto o = model::defaultDrawOptions(result.frame);
+	if (azimuth_deg) o.azimuth_deg = *azimuth_deg;
+	if (elevation_deg) o.elevation_deg = *elevation_deg;
+	if (!png_path.empty()) model::saveWireFramePng(result, o, png_path), report["png"] = png_path;
+	if (!scene3d_path.empty()) model::saveWireFrameScene(result, scene3d_path), report["scene3d"] = scene3d_path;
+	return util::kExitOk;
+}
+
+int ModelApp::runStats()
+{
+	result = model::loadWireFrame(model_path);
+	report["frame"] = model::frameName(result.frame);
+	if (!truth_path.empty()) addStatsToReport(model::loadWireFrame(truth_path));
+	return util::kExitOk;
+}
+
+}  // namespace mrolr::apps
