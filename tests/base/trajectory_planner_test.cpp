@@ -25,7 +25,10 @@ TEST(TrajectoryPlanner, StepsSumToTheDistanceAndNeverExceedAFullStep)
 	{
 		const auto s = translationSteps(d, o);
 		EXPECT_NEAR(std::accumulate(s.begin(), s.end(), 0.0), d, 1e-12) << d;
-		for (double x : s) EXPECT_LE(x, o.step_length_m + 1e-12);
+		for (double x : s)
+		{
+			EXPECT_LE(x, o.step_length_m + 1e-12);
+		}
 		// The last step is a whole step or a remainder under min_step_m.
 		if (s.size() > 1)
 		{
@@ -48,7 +51,9 @@ TEST(TrajectoryPlanner, NoiseFreeLegReachesTheWaypoint)
 	{
 		x = model.move(x, step.u);
 		if (step.kind == PlannedStep::Kind::Rotate)
+		{
 			EXPECT_LE(std::abs(step.amount), 30 * M_PI / 180 + 1e-12);
+		}
 	}
 	EXPECT_NEAR((x - to).head<2>().norm(), 0, 1e-12);
 	EXPECT_NEAR(wrapAngle(x[2] - to[2]), 0, 1e-12);

@@ -1,0 +1,171 @@
+#include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/slam/ActiveSlamFilter.h>
+
+#include <mrolr/slam/Chi2.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace mrolr::slam
+{
+ActiveSlamFilter::ActiveSlamFilter(const SlamOptions& options, const base::LabmateModel& model)
+	: m_options(options), m_model(model)
+{
+	m_gate = chi2Quantile(options.gate_probability, 3);
+	KF_options.use_analytic_observation_jacobian = true;
+	KF_options.use_analytic_transition_jacobian = true;
+	KF_options.method = options.update_method == UpdateMethod::Batch ? mrpt::bayes::kfEKFNaive
+																	  : mrpt::bayes::kfEKFAlaDavison;
+	reset();
+}
+
+void ActiveSlamFilter::predict(const base::WheelControl& u)
+{
+	m_u = u;
+	if (m_tracker.tracking())
+	{
+		predictPostponed();
+		return;
+	}
+	m_pending.clear();
+	m_skipPrediction = false;
+	runOneKalmanIteration();
+}
+
+UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
+{
+	for (size_t a = 0; a < z.size(); ++a)
+	{
+		if (z[a].feature >= m_info.size())
+			throw std::out_of_range("ActiveSlamFilter::update: no feature " + std::to_string(z[a].feature));
+		for (size_t b = a + 1; b < z.size(); ++b)
+			if (z[a].feature == z[b].feature)
+				throw std::invalid_argument("ActiveSlamFilter::update: feature measured twice");
+	}
+	if (postponedApplies(z)) return updatePostponed(z.front());
+	synchronise();
+	m_report = {};
+	if (z.empty()) return m_report;
+	m_pending = z;
+	m_skipPrediction = true;
+	runOneKalmanIteration();
+	m_pending.clear();
+	return m_report;
+}
+
+void ActiveSlamFilter::OnGetAction(KFArray_ACT& u) const
+{
+	u[0] = m_u.v1_mps;
+	u[1] = m_u.v2_mps;
+}
+
+void ActiveSlamFilter::OnTransitionModel(const KFArray_ACT& u, KFArray_VEH& x, bool& skip) const
+{
+	skip = m_skipPrediction;
+	const Eigen::Vector3d xn = m_model.move(x.asEigen(), {u[0], u[1], m_u.dt_s});
+	for (int k = 0; k < 3; ++k) x[k] = xn[k];
+}
+
+void ActiveSlamFilter::OnTransitionJacobian(KFMatrix_VxV& F) const
+{
+	F.asEigen() = m_model.jacobianState(vehicleRaw(), m_u);
+}
+
+void ActiveSlamFilter::OnTransitionNoise(KFMatrix_VxV& Q) const
+{
+	Q.asEigen() = m_model.processNoise(vehicleRaw(), m_u);
+}
+
+void ActiveSlamFilter::OnPreComputingPredictions(
+	const vector_KFArray_OBS&, std::vector<size_t>& out_idx) const
+{
+	// Only the features being measured: the head looks at one feature at a time.
+	out_idx.clear();
+	for (const auto& o : m_pending) out_idx.push_back(o.feature);
+}
+
+void ActiveSlamFilter::OnGetObservationNoise(KFMatrix_OxO& R) const
+{
+	R.asEigen() = measurementNoise();
+}
+
+Eigen::Matrix3d ActiveSlamFilter::measurementNoise() const
+{
+	const Eigen::Vector3d s(
+		m_options.std_pan_rad, m_options.std_elevation_rad, m_options.std_vergence_rad);
+	return s.cwiseAbs2().asDiagonal();
+}
+
+void ActiveSlamFilter::OnGetObservationsAndDataAssociation(
+	vector_KFArray_OBS& out_z, std::vector<int>& out_da, const vector_KFArray_OBS& predictions,
+	const KFMatrix& S, const std::vector<size_t>& idx_in_S, const KFMatrix_OxO&)
+{
+	out_z.clear();
+	out_da.clear();
+	for (const auto& o : m_pending)
+	{
+		const auto j = std::find(idx_in_S.begin(), idx_in_S.end(), o.feature) - idx_in_S.begin();
+		const Eigen::Matrix3d Si = S.asEigen().block<3, 3>(3 * j, 3 * j);
+		const Eigen::Vector3d nu = measurementDifference(o.h, predictions[o.feature].asEigen());
+		const double nis = nu.dot(Si.ldlt().solve(nu));
+		if (!(nis <= m_gate))
+		{
+			m_report.rejected.push_back(o.feature);
+			continue;
+		}
+		m_report.accepted.push_back(o.feature);
+		m_report.nis.push_back(nis);
+		KFArray_OBS zz;
+		for (int k = 0; k < 3; ++k) zz[k] = o.h[k];
+		out_z.push_back(zz);
+		out_da.push_back(static_cast<int>(o.feature));
+	}
+}
+
+void ActiveSlamFilter::OnObservationModel(
+	const std::vector<size_t>& idx, vector_KFArray_OBS& out) const
+{
+	out.resize(idx.size());
+	const Eigen::Vector3d xv = vehicleRaw();
+	for (size_t k = 0; k < idx.size(); ++k)
+	{
+		const Eigen::Vector3d h =
+			predictMeasurement(xv, featureRaw(idx[k]), m_options.head.constants);
+		for (int c = 0; c < 3; ++c) out[k][c] = h[c];
+	}
+}
+
+void ActiveSlamFilter::OnObservationJacobians(size_t idx, KFMatrix_OxV& Hx, KFMatrix_OxF& Hy) const
+{
+	const auto J = measurementJacobians(vehicleRaw(), featureRaw(idx), m_options.head.constants);
+	Hx.asEigen() = J.H_xv;
+	Hy.asEigen() = J.H_y;
+}
+
+void ActiveSlamFilter::OnSubstractObservationVectors(KFArray_OBS& A, const KFArray_OBS& B) const
+{
+	const Eigen::Vector3d d = measurementDifference(A.asEigen(), B.asEigen());
+	for (int k = 0; k < 3; ++k) A[k] = d[k];
+}
+
+void ActiveSlamFilter::OnNormalizeStateVector() { m_xkk[2] = base::wrapAngle(m_xkk[2]); }
+
+void ActiveSlamFilter::OnPostIteration()
+{
+	// Keep P exactly symmetric: MRPT's batch update (I − KH)P is not, in floating point.
+	auto P = m_pkk.asEigen();
+	const Eigen::MatrixXd Ps = 0.5 * (P + P.transpose());
+	P = Ps;
+}
+
+Eigen::Vector3d ActiveSlamFilter::vehicleRaw() const { return {m_xkk[0], m_xkk[1], m_xkk[2]}; }
+
+Eigen::Vector3d ActiveSlamFilter::featureRaw(size_t i) const
+{
+	const size_t o = 3 + 3 * i;
+	return {m_xkk[o], m_xkk[o + 1], m_xkk[o + 2]};
+}
+
+}  // namespace mrolr::slam

@@ -1,0 +1,217 @@
+// Map management of ActiveSlamFilter: reset (5.31), known features (5.6.2), initialisation
+// (5.46–5.48), deletion (5.49), world-frame zeroing (5.50–5.52), the attempt record (5.7), and
+// read access to x and P.
+#include <mrolr/slam/ActiveSlamFilter.h>
+
+#include <stdexcept>
+
+namespace mrolr::slam
+{
+namespace
+{
+void checkIndex(size_t i, size_t n, const char* what)
+{
+	if (i >= n)
+		throw std::out_of_range(
+			std::string(what) + ": feature " + std::to_string(i) + " of " + std::to_string(n));
+}
+
+/** x and P with rows/columns [o, o+3) removed. */
+void removeBlock(Eigen::VectorXd& x, Eigen::MatrixXd& P, Eigen::Index o)
+{
+	const Eigen::Index n = x.size(), t = n - o - 3;
+	Eigen::VectorXd xn(n - 3);
+	xn << x.head(o), x.tail(t);
+	Eigen::MatrixXd Pn(n - 3, n - 3);
+	Pn << P.topLeftCorner(o, o), P.topRightCorner(o, t), P.bottomLeftCorner(t, o),
+		P.bottomRightCorner(t, t);
+	x = xn;
+	P = Pn;
+}
+}  // namespace
+
+void ActiveSlamFilter::reset(const Eigen::Vector3d& x_v)
+{
+	m_tracker = PostponedTracker33{};
+	m_info.clear();
+	setState(x_v, Eigen::Matrix3d::Zero());
+}
+
+void ActiveSlamFilter::setState(const Eigen::VectorXd& x, const Eigen::MatrixXd& P)
+{
+	const auto n = static_cast<Eigen::Index>(3 + 3 * m_info.size());
+	if (x.size() != n || P.rows() != n || P.cols() != n)
+		throw std::invalid_argument("ActiveSlamFilter::setState: size does not match the map");
+	m_tracker = PostponedTracker33{};
+	m_xkk.resize(n);
+	m_pkk.setSize(n, n);
+	m_xkk.asEigen() = x;
+	m_pkk.asEigen() = P;
+}
+
+void ActiveSlamFilter::appendFeature(
+	const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info)
+{
+	// P_new: the 3 new rows (3 × (n + 3)), the last block being P_yy.
+	const Eigen::VectorXd x = stateVector();
+	const Eigen::MatrixXd P = covariance();
+	const Eigen::Index n = x.size();
+	Eigen::VectorXd xn(n + 3);
+	xn << x, y;
+	Eigen::MatrixXd Pn(n + 3, n + 3);
+	Pn.topLeftCorner(n, n) = P;
+	Pn.bottomRows(3) = P_new;
+	Pn.topRightCorner(n, 3) = P_new.leftCols(n).transpose();
+	m_info.push_back(std::move(info));
+	setState(xn, Pn);
+}
+
+size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW)
+{
+	synchronise();
+	FeatureInfo info;
+	info.label = label;
+	info.known = true;
+	info.p_C0atInitInW = headCentreInW(vehicleRaw(), m_options.head.constants);
+	appendFeature(p_FinW, Eigen::MatrixXd::Zero(3, m_xkk.size() + 3), std::move(info));
+	return m_info.size() - 1;
+}
+
+size_t ActiveSlamFilter::initialiseFeature(const std::string& label, const Eigen::Vector3d& h)
+{
+	synchronise();
+	const Eigen::Vector3d xv = vehicleRaw();
+	const auto g = initialiseFromMeasurement(xv, h, m_options.head.constants);
+	const Eigen::MatrixXd P = covariance();
+	const Eigen::Index n = P.rows();
+	// Eq 5.48: P_yx = G_x P_xx, P_yyj = G_x P_xyj, P_yy = G_x P_xx G_xᵀ + G_h R G_hᵀ.
+	Eigen::MatrixXd rows(3, n + 3);
+	rows.leftCols(n) = g.dy_dxv * P.topRows(3);
+	rows.rightCols(3) = g.dy_dxv * P.topLeftCorner(3, 3) * g.dy_dxv.transpose() +
+		g.dy_dh * measurementNoise() * g.dy_dh.transpose();
+	FeatureInfo info;
+	info.label = label;
+	info.p_C0atInitInW = headCentreInW(xv, m_options.head.constants);
+	appendFeature(g.p_FinW, rows, std::move(info));
+	return m_info.size() - 1;
+}
+
+void ActiveSlamFilter::deleteFeature(size_t i)
+{
+	checkIndex(i, m_info.size(), "deleteFeature");
+	Eigen::VectorXd x = stateVector();
+	Eigen::MatrixXd P = covariance();
+	removeBlock(x, P, static_cast<Eigen::Index>(3 + 3 * i));
+	m_info.erase(m_info.begin() + static_cast<long>(i));
+	setState(x, P);
+}
+
+void ActiveSlamFilter::zeroWorldFrame()
+{
+	// Eqs 5.50–5.52: x_v ← 0, y_i ← m_Gi + M_h (the feature in the frame of the current base),
+	// P ← J P Jᵀ with ∂y_new/∂x_v = ∂m/∂x_v, ∂y_new/∂y_i = R_y(φ)ᵀ and a zero vehicle row.
+	Eigen::VectorXd x = stateVector();
+	const Eigen::MatrixXd P = covariance();
+	const Eigen::Vector3d xv = x.head<3>();
+	const auto& head = m_options.head.constants;
+	Eigen::MatrixXd J = Eigen::MatrixXd::Zero(x.size(), x.size());
+	for (size_t i = 0; i < m_info.size(); ++i)
+	{
+		const Eigen::Index o = static_cast<Eigen::Index>(3 + 3 * i);
+		const auto Jm = pointInHeadJacobians(xv, x.segment<3>(o), head);
+		J.block<3, 3>(o, 0) = Jm.dm_dxv;
+		J.block<3, 3>(o, o) = Jm.dm_dy;
+		x.segment<3>(o) = pointInHead(xv, x.segment<3>(o), head) + Eigen::Vector3d(0, head.head_height_m, 0);
+		m_info[i].p_C0atInitInW = pointInHead(xv, m_info[i].p_C0atInitInW, head) +
+			Eigen::Vector3d(0, head.head_height_m, 0);
+	}
+	x.head<3>().setZero();
+	setState(x, J * P * J.transpose());
+}
+
+void ActiveSlamFilter::recordAttempt(size_t i, bool success)
+{
+	checkIndex(i, m_info.size(), "recordAttempt");
+	auto& info = m_info[i];
+	info.attempts.push_back(success);
+	while (static_cast<int>(info.attempts.size()) > m_options.attempt_window)
+		info.attempts.pop_front();
+	(success ? info.successes : info.failures)++;
+}
+
+bool ActiveSlamFilter::shouldDelete(size_t i) const
+{
+	checkIndex(i, m_info.size(), "shouldDelete");
+	const auto& a = m_info[i].attempts;
+	int failed = 0;
+	for (bool ok : a) failed += ok ? 0 : 1;
+	return 2 * failed > m_options.attempt_window;
+}
+
+size_t ActiveSlamFilter::numFeatures() { return m_info.size(); }
+
+Eigen::Vector3d ActiveSlamFilter::vehicle()
+{
+	if (m_tracker.tracking()) return m_tracker.vehicle();
+	return vehicleRaw();
+}
+
+Eigen::Matrix3d ActiveSlamFilter::vehicleCovariance()
+{
+	if (m_tracker.tracking()) return m_tracker.activeCovariance().topLeftCorner<3, 3>();
+	return m_pkk.asEigen().topLeftCorner<3, 3>();
+}
+
+Eigen::Vector3d ActiveSlamFilter::feature(size_t i)
+{
+	checkIndex(i, m_info.size(), "feature");
+	if (m_tracker.tracking() && m_tracker.trackedFeature() == i) return m_tracker.feature();
+	synchronise();
+	return featureRaw(i);
+}
+
+Eigen::Matrix3d ActiveSlamFilter::featureCovariance(size_t i)
+{
+	checkIndex(i, m_info.size(), "featureCovariance");
+	if (m_tracker.tracking() && m_tracker.trackedFeature() == i)
+		return m_tracker.activeCovariance().bottomRightCorner<3, 3>();
+	synchronise();
+	const auto o = static_cast<Eigen::Index>(3 + 3 * i);
+	return m_pkk.asEigen().block<3, 3>(o, o);
+}
+
+Eigen::VectorXd ActiveSlamFilter::stateVector()
+{
+	synchronise();
+	return m_xkk.asEigen();
+}
+
+Eigen::MatrixXd ActiveSlamFilter::covariance()
+{
+	synchronise();
+	return m_pkk.asEigen();
+}
+
+Eigen::Vector3d ActiveSlamFilter::predictedMeasurement(size_t i)
+{
+	return predictMeasurement(vehicle(), feature(i), m_options.head.constants);
+}
+
+Eigen::Matrix3d ActiveSlamFilter::innovationCovariance(size_t i)
+{
+	checkIndex(i, m_info.size(), "innovationCovariance");
+	const Eigen::Vector3d xv = vehicle(), y = feature(i);
+	const auto J = measurementJacobians(xv, y, m_options.head.constants);
+	const auto o = static_cast<Eigen::Index>(3 + 3 * i);
+	const auto P = m_pkk.asEigen();	 // synchronised by feature(i) unless i is the tracked one
+	Eigen::Matrix<double, 3, 6> H;
+	H << J.H_xv, J.H_y;
+	Eigen::Matrix<double, 6, 6> Pa;
+	if (m_tracker.tracking() && m_tracker.trackedFeature() == i)
+		Pa = m_tracker.activeCovariance();
+	else
+		Pa << P.topLeftCorner<3, 3>(), P.block<3, 3>(0, o), P.block<3, 3>(o, 0), P.block<3, 3>(o, o);
+	return H * Pa * H.transpose() + measurementNoise();
+}
+
+}  // namespace mrolr::slam
