@@ -4,9 +4,11 @@
  * (6.8); docs/sim.md documents the whole format.
  *
  * All positions are in the world frame W of the thesis: x left, y up, z forward, metres, origin at
- * the head centre C0 of the vehicle's start pose; vehicle headings φ turn from z towards x. */
+ * the base centre of the vehicle's start pose on the ground plane (C0 is head_height_m above it,
+ * geometry::T_C0inW); vehicle headings φ turn from z towards x. */
 
 #include <mrolr/world/IniDocument.h>
+#include <mrolr/world/Scenery.h>
 
 #include <Eigen/Core>
 
@@ -40,6 +42,21 @@ struct World
 	std::string path;                 ///< the file it was read from
 	std::vector<Landmark> landmarks;  ///< [landmarks], in file order
 	std::vector<Waypoint> waypoints;  ///< [waypoints], in file order (the route)
+	bool has_room = false;            ///< false for a pure point-landmark world (no [room] section)
+	Room room;                        ///< [room]
+	std::vector<Patch> patches;       ///< [patch.NAME] sections; each also adds a Landmark NAME
+	std::vector<Table> tables;        ///< [table.NAME]
+	std::vector<Obstacle> obstacles;  ///< [obstacle.NAME]
+	std::vector<PlacedObject> objects;  ///< [object.NAME]
+	MissionSpec mission;                ///< [mission]
+	std::string objects_dir;  ///< [room] objects_dir, resolved against the world file's folder
+
+	/** Folder of the world file (for relative texture paths). */
+	std::string directory() const;
+	/** The table with this name, or nullptr. */
+	const Table* findTable(const std::string& name) const;
+	/** The placed object with this name, or nullptr. */
+	const PlacedObject* findObject(const std::string& name) const;
 
 	/** Reads a world file; throws WorldError naming file, line, section, key and value of the
 	 * first malformed entry. */

@@ -1,0 +1,114 @@
+#include <mrolr/geometry/Frames.h>
+#include <mrolr/sim/StereoRenderer.h>
+#include <mrolr/util/Config.h>
+
+#include <mrpt/opengl/CFBORender.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+#include <ostream>
+
+namespace mrolr::sim
+{
+void RenderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                       const std::string& section)
+{
+	using namespace util;
+	noise_sigma_grey = readDouble(cfg, section, "noise_sigma_grey", noise_sigma_grey);
+	blur_sigma_px = readDouble(cfg, section, "blur_sigma_px", blur_sigma_px);
+	seed = unsigned(readInt(cfg, section, "seed", long(seed)));
+	clip_near_m = readDouble(cfg, section, "clip_near_m", clip_near_m);
+	clip_far_m = readDouble(cfg, section, "clip_far_m", clip_far_m);
+	light_ambient = readDouble(cfg, section, "light_ambient", light_ambient);
+	light_diffuse = readDouble(cfg, section, "light_diffuse", light_diffuse);
+	requireInRange(cfg, section, "noise_sigma_grey", noise_sigma_grey, 0, 100);
+	requireInRange(cfg, section, "blur_sigma_px", blur_sigma_px, 0, 20);
+	requireInRange(cfg, section, "clip_near_m", clip_near_m, 1e-3, clip_far_m);
+	requireInRange(cfg, section, "light_ambient", light_ambient, 0, 1);
+	requireInRange(cfg, section, "light_diffuse", light_diffuse, 0, 1);
+}
+
+void RenderOptions::dump(std::ostream& out) const
+{
+	out << "noise_sigma_grey = " << noise_sigma_grey << "\nblur_sigma_px = " << blur_sigma_px
+	    << "\nseed = " << seed << "\nclip_near_m = " << clip_near_m
+	    << "\nclip_far_m = " << clip_far_m << "\nlight_ambient = " << light_ambient
+	    << "\nlight_diffuse = " << light_diffuse << "\n";
+}
+
+StereoRenderer::StereoRenderer(const geometry::BiSightHead& head, const RenderOptions& options)
+    : head_(head), options_(options)
+{
+	const auto& cam = head_.camera();
+	fbo_ =
+	    std::make_unique<mrpt::opengl::CFBORender>(unsigned(cam.width_px), unsigned(cam.height_px));
+}
+
+StereoRenderer::~StereoRenderer() = default;
+
+mrpt::img::CImage StereoRenderer::renderView(const mrpt::opengl::COpenGLScene& scene,
+                                             const Eigen::Isometry3d& T_CamCvInW,
+                                             mrpt::math::CMatrixFloat* depth_m)
+{
+	// OpenGL puts pixel centres at half-integers; the head model (like OpenCV) at integers, so the
+	// principal point is shifted by half a pixel for the renderer.
+	mrpt::img::TCamera tc = head_.camera().toTCamera();
+	tc.cx(tc.cx() + 0.5);
+	tc.cy(tc.cy() + 0.5);
+	auto vp = scene.getViewport();
+	vp->setViewportClipDistances(float(options_.clip_near_m), float(options_.clip_far_m));
+	vp->setCustomBackgroundColor({0.f, 0.f, 0.f});
+	auto& light = vp->lightParameters();
+	light.ambient = {float(options_.light_ambient), float(options_.light_ambient),
+	                 float(options_.light_ambient), 1.f};
+	light.diffuse = {float(options_.light_diffuse), float(options_.light_diffuse),
+	                 float(options_.light_diffuse), 1.f};
+	auto& c = fbo_->getCamera(scene);
+	c.setProjectiveFromPinhole(tc);
+	c.set6DOFMode(true);
+	c.setPose(geometry::cameraPoseToMrpt(T_CamCvInW));
+	mrpt::img::CImage rgb;
+	if (depth_m)
+		fbo_->render_RGBD(scene, rgb, *depth_m);
+	else
+		fbo_->render_RGB(scene, rgb);
+	return rgb.grayscale();
+}
+
+void StereoRenderer::degrade(mrpt::img::CImage& img, uint64_t sample) const
+{
+	if (options_.blur_sigma_px <= 0 && options_.noise_sigma_grey <= 0) return;
+	cv::Mat m = img.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY).clone();
+	if (options_.blur_sigma_px > 0) cv::GaussianBlur(m, m, cv::Size(0, 0), options_.blur_sigma_px);
+	if (options_.noise_sigma_grey > 0)
+	{
+		cv::Mat n(m.size(), CV_16SC1);
+		cv::RNG rng(options_.seed + sample);
+		rng.fill(n, cv::RNG::NORMAL, 0, options_.noise_sigma_grey);
+		cv::Mat s;
+		m.convertTo(s, CV_16SC1);
+		s += n;
+		s.convertTo(m, CV_8UC1);  // saturates to 0..255
+	}
+	img = mrpt::img::CImage(m, mrpt::img::DEEP_COPY);
+}
+
+StereoFrame StereoRenderer::render(const mrpt::opengl::COpenGLScene& scene,
+                                   const Eigen::Isometry3d& T_C0inW,
+                                   const geometry::HeadAngles& angles, uint64_t frame_index)
+{
+	using geometry::Side;
+	const auto t0 = std::chrono::steady_clock::now();
+	StereoFrame f;
+	f.T_LinW = T_C0inW * head_.T_LinC0(angles);
+	f.T_RinW = T_C0inW * head_.T_RinC0(angles);
+	f.left = renderView(scene, T_C0inW * head_.T_CamCvInC0(Side::Left, angles), &f.depth_left_m);
+	f.right = renderView(scene, T_C0inW * head_.T_CamCvInC0(Side::Right, angles));
+	degrade(f.left, 2 * frame_index);
+	degrade(f.right, 2 * frame_index + 1);
+	f.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	return f;
+}
+
+}  // namespace mrolr::sim
