@@ -1,0 +1,54 @@
+#pragma once
+/** Closed-form inverse kinematics of the UMI RTX (thesis B.3.3.1, compute_xyz, generalised): the
+ * wrist centre p_w = p − d6·z6 fixes the column height d1 = p_w.z; the planar shoulder–elbow pair
+ * reaches the wrist's horizontal position in two elbow configurations; the wrist yaw q4, pitch q5
+ * and roll q6 then give the orientation, again in two configurations (q5 and −q5). Every
+ * combination, with every 360° turn of a joint that stays within the limits, is returned. */
+
+#include <mrolr/arm/MotorCounts.h>
+#include <mrolr/arm/RtxJoints.h>
+#include <mrolr/arm/RtxOptions.h>
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace mrolr::arm
+{
+/** One joint configuration reaching the requested pose. */
+struct IkSolution
+{
+	RtxJoints joints;
+	MotorCounts counts{};        ///< real-valued; round with roundCounts()
+	bool elbow_left = true;      ///< q3 <= 0 (compute_xyz's default "LH" configuration)
+	bool wrist_flipped = false;  ///< q5 < 0
+};
+
+/** Every solution, and why the rejected candidates were rejected. */
+struct IkResult
+{
+	std::vector<IkSolution> solutions;
+	std::vector<std::string> rejected;  ///< "elbow right, wrist up: elbow count ... outside ..."
+	/** "" when solutions exist; otherwise all reasons joined by "; ". */
+	std::string reason() const;
+};
+
+class AnalyticIk
+{
+ public:
+	explicit AnalyticIk(const RtxOptions& options = RtxOptions());
+
+	/** All solutions for the gripper pose T06 (mm, frame 0 = arm base A) within the joint limits.
+	 * A pose outside the column range or the wrist radius gives no solution and one reason naming
+	 * that limit. Never throws for a finite pose. */
+	IkResult solve(const Eigen::Isometry3d& T06) const;
+
+	/** As solve(), but throws UnreachableError with the reason when there is no solution. */
+	std::vector<IkSolution> solveAll(const Eigen::Isometry3d& T06) const;
+
+ private:
+	RtxOptions o_;
+};
+
+}  // namespace mrolr::arm

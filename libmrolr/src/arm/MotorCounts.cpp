@@ -1,0 +1,69 @@
+#include <mrolr/arm/ArmError.h>
+#include <mrolr/arm/MotorCounts.h>
+
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace mrolr::arm
+{
+MotorCounts jointsToCounts(const RtxJoints& j, const RtxOptions& o)
+{
+	const double pitch = 90.0 - mrpt::RAD2DEG(j.q(5));
+	const double roll = mrpt::RAD2DEG(j.q(6));
+	MotorCounts c{};
+	c[0] = (j.d1_mm - o.d1_top_mm) / o.column_mm_per_count;
+	c[1] = mrpt::RAD2DEG(j.q(2)) / o.shoulder_deg_per_count;
+	c[2] = mrpt::RAD2DEG(j.q(3)) / o.elbow_deg_per_count;
+	c[3] = mrpt::RAD2DEG(j.q(4)) / o.yaw_deg_per_count;
+	c[4] = (-pitch + roll) / o.wrist_deg_per_count;
+	c[5] = (-pitch - roll) / o.wrist_deg_per_count;
+	return c;
+}
+
+RtxJoints countsToJoints(const MotorCounts& c, const RtxOptions& o)
+{
+	RtxJoints j;
+	j.d1_mm = o.d1_top_mm + c[0] * o.column_mm_per_count;
+	j.q_rad[0] = mrpt::DEG2RAD(o.q1_fixed_deg);
+	j.q_rad[1] = mrpt::DEG2RAD(c[1] * o.shoulder_deg_per_count);
+	j.q_rad[2] = mrpt::DEG2RAD(c[2] * o.elbow_deg_per_count);
+	j.q_rad[3] = mrpt::DEG2RAD(c[3] * o.yaw_deg_per_count);
+	const double minus_pitch = 0.5 * (c[4] + c[5]) * o.wrist_deg_per_count;
+	const double roll = 0.5 * (c[4] - c[5]) * o.wrist_deg_per_count;
+	j.q_rad[4] = mrpt::DEG2RAD(90.0 + minus_pitch);
+	j.q_rad[5] = mrpt::DEG2RAD(roll);
+	return j;
+}
+
+std::array<long, kMotorCount> roundCounts(const MotorCounts& c)
+{
+	std::array<long, kMotorCount> r{};
+	for (size_t i = 0; i < c.size(); ++i) r[i] = std::lround(c[i]);
+	return r;
+}
+
+std::string limitViolation(const MotorCounts& c, const RtxOptions& o)
+{
+	constexpr double tol = 1e-9;
+	for (int i = 0; i < kMotorCount; ++i)
+	{
+		const auto& r = o.limits[i];
+		if (c[static_cast<size_t>(i)] >= r.min - tol && c[static_cast<size_t>(i)] <= r.max + tol)
+			continue;
+		std::ostringstream s;
+		s << motorName(static_cast<Motor>(i)) << " count " << c[static_cast<size_t>(i)]
+		  << " outside limit [" << r.min << ", " << r.max << "]";
+		return s.str();
+	}
+	return {};
+}
+
+void requireWithinLimits(const RtxJoints& j, const RtxOptions& o)
+{
+	const std::string v = limitViolation(jointsToCounts(j, o), o);
+	if (!v.empty()) throw UnreachableError(v);
+}
+
+}  // namespace mrolr::arm
