@@ -1,4 +1,4 @@
-#include "SyntheticScenes.h"
+#include "SyntheticTurntable.h"
 
 #include <mrolr/apps/ModelApp.h>
 #include <mrolr/model/WireFrameIO.h>
@@ -93,4 +93,17 @@ TEST(ModelApp, BadArgumentsAreUsageErrors)
 	missing.initialize({"mrolr-model", "stats", "/nonexistent.wf"});
 	std::ostringstream out;
 	EXPECT_THROW(missing.run(out), std::runtime_error);
+}
+
+TEST(ModelApp, BuildFromTurntableWithCliquesAndStats)
+{
+	const std::string dir = tmp("turntable");
+	model::test::writeTurntableDir(dir);
+	const auto j = runApp({"mrolr-model", "build", "--turntable", dir, "--out", tmp("box.wf"), "--json"});
+	EXPECT_EQ(j["views"].get<int>(), 8);
+	EXPECT_GE(j["quality"]["recovered_fraction"].get<double>(), 0.8);
+	EXPECT_LT(j["quality"]["median_endpoint_error_mm"].get<double>(), 3.0);
+	const auto wf = model::loadWireFrame(tmp("box.wf"));
+	EXPECT_EQ(wf.frame, model::WireFrameFrame::Object);
+	EXPECT_GT(wf.cliques.size(), 0u);
 }

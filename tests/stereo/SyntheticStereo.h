@@ -58,15 +58,17 @@ inline StereoCalibration testRig(double verge_rad = 0.02)
 	return c;
 }
 
-/** Renders the faces (far ones first) into one camera given p_cam = R·p_Lcv + t. */
+/** Renders the faces into one camera given p_cam = R·p_Lcv + t: far ones first (by their first
+ * vertex) or, with @p depth_sort false, in the given order. */
 inline cv::Mat renderView(
 	const std::vector<Face>& faces, const cv::Matx33d& K, const cv::Matx33d& R, const cv::Vec3d& t,
-	cv::Size size, int background = 40)
+	cv::Size size, bool depth_sort = true, int background = 40)
 {
 	const int ss = 4;
 	cv::Mat big(size.height * ss, size.width * ss, CV_8U, cv::Scalar(background));
 	std::vector<std::pair<double, size_t>> order;
-	for (size_t i = 0; i < faces.size(); ++i) order.push_back({-faces[i].outline[0].z(), i});
+	for (size_t i = 0; i < faces.size(); ++i)
+		order.push_back({depth_sort ? -faces[i].outline[0].z() : static_cast<double>(i), i});
 	std::sort(order.begin(), order.end());
 	cv::Vec3d rvec;
 	cv::Rodrigues(R, rvec);
@@ -88,10 +90,11 @@ inline cv::Mat renderView(
 
 /** Left and right images of the faces seen by @p rig. */
 inline void renderPair(
-	const std::vector<Face>& faces, const StereoCalibration& rig, cv::Mat& left, cv::Mat& right)
+	const std::vector<Face>& faces, const StereoCalibration& rig, cv::Mat& left, cv::Mat& right,
+	bool depth_sort = true)
 {
-	left = renderView(faces, rig.K_left, cv::Matx33d::eye(), cv::Vec3d(0, 0, 0), rig.image_size);
-	right = renderView(faces, rig.K_right, rig.R_RfromL, rig.t_LinR_mm, rig.image_size);
+	left = renderView(faces, rig.K_left, cv::Matx33d::eye(), cv::Vec3d(0, 0, 0), rig.image_size, depth_sort);
+	right = renderView(faces, rig.K_right, rig.R_RfromL, rig.t_LinR_mm, rig.image_size, depth_sort);
 }
 
 }  // namespace mrolr::stereo::test

@@ -101,6 +101,9 @@ bool mergeOnce(std::vector<T>& v, Same same, Join join)
 }
 }  // namespace
 
+bool isDuplicate(const Line3& a, const Line3& b, const MergeOptions& o) { return sameLine(a, b, o); }
+bool isDuplicate(const Conic3& a, const Conic3& b, const MergeOptions& o) { return sameConic(a, b, o); }
+
 size_t mergeDuplicates(WireFrame& wf, const MergeOptions& o)
 {
 	const size_t before = featureCount(wf);

@@ -73,6 +73,7 @@ void TurntableOptions::loadFromConfigFile(
 	keep_radius_mm = util::readDouble(cfg, section, "keep_radius_mm", keep_radius_mm);
 	min_height_mm = util::readDouble(cfg, section, "min_height_mm", min_height_mm);
 	max_height_mm = util::readDouble(cfg, section, "max_height_mm", max_height_mm);
+	min_views = static_cast<int>(util::readInt(cfg, section, "min_views", min_views));
 	merge.max_distance_mm = util::readDouble(cfg, section, "merge_max_distance_mm", merge.max_distance_mm);
 	merge.max_angle_deg = util::readDouble(cfg, section, "merge_max_angle_deg", merge.max_angle_deg);
 	merge.max_gap_mm = util::readDouble(cfg, section, "merge_max_gap_mm", merge.max_gap_mm);
@@ -105,6 +106,37 @@ WireFrame viewInObjectFrame(
 	return wf;
 }
 
+namespace
+{
+template <typename T>
+int viewsSupporting(const T& f, const std::vector<WireFrame>& views, const MergeOptions& o,
+	const std::vector<T>& (*features)(const WireFrame&))
+{
+	int n = 0;
+	for (const auto& v : views)
+	{
+		const auto& list = features(v);
+		n += std::any_of(list.begin(), list.end(), [&](const T& g) { return isDuplicate(f, g, o); });
+	}
+	return n;
+}
+
+const std::vector<Line3>& linesOf(const WireFrame& w) { return w.lines; }
+const std::vector<Conic3>& conicsOf(const WireFrame& w) { return w.conics; }
+}  // namespace
+
+size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views, const MergeOptions& o)
+{
+	const size_t before = featureCount(merged);
+	merged.lines.erase(std::remove_if(merged.lines.begin(), merged.lines.end(),
+						   [&](const Line3& l) { return viewsSupporting(l, views, o, linesOf) < min_views; }),
+		merged.lines.end());
+	merged.conics.erase(std::remove_if(merged.conics.begin(), merged.conics.end(),
+							[&](const Conic3& c) { return viewsSupporting(c, views, o, conicsOf) < min_views; }),
+		merged.conics.end());
+	return before - featureCount(merged);
+}
+
 void renumber(WireFrame& wf)
 {
 	int id = 1;
@@ -120,14 +152,16 @@ WireFrame buildFromTurntable(
 	WireFrame all;
 	all.name = set.object;
 	all.frame = WireFrameFrame::Object;
+	std::vector<WireFrame> views;
 	for (const auto& v : set.views)
 	{
 		const auto scene = stereo::reconstructScene(readImage(v.left_png), readImage(v.right_png), calib, so);
-		const WireFrame w = viewInObjectFrame(scene, set.T_LinT_mm, v.angle_deg, o);
-		all.lines.insert(all.lines.end(), w.lines.begin(), w.lines.end());
-		all.conics.insert(all.conics.end(), w.conics.begin(), w.conics.end());
+		views.push_back(viewInObjectFrame(scene, set.T_LinT_mm, v.angle_deg, o));
+		all.lines.insert(all.lines.end(), views.back().lines.begin(), views.back().lines.end());
+		all.conics.insert(all.conics.end(), views.back().conics.begin(), views.back().conics.end());
 	}
 	mergeDuplicates(all, o.merge);
+	dropUnsupported(all, views, o.min_views, o.merge);
 	renumber(all);
 	return all;
 }

@@ -47,6 +47,10 @@ void setGrasp(WireFrame& wf, const Eigen::Vector3d& p_mm, double yaw_deg, double
  * Repeats until nothing merges. Returns the number of features removed. */
 size_t mergeDuplicates(WireFrame& wf, const MergeOptions& options = {});
 
+/** Are @p a and @p b the same edge by the tolerances of @p options (see mergeDuplicates)? */
+bool isDuplicate(const Line3& a, const Line3& b, const MergeOptions& options);
+bool isDuplicate(const Conic3& a, const Conic3& b, const MergeOptions& options);
+
 /** Drops cliques that name an id no longer present. */
 void pruneCliques(WireFrame& wf);
 
