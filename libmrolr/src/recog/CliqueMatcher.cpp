@@ -7,6 +7,8 @@ namespace mrolr::recog
 {
 namespace
 {
+constexpr size_t kAlternatives = 3;  // equally large consistent sets kept per focus match
+
 Tolerance toleranceOf(const LevelParams& p)
 {
 	return {p.position_error_mm, p.rotation_deg * M_PI / 180.0};
@@ -23,7 +25,7 @@ class ConsistentSetSearch
 	{
 	}
 
-	std::vector<FeatureMatch> run(
+	std::vector<std::vector<FeatureMatch>> run(
 		const FeatureMatch& focus, const std::vector<std::vector<FeatureMatch>>& candidates)
 	{
 		cands_ = candidates;
@@ -31,7 +33,7 @@ class ConsistentSetSearch
 			return a.size() < b.size();
 		});
 		chosen_ = {focus};
-		best_ = chosen_;
+		best_ = {chosen_};
 		dfs(0);
 		return best_;
 	}
@@ -52,11 +54,21 @@ class ConsistentSetSearch
 		return true;
 	}
 
+	/** Keeps the largest sets found (up to kAlternatives of equal size): a nearly symmetric object
+	 * can give the true and a mirrored assignment of the same size. */
+	void record()
+	{
+		if (chosen_.size() > best_.front().size()) best_ = {chosen_};
+		else if (chosen_.size() == best_.front().size() && chosen_.size() > 1 &&
+				 best_.size() < kAlternatives && chosen_ != best_.back())
+			best_.push_back(chosen_);
+	}
+
 	void dfs(size_t k)
 	{
-		if (chosen_.size() > best_.size()) best_ = chosen_;
+		record();
 		if (k == cands_.size() || --budget_ <= 0) return;
-		if (chosen_.size() + (cands_.size() - k) <= best_.size()) return;
+		if (chosen_.size() + (cands_.size() - k) < best_.front().size()) return;
 		for (const auto& c : cands_[k])
 		{
 			if (!fits(c)) continue;
@@ -73,7 +85,8 @@ class ConsistentSetSearch
 	Tolerance tol_;
 	int budget_;
 	std::vector<std::vector<FeatureMatch>> cands_;
-	std::vector<FeatureMatch> chosen_, best_;
+	std::vector<FeatureMatch> chosen_;
+	std::vector<std::vector<FeatureMatch>> best_;
 };
 
 /** Scene matches of member j consistent with the focus match. */
@@ -143,9 +156,9 @@ std::vector<CliqueMatch> matchClique(
 		for (size_t j : clique.members)
 			cands.push_back(memberCandidates(model, j, focus, scene, p, tol));
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
-		auto ms = search.run(focus, cands);
-		if (static_cast<int>(ms.size()) < p.clique_size) continue;
-		out.push_back({clique_index, ms, strengthOf(model, ms)});
+		for (auto& ms : search.run(focus, cands))
+			if (static_cast<int>(ms.size()) >= p.clique_size)
+				out.push_back({clique_index, ms, strengthOf(model, ms)});
 	}
 	std::sort(out.begin(), out.end(), [](const CliqueMatch& a, const CliqueMatch& b) {
 		if (a.matches.size() != b.matches.size()) return a.matches.size() > b.matches.size();

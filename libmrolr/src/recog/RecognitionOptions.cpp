@@ -74,12 +74,12 @@ RecognitionOptions RecognitionOptions::defaults()
 {
 	// clique, beta mm, theta deg, min len mm, max rot deg, max trans mm, len ratio, verify score
 	static const double table[12][8] = {
-		{5, 2, 1.5, 15, 3, 6, 0.7, 0.30},  {5, 3, 2, 15, 3, 6, 0.6, 0.30},
-		{4, 3, 2, 12, 4, 8, 0.6, 0.32},	   {4, 4, 3, 12, 4, 8, 0.5, 0.32},
-		{4, 5, 3, 10, 5, 10, 0.5, 0.34},   {4, 6, 4, 10, 5, 10, 0.4, 0.34},
-		{3, 6, 4, 10, 6, 12, 0.4, 0.36},   {3, 8, 5, 8, 6, 12, 0.35, 0.38},
-		{3, 8, 6, 8, 8, 15, 0.3, 0.40},	   {3, 10, 7, 8, 8, 15, 0.3, 0.42},
-		{3, 12, 8, 6, 10, 20, 0.25, 0.44}, {3, 15, 10, 6, 10, 20, 0.2, 0.46}};
+		{5, 2, 1.5, 15, 3, 6, 0.7, 0.33},  {5, 3, 2, 15, 3, 6, 0.6, 0.33},
+		{4, 3, 2, 12, 4, 8, 0.6, 0.34},	   {4, 4, 3, 12, 4, 8, 0.5, 0.35},
+		{4, 5, 3, 10, 5, 10, 0.5, 0.35},   {4, 6, 4, 10, 5, 10, 0.4, 0.36},
+		{3, 6, 4, 10, 6, 12, 0.4, 0.36},   {3, 8, 5, 8, 6, 12, 0.35, 0.37},
+		{3, 8, 6, 8, 8, 15, 0.3, 0.38},	   {3, 10, 7, 8, 8, 15, 0.3, 0.39},
+		{3, 12, 8, 6, 10, 20, 0.25, 0.40}, {3, 15, 10, 6, 10, 20, 0.2, 0.42}};
 	RecognitionOptions o;
 	for (const auto& r : table)
 		o.levels.push_back({static_cast<int>(r[0]), r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
@@ -109,6 +109,13 @@ void RecognitionOptions::loadFromConfigFile(
 	auto_clique_size = readCount("auto_clique_size", 2, 50);
 	max_search_nodes = readCount("max_search_nodes", 10, 10000000);
 	refine_iterations = readCount("refine_iterations", 0, 20);
+	verify_clusters = readCount("verify_clusters", 1, 10000);
+	confirm_levels = readCount("confirm_levels", 0, 100);
+	verify_position_error_mm = util::readDouble(cfg, section, "verify_position_error_mm");
+	util::requireInRange(
+		cfg, section, "verify_position_error_mm", verify_position_error_mm, 0.01, 1000);
+	verify_rotation_deg = util::readDouble(cfg, section, "verify_rotation_deg");
+	util::requireInRange(cfg, section, "verify_rotation_deg", verify_rotation_deg, 0.01, 90);
 }
 
 void RecognitionOptions::dump(std::ostream& out) const
@@ -120,7 +127,10 @@ void RecognitionOptions::dump(std::ostream& out) const
 	out << "pose_method = " << pose_method << "\nauto_clique_count = " << auto_clique_count
 		<< "\nauto_clique_size = " << auto_clique_size
 		<< "\nmax_search_nodes = " << max_search_nodes
-		<< "\nrefine_iterations = " << refine_iterations << "\n";
+		<< "\nrefine_iterations = " << refine_iterations
+		<< "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
+		<< "\nverify_position_error_mm = " << verify_position_error_mm
+		<< "\nverify_rotation_deg = " << verify_rotation_deg << "\n";
 }
 
 }  // namespace mrolr::recog

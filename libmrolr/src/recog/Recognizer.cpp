@@ -4,6 +4,7 @@
 #include <mrolr/recog/TransformCluster.h>
 #include <mrolr/recog/Verification.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -12,7 +13,6 @@ namespace mrolr::recog
 namespace
 {
 constexpr size_t kMatchesPerClique = 20;  // strongest clique matches kept as hypotheses
-constexpr size_t kClustersVerified = 6;  // heaviest clusters checked against the whole scene
 
 std::vector<Correspondence> correspondencesOf(
 	const ModelTable& model, const OrientedScene& scene, const CliqueMatch& cm)
@@ -52,21 +52,25 @@ std::vector<PoseHypothesis> hypothesesAt(
 /** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
 std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
 	const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
-	const LevelParams& p, int iterations)
+	const LevelParams& p, const RecognitionOptions& o)
 {
-	const double beta = 2 * p.position_error_mm, theta = 2 * p.rotation_deg * M_PI / 180.0;
+	const double beta = std::min(2 * p.position_error_mm, o.verify_position_error_mm);
+	const double theta = std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
+	const int iterations = o.refine_iterations;
 	VerificationResult v = verifyPose(model, scene, T, beta, theta, p.length_threshold_mm);
 	for (int i = 0; i < iterations; ++i)
 	{
 		const auto T2 = faugerasHebertPose(v.correspondences);
 		if (!T2) break;
 		VerificationResult v2 = verifyPose(model, scene, *T2, beta, theta, p.length_threshold_mm);
-		if (v2.score < v.score) break;
+		if (rankOf(v2) < rankOf(v)) break;
 		T = *T2;
 		v = std::move(v2);
 	}
 	return {T, std::move(v)};
 }
+
+double rankOf(const RecognitionResult& r) { return r.score + 0.05 * r.coverage; }
 
 double confidenceOf(double score, size_t level, size_t levels)
 {
@@ -94,13 +98,16 @@ RecognitionResult Recognizer::recognizeAtLevel(
 	const auto hyps = hypothesesAt(table_, os, opts_, p);
 	const auto clusters =
 		clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
-	for (size_t k = 0; k < clusters.size() && k < kClustersVerified; ++k)
+	VerificationResult bestV;
+	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
 	{
 		const auto [T, v] =
-			verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_.refine_iterations);
-		if (v.score <= best.score) continue;
+			verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_);
+		if (rankOf(v) <= rankOf(bestV)) continue;
+		bestV = v;
 		best.T_OinS = T;
 		best.score = v.score;
+		best.coverage = v.coverage;
 		best.matched = v.matched;
 		best.agreeing_cliques = static_cast<int>(clusters[k].members.size());
 		best.spread_rot_deg = clusters[k].spread_rot_deg;
@@ -117,11 +124,13 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 	const auto t0 = std::chrono::steady_clock::now();
 	RecognitionResult best;
 	best.model = table_.name();
-	for (size_t l = 0; l < opts_.levels.size(); ++l)
+	size_t last = opts_.levels.size();
+	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
 		RecognitionResult r = recognizeAtLevel(scene, l);
-		if (r.found || r.score > best.score) best = r;
-		if (r.found) break;
+		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
+		if (best.found && !r.found) continue;
+		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
 	best.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)

@@ -138,6 +138,7 @@ model::WireFrame makeTapeRoll()
 	b.circle({0, 0, 0}, 55).circle({0, 0, 50}, 55).circle({0, 0, 0}, 38).circle({0, 0, 50}, 38);
 	b.line({55, 0, 0}, {55, 0, 50});
 	b.line({0, -55, 10}, {0, -55, 40});
+	b.arc({0, 0, 50}, V::UnitZ(), V::UnitX(), 46, 0.3, 1.8);  // printed label on the top face
 	return b.build();
 }
 

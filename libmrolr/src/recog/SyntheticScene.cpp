@@ -123,4 +123,35 @@ Eigen::Isometry3d tablePose(double yaw_deg, double tilt_deg, const Eigen::Vector
 	return T;
 }
 
+TableScene makeTableScene(
+	const std::vector<model::WireFrame>& objects, int target, int clutter, const SceneNoise& noise,
+	unsigned seed)
+{
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<> yaw(0, 360), tilt(20, 40), depth(700, 1000);
+	std::vector<int> chosen;
+	if (target >= 0) chosen.push_back(target);
+	std::vector<int> others;
+	for (int k = 0; k < static_cast<int>(objects.size()); ++k)
+		if (k != target) others.push_back(k);
+	std::shuffle(others.begin(), others.end(), rng);
+	for (int k = 0; k < clutter && k < static_cast<int>(others.size()); ++k) chosen.push_back(others[k]);
+	std::vector<int> slots(chosen.size());
+	for (size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
+	std::shuffle(slots.begin(), slots.end(), rng);
+	TableScene ts;
+	ts.target = target;
+	ts.scene.frame = model::WireFrameFrame::LeftCamera;
+	for (size_t i = 0; i < chosen.size(); ++i)
+	{
+		const double x = 260.0 * (slots[i] - 0.5 * (static_cast<double>(slots.size()) - 1));
+		const auto T = tablePose(yaw(rng), tilt(rng), Eigen::Vector3d(x, -150, depth(rng)));
+		double visible = 0;
+		const auto seen = corruptScene(transformWireFrame(objects[chosen[i]], T), noise, rng, &visible);
+		appendWireFrame(ts.scene, seen);
+		if (i == 0 && target >= 0) ts.T_OinS = T, ts.visible_fraction = visible;
+	}
+	return ts;
+}
+
 }  // namespace mrolr::recog

@@ -31,7 +31,7 @@ double lineOverlap(const Feature& l, const Feature& s, double beta, double cosT)
 double conicOverlap(const Feature& c, const Feature& s, double beta, double cosT)
 {
 	if ((c.m - s.m).norm() > beta || std::abs(c.u.dot(s.u)) < cosT) return 0;
-	const double rtol = beta + 0.05 * c.a_mm;
+	const double rtol = beta;
 	if (std::abs(c.a_mm - s.a_mm) > rtol || std::abs(c.b_mm - s.b_mm) > rtol) return 0;
 	return std::min(c.len_mm, s.len_mm);
 }
@@ -59,7 +59,7 @@ VerificationResult verifyPose(
 {
 	VerificationResult r;
 	const double cosT = std::cos(theta_rad);
-	double total_mm = 0;
+	double total_mm = 0, touched_mm = 0;
 	for (const auto& f : model.features())
 	{
 		if (f.len_mm < min_len_mm) continue;
@@ -67,11 +67,13 @@ VerificationResult verifyPose(
 		const Support sup = supportOf(f.transformed(T_OinS), scene, beta_mm, cosT);
 		if (!sup.best) continue;
 		r.supported_mm += sup.overlap_mm;
+		touched_mm += f.len_mm;
 		if (sup.overlap_mm >= 0.25 * f.len_mm) ++r.matched;
 		const bool agree = (T_OinS.linear() * f.u).dot(sup.best->u) >= 0;
 		r.correspondences.push_back({f, agree ? *sup.best : sup.best->flipped()});
 	}
 	r.score = total_mm > 0 ? r.supported_mm / total_mm : 0;
+	r.coverage = touched_mm > 0 ? r.supported_mm / touched_mm : 0;
 	return r;
 }
 

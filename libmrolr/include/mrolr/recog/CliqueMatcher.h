@@ -28,6 +28,11 @@ struct FeatureMatch
 	size_t model = 0;  ///< index into ModelTable::features()
 	size_t oriented = 0;  ///< index into OrientedScene::oriented
 	size_t scene() const { return oriented / 2; }
+	bool operator==(const FeatureMatch& o) const
+	{
+		return model == o.model && oriented == o.oriented;
+	}
+	bool operator!=(const FeatureMatch& o) const { return !(*this == o); }
 };
 
 /** A matched clique: the focus match first, then the members found. */

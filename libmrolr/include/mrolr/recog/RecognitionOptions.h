@@ -35,6 +35,13 @@ struct RecognitionOptions
 	int auto_clique_size = 7;  ///< features per automatic clique, focus included
 	int max_search_nodes = 4000;  ///< budget of the maximal-consistent-set search per focus match
 	int refine_iterations = 2;  ///< least-squares refinements on the verified correspondences
+	/** Verification tolerances (the whole model carried into the scene): a scene feature supports
+	 * a model feature within min(2 beta, verify_position_error_mm) and min(2 theta,
+	 * verify_rotation_deg). Capped so that coarse matching levels do not loosen verification. */
+	double verify_position_error_mm = 3;
+	double verify_rotation_deg = 3;
+	int verify_clusters = 20;
+	int confirm_levels = 1;  ///< levels run after the first recognition; the best answer is kept  ///< heaviest clusters of clique transforms verified per level
 
 	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
 	static RecognitionOptions defaults();

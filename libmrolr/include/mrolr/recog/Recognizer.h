@@ -21,6 +21,7 @@ struct RecognitionResult
 	bool found = false;
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< model → scene frame (mm)
 	double score = 0;  ///< verified fraction of the model's length supported by the scene
+	double coverage = 0;  ///< supported length / length of the model features with support
 	int matched = 0;  ///< model features supported in the scene
 	int level = 0;  ///< 1-based level that recognised (0 when not found)
 	double confidence = 0;  ///< score × (1 − 0.5 (level − 1)/(levels − 1)); 0 when not found
@@ -38,7 +39,9 @@ class Recognizer
 	 * model that cannot be matched (fewer than two features, degenerate elements, bad cliques). */
 	Recognizer(const model::WireFrame& model, const RecognitionOptions& opts);
 
-	/** Runs the levels fine to coarse on one scene and stops at the first that recognises. */
+	/** Runs the levels fine to coarse on one scene; after the first level that recognises, runs
+	 * options().confirm_levels more and keeps the best-ranked answer (a coarser level can find the
+	 * clique that a nearly symmetric object's true pose needs). */
 	RecognitionResult recognize(const model::WireFrame& scene) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene) const;
 

@@ -26,7 +26,8 @@ model::WireFrame makeBook();
 model::WireFrame makeTeaBox();
 /** Triangular wedge 120 × 60 × 50 mm with a groove on the slope. */
 model::WireFrame makeWedge();
-/** Tape roll: outer and inner circles top and bottom, and a tape-end line. */
+/** Tape roll: outer and inner circles top and bottom, two tape-end lines and a printed arc on
+ * the top face (so that top and bottom differ). */
 model::WireFrame makeTapeRoll();
 /** L-shaped bracket 100 × 80 × 40 mm. */
 model::WireFrame makeBracket();

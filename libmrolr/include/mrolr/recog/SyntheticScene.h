@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <random>
+#include <vector>
 
 namespace mrolr::recog
 {
@@ -35,5 +36,21 @@ void appendWireFrame(model::WireFrame& a, const model::WireFrame& b);
 /** A pose of an object standing on a table seen by a camera looking along +z: rotation @p yaw_deg
  * about the object's vertical, tilt @p tilt_deg, placed at @p p_mm. */
 Eigen::Isometry3d tablePose(double yaw_deg, double tilt_deg, const Eigen::Vector3d& p_mm);
+
+/** A table scene with its ground truth. */
+struct TableScene
+{
+	model::WireFrame scene;  ///< frame LeftCamera, mm
+	int target = -1;  ///< index of the target object, -1 when absent
+	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< true pose of the target
+	double visible_fraction = 0;  ///< fraction of the target's length left in the scene
+};
+
+/** Objects on a table 700–1000 mm in front of the camera, 260 mm apart along x: the target
+ * @p objects[target] (none when target < 0) and @p clutter others chosen at random, each at a random
+ * yaw, a tilt of 20–40° (seen from above) and corrupted by @p noise. Deterministic in @p seed. */
+TableScene makeTableScene(
+	const std::vector<model::WireFrame>& objects, int target, int clutter, const SceneNoise& noise,
+	unsigned seed);
 
 }  // namespace mrolr::recog

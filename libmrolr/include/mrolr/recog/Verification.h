@@ -16,9 +16,15 @@ struct VerificationResult
 {
 	double score = 0;  ///< supported length / length of the model features considered, [0, 1]
 	double supported_mm = 0;  ///< supported model length (mm)
+	double coverage = 0;  ///< supported length / length of the model features that have support
 	int matched = 0;  ///< model features with at least a quarter of their length supported
 	std::vector<Correspondence> correspondences;  ///< model feature (model frame) ↔ best support
 };
+
+/** Ranking of verified poses: the score, ties broken towards the pose whose supported features
+ * are covered more completely (a fragment explained as a whole feature rather than as part of a
+ * longer one). */
+inline double rankOf(const VerificationResult& v) { return v.score + 0.05 * v.coverage; }
 
 /** A scene line supports a transformed model line when it is within @p theta_rad of its direction
  * and both its endpoints are within @p beta_mm of the model line; the support is the overlap of
