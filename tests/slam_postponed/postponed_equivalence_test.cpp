@@ -58,6 +58,35 @@ INSTANTIATE_TEST_SUITE_P(RandomRuns, PostponedEquivalence,
                          ::testing::Combine(::testing::Values(1, 5, 12, 30),
                                             ::testing::Values(7u, 2024u), ::testing::Bool()));
 
+// Above 42 features the catch-up works on several 128-wide blocks of P.
+TEST(PostponedTracker, MatchesFullEkfWithManyFeatures)
+{
+	for (bool scalar : {false, true})
+	{
+		Lockstep run({60, 99}, scalar);
+		run.run(150);
+		EXPECT_LT(run.errors().state, kTolerance);
+		EXPECT_LT(run.errors().covariance, kTolerance);
+		EXPECT_EQ(run.errors().asymmetry, 0.0);
+	}
+}
+
+TEST(PostponedTracker, BlockedSymmetricUpdateEqualsPlainProduct)
+{
+	for (int n : {5, 128, 301})
+	{
+		const Eigen::MatrixXd B = Eigen::MatrixXd::Random(n, n);
+		Eigen::MatrixXd P = B + B.transpose();
+		const Eigen::MatrixXd W = Eigen::MatrixXd::Random(n, 6);
+		Eigen::MatrixXd Psi = Eigen::MatrixXd::Random(6, 6);
+		Psi = (Psi + Psi.transpose()).eval();
+		const Eigen::MatrixXd expected = P - W * Psi * W.transpose();
+		mrolr::slam::detail::subtractSymmetricProduct(P, (W * Psi).eval(), W);
+		EXPECT_LT(relativeError(P, expected), 1e-14) << "n = " << n;
+		EXPECT_EQ(P, P.transpose()) << "n = " << n;
+	}
+}
+
 // The comparison has teeth: before catch-up the stored blocks are stale, far beyond the tolerance.
 TEST(PostponedTracker, StaleBlocksDifferBeforeCatchUp)
 {

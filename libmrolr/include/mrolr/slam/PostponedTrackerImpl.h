@@ -3,11 +3,43 @@
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace mrolr::slam
 {
+namespace detail
+{
+/** P ← P − L Wᵀ for symmetric P and a symmetric L Wᵀ, in one pass over blocks of the lower
+ * triangle, each written to both halves so that P stays exactly symmetric. */
+template <class DP, class DL, class DW>
+void subtractSymmetricProduct(Eigen::MatrixBase<DP>& P, const Eigen::MatrixBase<DL>& L,
+                              const Eigen::MatrixBase<DW>& W)
+{
+	constexpr Eigen::Index b = 128;  // block edge: a block of each operand stays in cache
+	const Eigen::Index n = P.rows();
+	Eigen::MatrixXd B(b, b);
+	for (Eigen::Index j = 0; j < n; j += b)
+	{
+		const Eigen::Index bj = std::min(b, n - j);
+		for (Eigen::Index i = j; i < n; i += b)
+		{
+			const Eigen::Index bi = std::min(b, n - i);
+			B.resize(bi, bj);
+			B.noalias() =
+			    P.block(i, j, bi, bj) - L.middleRows(i, bi) * W.middleRows(j, bj).transpose();
+			if (i == j)
+				for (Eigen::Index c = 0; c < bj; ++c)
+					for (Eigen::Index r = c + 1; r < bi; ++r) B(c, r) = B(r, c);
+			P.block(i, j, bi, bj) = B;
+			if (i != j) P.block(j, i, bj, bi) = B.transpose();
+		}
+	}
+}
+
+}  // namespace detail
+
 template <int V, int F>
 template <class DX, class DP>
 void PostponedTracker<V, F>::start(const Eigen::MatrixBase<DX>& x, const Eigen::MatrixBase<DP>& P,
@@ -104,11 +136,8 @@ void PostponedTracker<V, F>::catchUp(Eigen::MatrixBase<DX>& x, Eigen::MatrixBase
 	// W = P(:, a) at time 0; its rows u are P_ua(0).
 	const Eigen::Matrix<double, Eigen::Dynamic, A> W = P(Eigen::all, idx);
 	x += W * mu_;  // eqs 5.109, 5.143
-	// P_uu ← P_uu(0) − P_ua(0) Ψ_T P_au(0) (eqs 5.102, 5.144), lower half, then mirrored.
-	const Eigen::Matrix<double, Eigen::Dynamic, A> WPsi = W * Psi_;
-	P.template triangularView<Eigen::Lower>() -= WPsi * W.transpose();
-	for (Eigen::Index j = 0; j + 1 < n_; ++j)
-		P.row(j).tail(n_ - j - 1) = P.col(j).tail(n_ - j - 1).transpose();
+	// P_uu ← P_uu(0) − P_ua(0) Ψ_T P_au(0) (eqs 5.102, 5.144); the active rows are rewritten below.
+	detail::subtractSymmetricProduct(P, (W * Psi_).eval(), W);
 	// P_au ← Φ_T P_au(0) (eqs 5.86, 5.145–5.146); the active rows themselves come from P_aa.
 	const Eigen::Matrix<double, A, Eigen::Dynamic> rowsA = Phi_ * W.transpose();
 	P(idx, Eigen::all) = rowsA;
