@@ -58,20 +58,32 @@ double parameterOn(const Conic3& c, const Eigen::Vector3d& p)
 	return std::atan2(q.dot(c.normal.cross(c.major)) / c.b, q.dot(c.major) / c.a);
 }
 
+/** 2πk shift of @p x that is nearest to the interval [lo, hi]. */
+double nearestTurn(double x, double lo, double hi)
+{
+	double best = x, best_d = 1e300;
+	for (int k = -2; k <= 2; ++k)
+	{
+		const double y = x + 2 * M_PI * k, d = y < lo ? lo - y : (y > hi ? y - hi : 0);
+		if (d < best_d) best_d = d, best = y;
+	}
+	return best;
+}
+
 /** Smallest arc of @p a's parametrisation covering a's arc and the points of b's arc. */
 void unionArc(Conic3& a, const Conic3& b)
 {
-	std::vector<double> t{a.t1, a.t2};
-	double prev = a.t2;
+	double lo = a.t1, hi = a.t2, prev = 0;
+	bool first = true;
 	for (const auto& s : sampleConic(b, 2.0, 0))
 	{
 		double x = parameterOn(a, s.p);
+		if (first) prev = x = nearestTurn(x, a.t1, a.t2), first = false;
 		while (x - prev > M_PI) x -= 2 * M_PI;
 		while (x - prev < -M_PI) x += 2 * M_PI;
-		t.push_back(prev = x);
+		prev = x;
+		lo = std::min(lo, x), hi = std::max(hi, x);
 	}
-	const double lo = std::min(a.t1, *std::min_element(t.begin(), t.end()));
-	const double hi = std::max(a.t2, *std::max_element(t.begin(), t.end()));
 	a.t1 = lo;
 	a.t2 = std::min(hi, lo + 2 * M_PI);
 }

@@ -21,13 +21,6 @@ bool covered(
 	return false;
 }
 
-double nearestDistance(const Eigen::Vector3d& p, const std::vector<FeatureSample>& samples)
-{
-	double best = std::numeric_limits<double>::infinity();
-	for (const auto& s : samples) best = std::min(best, (s.p - p).squaredNorm());
-	return std::sqrt(best);
-}
-
 /** Per model feature: the fraction of its length near the truth. */
 std::vector<double> supportedFraction(
 	const std::vector<FeatureSample>& model, size_t n_features, const std::vector<FeatureSample>& truth,
@@ -58,13 +51,13 @@ double conicRadiusError(const Conic3& c, const WireFrame& truth)
 /** Endpoint and radius errors of the model features that are not false. */
 void featureErrors(
 	const WireFrame& model, const WireFrame& truth, const std::vector<double>& support,
-	const std::vector<FeatureSample>& truth_samples, ModelQuality& q)
+	ModelQuality& q)
 {
 	for (size_t i = 0; i < model.lines.size(); ++i)
 	{
 		if (support[i] < 0.5) continue;
-		q.endpoint_errors_mm.push_back(nearestDistance(model.lines[i].p1, truth_samples));
-		q.endpoint_errors_mm.push_back(nearestDistance(model.lines[i].p2, truth_samples));
+		q.endpoint_errors_mm.push_back(distanceToWireFrame(model.lines[i].p1, truth));
+		q.endpoint_errors_mm.push_back(distanceToWireFrame(model.lines[i].p2, truth));
 	}
 	for (size_t j = 0; j < model.conics.size(); ++j)
 	{
@@ -110,7 +103,7 @@ ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth, cons
 	const auto support = supportedFraction(ms, n, ts, o.tol_mm, min_cos);
 	q.model_features = static_cast<int>(n);
 	q.false_features = static_cast<int>(std::count_if(support.begin(), support.end(), [](double f) { return f < 0.5; }));
-	featureErrors(model, truth, support, ts, q);
+	featureErrors(model, truth, support, q);
 	q.median_endpoint_error_mm = median(q.endpoint_errors_mm);
 	for (double e : q.endpoint_errors_mm) q.max_endpoint_error_mm = std::max(q.max_endpoint_error_mm, e);
 	q.conics_compared = static_cast<int>(q.conic_radius_errors_mm.size());

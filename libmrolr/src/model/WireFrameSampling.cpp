@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mrolr::model
 {
@@ -69,6 +70,20 @@ double totalLength(const WireFrame& wf)
 	for (const auto& l : wf.lines) len += l.length();
 	for (const auto& c : wf.conics) len += arcLength(c);
 	return len;
+}
+
+double distanceToWireFrame(const Eigen::Vector3d& p, const WireFrame& wf)
+{
+	double best = std::numeric_limits<double>::infinity();
+	for (const auto& l : wf.lines)
+	{
+		const Eigen::Vector3d ab = l.p2 - l.p1;
+		const double t = std::clamp((p - l.p1).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+		best = std::min(best, (l.p1 + t * ab - p).norm());
+	}
+	for (const auto& c : wf.conics)
+		for (const auto& s : sampleConic(c, 0.25, 0)) best = std::min(best, (s.p - p).norm());
+	return best;
 }
 
 int featureId(const WireFrame& wf, size_t i)

@@ -167,7 +167,9 @@ std::optional<LineFit3> fitLine3(
 	if (static_cast<int>(e.size()) < o.min_line_edgels) return std::nullopt;
 	cv::Vec4f l;
 	cv::fitLine(imagePoints(e), l, cv::DIST_L2, 0, 0.01, 0.01);
-	const cv::Point2d v(l[0], l[1]), p0(l[2], l[3]);
+	cv::Point2d v(l[0], l[1]);
+	const cv::Point2d p0(l[2], l[3]);
+	if ((e.back().xy_px - e.front().xy_px).dot(v) < 0) v = -v;  // p1 first along the string
 	Eigen::MatrixXd A(e.size(), 2);
 	Eigen::VectorXd d(e.size());
 	double smin = 1e300, smax = -1e300;

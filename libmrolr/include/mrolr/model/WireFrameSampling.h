@@ -26,6 +26,10 @@ std::vector<FeatureSample> sampleConic(const Conic3& c, double step_mm, int feat
 /** Samples of every feature; feature index = line index or lines.size() + conic index. */
 std::vector<FeatureSample> sampleWireFrame(const WireFrame& wf, double step_mm);
 
+/** Distance (mm) from p to the nearest feature of @p wf (exact for lines, conics sampled every
+ * 0.25 mm); infinity for an empty model. */
+double distanceToWireFrame(const Eigen::Vector3d& p, const WireFrame& wf);
+
 /** Arc length of a conic arc (mm), numerically. */
 double arcLength(const Conic3& c);
 

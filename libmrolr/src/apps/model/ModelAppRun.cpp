@@ -20,14 +20,18 @@ namespace mrolr::apps
 {
 namespace
 {
-/** config/model.ini, found relative to the working directory or the source tree. */
+/** A shipped file (config/...) found relative to the working directory or else the source tree. */
+std::string projectFile(const std::string& path)
+{
+	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
+	if (!std::filesystem::exists(path) && std::filesystem::exists(in_source)) return in_source;
+	if (!std::filesystem::exists(path)) throw std::runtime_error("configuration file '" + path + "' does not exist");
+	return path;
+}
+
 mrpt::config::CConfigFile openConfig(const std::string& path)
 {
-	std::string p = path;
-	if (!std::filesystem::exists(p) && std::filesystem::exists(std::string(MROLR_SOURCE_DIR) + "/" + path))
-		p = std::string(MROLR_SOURCE_DIR) + "/" + path;
-	if (!std::filesystem::exists(p)) throw std::runtime_error("configuration file '" + path + "' does not exist");
-	return mrpt::config::CConfigFile(p);
+	return mrpt::config::CConfigFile(projectFile(path));
 }
 
 template <typename Opt>
@@ -113,7 +117,7 @@ int ModelApp::runScene()
 	result = model::sceneToWireFrame(scene);
 	if (head_deg)
 	{
-		const geometry::BiSightHead head(geometry::BiSightOptions::fromFile(bisight_path));
+		const geometry::BiSightHead head(geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
 		result = model::leftCameraToC0(result, head, anglesFromDeg(*head_deg));
 	}
 	model::saveWireFrame(result, out_path);
