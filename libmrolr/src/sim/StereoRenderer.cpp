@@ -47,32 +47,59 @@ StereoRenderer::StereoRenderer(const geometry::BiSightHead& head, const RenderOp
 
 StereoRenderer::~StereoRenderer() = default;
 
+void StereoRenderer::wrap(const mrpt::opengl::COpenGLScene& scene)
+{
+	// MRPT 2.5.8 loses up to ~0.25 px when it builds the view from a rotated 6-DOF camera pose
+	// (measured against the head model), but projects exactly from the identity pose; so the camera
+	// stays at the origin and the whole scene is moved by the inverse camera pose instead.
+	// holding the source viewport keeps its address from being reused by a later scene
+	if (wrapped_source_ == scene.getViewport()) return;
+	wrapped_ = mrpt::opengl::COpenGLScene::Create();
+	root_ = mrpt::opengl::CSetOfObjects::Create();
+	for (const auto& o : *scene.getViewport()) root_->insert(o);
+	wrapped_->insert(root_);
+	wrapped_source_ = scene.getViewport();
+}
+
+void StereoRenderer::setLights(const Eigen::Matrix3d& R_WinCam_mrpt)
+{
+	auto vp = wrapped_->getViewport();
+	vp->setViewportClipDistances(float(options_.clip_near_m), float(options_.clip_far_m));
+	vp->setCustomBackgroundColor({0.f, 0.f, 0.f});
+	auto& light = vp->lightParameters();
+	const float a = float(options_.light_ambient), d = float(options_.light_diffuse);
+	light.ambient = {a, a, a, 1.f};
+	light.diffuse = {d, d, d, 1.f};
+	light.specular = {0.f, 0.f, 0.f, 1.f};  // matte surfaces (thesis 7.2.2: no glare)
+	// a fixed light in W (MRPT axes: from above, slightly from the front-left), seen from the
+	// camera
+	const Eigen::Vector3d dir = R_WinCam_mrpt * Eigen::Vector3d(0.3, -0.4, -0.866).normalized();
+	light.direction = {float(dir.x()), float(dir.y()), float(dir.z())};
+}
+
 mrpt::img::CImage StereoRenderer::renderView(const mrpt::opengl::COpenGLScene& scene,
                                              const Eigen::Isometry3d& T_CamCvInW,
                                              mrpt::math::CMatrixFloat* depth_m)
 {
+	wrap(scene);
 	// OpenGL puts pixel centres at half-integers; the head model (like OpenCV) at integers, so the
 	// principal point is shifted by half a pixel for the renderer.
 	mrpt::img::TCamera tc = head_.camera().toTCamera();
 	tc.cx(tc.cx() + 0.5);
 	tc.cy(tc.cy() + 0.5);
-	auto vp = scene.getViewport();
-	vp->setViewportClipDistances(float(options_.clip_near_m), float(options_.clip_far_m));
-	vp->setCustomBackgroundColor({0.f, 0.f, 0.f});
-	auto& light = vp->lightParameters();
-	light.ambient = {float(options_.light_ambient), float(options_.light_ambient),
-	                 float(options_.light_ambient), 1.f};
-	light.diffuse = {float(options_.light_diffuse), float(options_.light_diffuse),
-	                 float(options_.light_diffuse), 1.f};
-	auto& c = fbo_->getCamera(scene);
+	const mrpt::poses::CPose3D camInW = geometry::cameraPoseToMrpt(T_CamCvInW);
+	const mrpt::poses::CPose3D wInCam = -camInW;
+	root_->setPose(wInCam);
+	setLights(wInCam.getRotationMatrix().asEigen());
+	auto& c = fbo_->getCamera(*wrapped_);
 	c.setProjectiveFromPinhole(tc);
 	c.set6DOFMode(true);
-	c.setPose(geometry::cameraPoseToMrpt(T_CamCvInW));
+	c.setPose(mrpt::poses::CPose3D());
 	mrpt::img::CImage rgb;
 	if (depth_m)
-		fbo_->render_RGBD(scene, rgb, *depth_m);
+		fbo_->render_RGBD(*wrapped_, rgb, *depth_m);
 	else
-		fbo_->render_RGB(scene, rgb);
+		fbo_->render_RGB(*wrapped_, rgb);
 	return rgb.grayscale();
 }
 

@@ -10,6 +10,7 @@
 #include <mrpt/img/CImage.h>
 #include <mrpt/math/CMatrixF.h>
 #include <mrpt/opengl/COpenGLScene.h>
+#include <mrpt/opengl/CSetOfObjects.h>
 
 #include <Eigen/Geometry>
 
@@ -50,7 +51,8 @@ struct StereoFrame
 	double render_s = 0;  ///< wall-clock time spent rendering (reported apart from processing)
 };
 
-/** Renders stereo pairs of one scene. Not thread-safe (one EGL context per renderer). */
+/** Renders stereo pairs of one scene. Not thread-safe (one EGL context per renderer). The scene
+ * passed to render() must stay alive and unchanged between calls (its objects are shared). */
 class StereoRenderer
 {
  public:
@@ -73,10 +75,15 @@ class StereoRenderer
 
  private:
 	void degrade(mrpt::img::CImage& img, uint64_t sample) const;
+	void wrap(const mrpt::opengl::COpenGLScene& scene);
+	void setLights(const Eigen::Matrix3d& R_WinCam_mrpt);
 
 	geometry::BiSightHead head_;
 	RenderOptions options_;
 	std::unique_ptr<mrpt::opengl::CFBORender> fbo_;
+	mrpt::opengl::COpenGLViewport::Ptr wrapped_source_;
+	mrpt::opengl::COpenGLScene::Ptr wrapped_;
+	mrpt::opengl::CSetOfObjects::Ptr root_;
 };
 
 }  // namespace mrolr::sim
