@@ -95,6 +95,33 @@ Eigen::Vector3d commonPerpendicularMidpoint(const Feature& a, const Feature& b)
 	return 0.5 * ((a.m + s * a.u) + (b.m + t * b.u));
 }
 
+/** The fragment-invariant point of a feature pair: the common perpendicular's midpoint of lines at
+ * least 30° apart, or the foot of the perpendicular from a conic's centre onto a line. @p force
+ * computes it even when the pair is not qualified (the scene side of a qualified model pair). */
+std::optional<Eigen::Vector3d> pairPoint(const Feature& a, const Feature& b, bool force = false)
+{
+	if (a.isLine() && b.isLine())
+	{
+		if (!force && a.u.cross(b.u).norm() < std::sin(30.0 * M_PI / 180.0)) return std::nullopt;
+		return commonPerpendicularMidpoint(a, b);
+	}
+	if (!a.isLine() && !b.isLine()) return std::nullopt;
+	const Feature& l = a.isLine() ? a : b;
+	const Feature& c = a.isLine() ? b : a;
+	return Eigen::Vector3d(l.m + (c.m - l.m).dot(l.u) * l.u);
+}
+
+/** True when the points span a plane (second singular value of the centred cloud over 1 mm RMS). */
+bool spansPlane(const opengv::points_t& pts)
+{
+	Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+	for (const auto& p : pts) mean += p / static_cast<double>(pts.size());
+	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+	for (const auto& p : pts) C += (p - mean) * (p - mean).transpose();
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C / static_cast<double>(pts.size()));
+	return es.eigenvalues()(1) > 1.0;
+}
+
 Eigen::Isometry3d fromOpengv(const opengv::transformation_t& T)
 {
 	Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
@@ -137,22 +164,12 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> correspondingPoints(
 	const std::vector<Correspondence>& cs)
 {
 	std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pts;
-	const double minSin = std::sin(30.0 * M_PI / 180.0);
 	for (size_t i = 0; i < cs.size(); ++i)
 	{
-		if (!cs[i].model.isLine())
-		{
-			pts.push_back({cs[i].model.m, cs[i].scene.m});
-			continue;
-		}
+		if (!cs[i].model.isLine()) pts.push_back({cs[i].model.m, cs[i].scene.m});
 		for (size_t j = i + 1; j < cs.size(); ++j)
-		{
-			const auto &mi = cs[i].model, &mj = cs[j].model;
-			if (!mj.isLine() || mi.u.cross(mj.u).norm() < minSin) continue;
-			pts.push_back(
-				{commonPerpendicularMidpoint(mi, mj),
-				 commonPerpendicularMidpoint(cs[i].scene, cs[j].scene)});
-		}
+			if (auto p = pairPoint(cs[i].model, cs[j].model))
+				pts.push_back({*p, *pairPoint(cs[i].scene, cs[j].scene, true)});
 	}
 	return pts;
 }
@@ -168,6 +185,7 @@ std::optional<Eigen::Isometry3d> arunPose(
 		model.push_back(p.first);
 		scene.push_back(p.second);
 	}
+	if (!spansPlane(model)) return std::nullopt;
 	opengv::point_cloud::PointCloudAdapter adapter(scene, model);
 	if (pts.size() < 6) return fromOpengv(opengv::point_cloud::threept_arun(adapter));
 	using Problem = opengv::sac_problems::point_cloud::PointCloudSacProblem;

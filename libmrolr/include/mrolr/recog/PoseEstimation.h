@@ -35,15 +35,16 @@ std::optional<Eigen::Matrix3d> rotationFromDirections(
  * undetermined. */
 std::optional<Eigen::Isometry3d> faugerasHebertPose(const std::vector<Correspondence>& cs);
 
-/** Points that correspond regardless of fragmentation: conic centres and, for each pair of matched
- * lines at least 30° apart, the midpoint of their common perpendicular. first = model, second =
- * scene. */
+/** Points that correspond regardless of fragmentation: conic centres, for each pair of matched
+ * lines at least 30° apart the midpoint of their common perpendicular, and for each line–conic pair
+ * the foot of the perpendicular from the centre onto the line. first = model, second = scene. */
 std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> correspondingPoints(
 	const std::vector<Correspondence>& cs);
 
 /** OpenGV point-cloud alignment of correspondingPoints(cs): opengv::point_cloud::threept_arun on
  * all points, or inside opengv::sac::Ransac (threshold @p ransac_threshold_mm, fixed seed) when
- * there are at least 6 points. nullopt with fewer than 3 points. */
+ * there are at least 6 points. nullopt with fewer than 3 points or when they are (nearly)
+ * collinear. */
 std::optional<Eigen::Isometry3d> arunPose(
 	const std::vector<Correspondence>& cs, double ransac_threshold_mm);
 

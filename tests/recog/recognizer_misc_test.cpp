@@ -1,0 +1,121 @@
+#include "recog_test_util.h"
+
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/recog/SyntheticScene.h>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+using namespace mrolr::recog;
+
+namespace
+{
+SceneNoise noisy()
+{
+	SceneNoise n;
+	n.endpoint_sigma_mm = 0.5;
+	n.fragment_probability = 0.5;
+	n.missing_fraction = 0.2;
+	return n;
+}
+}  // namespace
+
+// The OpenGV point-based estimator alone, and both together, also recognise with exact poses.
+TEST(recognizer_misc, arun_and_both_pose_methods)
+{
+	const auto objects = makeLabObjects();
+	for (const char* method : {"arun", "both"})
+	{
+		auto opts = RecognitionOptions::defaults();
+		opts.pose_method = method;
+		for (size_t k : {0u, 1u, 4u, 9u})
+		{
+			const auto T = tablePose(33.0 * k, 30, Eigen::Vector3d(0, -120, 750));
+			const auto r = Recognizer(objects[k], opts).recognize(transformWireFrame(objects[k], T));
+			ASSERT_TRUE(r.found) << method << " " << objects[k].name;
+			EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6) << method;
+		}
+	}
+}
+
+// Noise kinds one at a time (endpoint noise, fragmentation, missing segments), each object.
+TEST(recognizer_misc, each_noise_kind_alone)
+{
+	const auto objects = makeLabObjects();
+	const auto opts = RecognitionOptions::defaults();
+	SceneNoise kinds[3];
+	kinds[0].endpoint_sigma_mm = 1.0;
+	kinds[1].fragment_probability = 1.0;
+	kinds[2].missing_fraction = 0.3;
+	for (int kind = 0; kind < 3; ++kind)
+	{
+		int ok = 0;
+		for (size_t k = 0; k < objects.size(); ++k)
+		{
+			const auto ts = makeTableScene(objects, static_cast<int>(k), 2, kinds[kind], 77 + k);
+			const auto r = Recognizer(objects[k], opts).recognize(ts.scene);
+			ok += r.found && test::rotationErrorDeg(r.T_OinS, ts.T_OinS) < 3 &&
+				test::translationErrorMm(r.T_OinS, ts.T_OinS) < 6;
+		}
+		EXPECT_GE(ok, 9) << "noise kind " << kind;
+	}
+}
+
+// Pan sweep (thesis 6.4): the object is in the third of five scene models; the sweep stops there.
+TEST(recognizer_misc, pan_sweep_finds_the_scene_holding_the_object)
+{
+	const auto objects = makeLabObjects();
+	const auto cup = objects[1];
+	std::vector<mrolr::model::WireFrame> sweep;
+	auto others = objects;
+	others.erase(others.begin() + 1);
+	for (unsigned i = 0; i < 5; ++i)
+		sweep.push_back(i == 2 ? makeTableScene(objects, 1, 2, noisy(), 900 + i).scene
+							   : makeTableScene(others, -1, 3, noisy(), 900 + i).scene);
+	const Recognizer rec(cup, RecognitionOptions::defaults());
+	const auto r = rec.searchSweep(sweep);
+	ASSERT_TRUE(r.found);
+	EXPECT_EQ(r.scene_index, 2);
+	EXPECT_GT(r.confidence, 0.2);
+	sweep.erase(sweep.begin() + 2);
+	const auto none = rec.searchSweep(sweep);
+	EXPECT_FALSE(none.found);
+	EXPECT_EQ(none.scene_index, -1);
+	EXPECT_EQ(none.level, 0);
+	EXPECT_EQ(none.confidence, 0);
+}
+
+// An empty scene and a scene of one line: not found, no crash.
+TEST(recognizer_misc, empty_and_tiny_scenes)
+{
+	const Recognizer rec(makeCup(), RecognitionOptions::defaults());
+	mrolr::model::WireFrame empty;
+	EXPECT_FALSE(rec.recognize(empty).found);
+	mrolr::model::WireFrame one;
+	one.lines.push_back({1, {0, 0, 0}, {100, 0, 0}});
+	EXPECT_FALSE(rec.recognize(one).found);
+}
+
+// Malformed .wf text is rejected by the reader with the line number; a parsed model with a
+// degenerate element is rejected by the recognizer naming the element.
+TEST(recognizer_misc, malformed_wire_frames)
+{
+	std::istringstream bad("# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 1 0\n");
+	EXPECT_THROW(mrolr::model::readWireFrame(bad, "bad.wf"), mrolr::model::WireFrameFormatError);
+	std::istringstream degenerate(
+		"# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 0 0 0\nline 2 0 0 0 1 0 0\n");
+	mrolr::model::WireFrame wf;
+	try
+	{
+		wf = mrolr::model::readWireFrame(degenerate, "degenerate.wf");
+	}
+	catch (const mrolr::model::WireFrameFormatError&)
+	{
+		SUCCEED() << "the reader already rejects zero-length lines";
+		return;
+	}
+	EXPECT_THROW(Recognizer(wf, RecognitionOptions::defaults()), std::invalid_argument);
+}
