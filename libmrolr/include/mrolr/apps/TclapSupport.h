@@ -27,6 +27,8 @@ class ThrowingTclapOutput : public TCLAP::StdOutput
 inline bool parseTclap(TCLAP::CmdLine& cmd, const std::vector<std::string>& args)
 {
 	static ThrowingTclapOutput output;
+	// CmdLine allocates a default StdOutput and stops owning it once another is set: free it.
+	if (cmd.getOutput() != &output) delete cmd.getOutput();
 	cmd.setOutput(&output);
 	std::vector<const char*> argv;
 	for (const auto& a : args) argv.push_back(a.c_str());
