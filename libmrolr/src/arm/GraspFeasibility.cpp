@@ -28,7 +28,9 @@ void sampleConic(const model::Conic3& c, const Eigen::Isometry3d& T, double step
 		out.push_back(T * c.pointAt(c.t1 + (c.t2 - c.t1) * (double(i) / n)));
 }
 
-/** Width between the fingers and the largest |y_G|; 0 points → width = −1. */
+/** Extent along y_G of the object points the open fingers straddle on the way in (within the finger
+ * width, from the start of the approach down to the fingertips) and the largest |y_G|; no point →
+ * width = −1. */
 std::pair<double, double> widthBetweenFingers(const Eigen::Isometry3d& T_AinG,
                                               const std::vector<Eigen::Vector3d>& pts,
                                               const GraspFeasibilityOptions& o)
@@ -37,8 +39,10 @@ std::pair<double, double> widthBetweenFingers(const Eigen::Isometry3d& T_AinG,
 	for (const auto& p : pts)
 	{
 		const Eigen::Vector3d q = T_AinG * p;
-		if (std::abs(q.x()) > o.finger_width_mm / 2 || std::abs(q.z()) > o.finger_length_mm / 2)
-			continue;
+		const bool straddled = std::abs(q.x()) <= o.finger_width_mm / 2 &&
+		                       q.z() <= o.finger_length_mm / 2 &&
+		                       q.z() >= -o.finger_length_mm / 2 - o.approach_distance_mm;
+		if (!straddled) continue;
 		lo = std::min(lo, q.y());
 		hi = std::max(hi, q.y());
 		far = std::max(far, std::abs(q.y()));

@@ -4,8 +4,10 @@
  * finger_length_mm and width finger_width_mm centred on the grasp point, closing along y_G and
  * approaching along z_G from approach_distance_mm back. Checks:
  *  - reach: the analytic IK has a solution within the joint limits (≈ 500 mm wrist radius);
- *  - opening: object points between the fingers (|x_G| ≤ width/2, |z_G| ≤ length/2) lie within
- *    ±(opening/2 − margin) along y_G;
+ *  - opening: the object points the open fingers straddle on the way in (|x_G| ≤ width/2, z_G
+ *    from −(length/2 + approach) down to the fingertips at +length/2) lie within
+ *    ±(opening/2 − margin) along y_G; a wire-frame has only edges, so this is the width of the
+ *    edges that pass between the fingers;
  *  - table: the open fingertips stay table_clearance_mm above the table plane z_A = table_z_mm
  *    along the approach;
  *  - neighbours: no neighbour point inside the open gripper's swept box grown by
