@@ -41,6 +41,26 @@ TEST(recognizer_misc, arun_and_both_pose_methods)
 	}
 }
 
+// The model area's automatic cliques (mrolr-model's method) also recognise exact scenes; an
+// unknown method is refused.
+TEST(recognizer_misc, model_area_cliques)
+{
+	auto opts = RecognitionOptions::defaults();
+	opts.auto_cliques = "model";
+	const auto objects = makeLabObjects();
+	for (size_t k : {0u, 1u, 6u})
+	{
+		const auto T = tablePose(20.0 * k, 35, Eigen::Vector3d(10, -120, 700));
+		const Recognizer rec(objects[k], opts);
+		EXPECT_FALSE(rec.table().cliques().empty());
+		const auto r = rec.recognize(transformWireFrame(objects[k], T));
+		ASSERT_TRUE(r.found) << objects[k].name;
+		EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6);
+	}
+	opts.auto_cliques = "magic";
+	EXPECT_THROW(Recognizer(objects[0], opts), std::invalid_argument);
+}
+
 // Noise kinds one at a time (endpoint noise, fragmentation, missing segments), each object.
 TEST(recognizer_misc, each_noise_kind_alone)
 {

@@ -1,3 +1,4 @@
+#include <mrolr/model/AutoCliques.h>
 #include <mrolr/recog/ModelTable.h>
 
 #include <algorithm>
@@ -81,14 +82,29 @@ std::vector<IndexClique> chooseCliques(const std::vector<Feature>& features, int
 	return out;
 }
 
-ModelTable::ModelTable(const model::WireFrame& wf, int auto_count, int auto_size)
+std::vector<IndexClique> ModelTable::automaticCliques(
+	const model::WireFrame& wf, const std::string& method, int count, int size) const
+{
+	if (method == "recog") return chooseCliques(features_, count, size);
+	if (method != "model")
+		throw std::invalid_argument("unknown automatic clique method '" + method + "' (recog | model)");
+	model::WireFrame withCliques = wf;
+	model::CliqueOptions co;
+	co.clique_size = size;
+	co.max_cliques = count;
+	model::addAutomaticCliques(withCliques, co);
+	return cliquesFromModel(withCliques, features_);
+}
+
+ModelTable::ModelTable(
+	const model::WireFrame& wf, int auto_count, int auto_size, const std::string& auto_method)
 	: name_(wf.name), features_(featuresOf(wf)), n_(features_.size())
 {
 	if (features_.size() < 2)
 		throw std::invalid_argument(
 			"wire-frame '" + wf.name + "' has fewer than two lines and conics to match");
 	automatic_ = wf.cliques.empty();
-	cliques_ = automatic_ ? chooseCliques(features_, auto_count, auto_size)
+	cliques_ = automatic_ ? automaticCliques(wf, auto_method, auto_count, auto_size)
 						  : cliquesFromModel(wf, features_);
 	table_.resize(n_ * n_);
 	for (size_t i = 0; i < n_; ++i)

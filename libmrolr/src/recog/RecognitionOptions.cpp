@@ -100,6 +100,11 @@ void RecognitionOptions::loadFromConfigFile(
 		throw util::ConfigError(
 			util::describeKey(cfg, section, "pose_method") + ": '" + pose_method +
 			"' is not one of faugeras_hebert, arun, both");
+	auto_cliques = util::readString(cfg, section, "auto_cliques");
+	if (auto_cliques != "recog" && auto_cliques != "model")
+		throw util::ConfigError(
+			util::describeKey(cfg, section, "auto_cliques") + ": '" + auto_cliques +
+			"' is not one of recog, model");
 	auto readCount = [&](const char* key, long lo, long hi) {
 		const long v = util::readInt(cfg, section, key);
 		util::requireInRange(cfg, section, key, static_cast<double>(v), lo, hi);
@@ -124,7 +129,8 @@ void RecognitionOptions::dump(std::ostream& out) const
 	for (const auto& p : levels) out << " " << p.clique_size;
 	out << "\n";
 	for (const auto& key : levelKeys()) dumpLevelKey(out, key, levels);
-	out << "pose_method = " << pose_method << "\nauto_clique_count = " << auto_clique_count
+	out << "pose_method = " << pose_method << "\nauto_cliques = " << auto_cliques
+		<< "\nauto_clique_count = " << auto_clique_count
 		<< "\nauto_clique_size = " << auto_clique_size
 		<< "\nmax_search_nodes = " << max_search_nodes
 		<< "\nrefine_iterations = " << refine_iterations

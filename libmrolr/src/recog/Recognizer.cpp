@@ -80,7 +80,7 @@ double confidenceOf(double score, size_t level, size_t levels)
 }  // namespace
 
 Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
-	: table_(model, opts.auto_clique_count, opts.auto_clique_size), opts_(opts)
+	: table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques), opts_(opts)
 {
 	if (opts_.levels.empty()) throw std::invalid_argument("recognition options have no levels");
 	centroid_O_.setZero();

@@ -31,6 +31,9 @@ struct RecognitionOptions
 	std::vector<LevelParams> levels;
 	/** Pose estimator for clique hypotheses: "faugeras_hebert", "arun" (OpenGV) or "both". */
 	std::string pose_method = "faugeras_hebert";
+	/** Automatic cliques for models without any: "recog" (nearest features of the longest ones)
+	 * or "model" (model::addAutomaticCliques, viewing-direction coverage). */
+	std::string auto_cliques = "recog";
 	int auto_clique_count = 12;  ///< cliques chosen automatically when a model has none
 	int auto_clique_size = 7;  ///< features per automatic clique, focus included
 	int max_search_nodes = 4000;  ///< budget of the maximal-consistent-set search per focus match
