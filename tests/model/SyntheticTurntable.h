@@ -70,6 +70,29 @@ inline std::vector<stereo::test::Face> viewFaces(double angle_deg)
 	return faces;  // painter's order: table first; a convex box's front faces never overlap
 }
 
+/** The box edges visible in the left camera with the box turned by angle_deg (an edge is visible
+ * when one of its faces is; the bottom face never is), in frame L. */
+inline WireFrame visibleTruthInL(double angle_deg)
+{
+	const Eigen::Isometry3d T_OinL =
+		cameraInTurntable().inverse() * Eigen::AngleAxisd(angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ());
+	WireFrame truth;
+	truth.frame = WireFrameFrame::LeftCamera;
+	for (const auto& l : boxTruth().lines)
+	{
+		const Eigen::Vector3d m = (l.p1 + l.p2) / 2;
+		bool visible = false;
+		for (const auto& [n, idx] : boxFaces())
+		{
+			const Eigen::Vector3d c = kBoxSize.cwiseProduct(n) / 2 + Eigen::Vector3d(0, 0, kBoxSize.z() / 2);
+			const bool on_face = std::abs((m - c).dot(n)) < 1e-6;
+			visible |= on_face && (T_OinL.linear() * n).dot(-(T_OinL * c)) > 0;
+		}
+		if (visible) truth.lines.push_back({l.id, T_OinL * l.p1, T_OinL * l.p2});
+	}
+	return truth;
+}
+
 inline void writeTurntableDir(const std::string& dir)
 {
 	std::filesystem::create_directories(dir);

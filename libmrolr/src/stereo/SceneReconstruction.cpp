@@ -37,6 +37,11 @@ void SceneOptions::loadFromConfigFile(
 	edges.loadFromConfigFile(cfg, section);
 	match.loadFromConfigFile(cfg, section);
 	fit.loadFromConfigFile(cfg, section);
+	horizontal.enabled = util::readBool(cfg, section, "horizontal_enabled", horizontal.enabled);
+	horizontal.max_angle_deg = util::readDouble(cfg, section, "horizontal_max_angle_deg", horizontal.max_angle_deg);
+	horizontal.corner_radius_px = util::readDouble(cfg, section, "horizontal_corner_radius_px", horizontal.corner_radius_px);
+	horizontal.min_right_support =
+		util::readDouble(cfg, section, "horizontal_min_right_support", horizontal.min_right_support);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -45,6 +50,9 @@ void SceneOptions::dump(std::ostream& out) const
 	edges.dump(out);
 	match.dump(out);
 	fit.dump(out);
+	out << "horizontal_enabled = " << horizontal.enabled << "\nhorizontal_max_angle_deg = " << horizontal.max_angle_deg
+		<< "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
+		<< "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
 }
 
 std::vector<std::vector<StereoEdgel>> stereoStrings(
@@ -78,6 +86,9 @@ StereoScene reconstructScene(
 	const auto strings = stereoStrings(matches, rect, o.fit);
 	scene.strings3d = strings.size();
 	for (const auto& s : strings) segmentString(s, rect, o.fit, scene.lines, scene.conics);
+	const auto h = recoverHorizontalLines(ls, rs, matches, rect, rr.size(), o.fit, o.horizontal);
+	scene.horizontal_lines = h.size();
+	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
 	return scene;
 }
 

@@ -6,6 +6,7 @@
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
+#include <mrolr/stereo/HorizontalEdges.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -24,6 +25,7 @@ struct SceneOptions
 	EdgeOptions edges;
 	MatchOptions match;
 	FitOptions fit;
+	HorizontalOptions horizontal;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -35,6 +37,7 @@ struct StereoScene
 	std::vector<LineFit3> lines;
 	std::vector<ConicFit3> conics;
 	size_t left_strings = 0, right_strings = 0, matches = 0, strings3d = 0;
+	size_t horizontal_lines = 0;  ///< lines recovered from their corners (HorizontalEdges.h)
 };
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
