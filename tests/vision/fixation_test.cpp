@@ -38,7 +38,7 @@ class FixationTest : public ::testing::Test
 TEST_F(FixationTest, ConvergesFromATenPixelOffset)
 {
 	const cv::Mat patch = extractPatch(device.grab().left, {320, 240}, options.patch_size_px);
-	for (const Eigen::Vector3d axis :
+	for (const Eigen::Vector3d& axis :
 	     {Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)})
 	{
 		const Eigen::Vector3d guess = guessOffBy(p_true, 10, axis);

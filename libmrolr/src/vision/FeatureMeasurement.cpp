@@ -7,35 +7,61 @@ namespace mrolr::vision
 {
 using geometry::Side;
 
-FeatureMeasurement measureInImages(const StereoImages& images, const geometry::BiSightHead& head,
-                                   const cv::Mat& patch, const Eigen::Vector3d& h_pred,
-                                   const Eigen::Matrix3d& S, const VisionOptions& o,
-                                   NssdMethod method)
+bool predictRegions(const geometry::BiSightHead& head, const geometry::HeadAngles& angles,
+                    const Eigen::Vector3d& h_pred, const Eigen::Matrix3d& S, const VisionOptions& o,
+                    FeatureMeasurement& m)
 {
-	FeatureMeasurement m;
-	m.angles = images.angles;
+	m.angles = angles;
 	try
 	{
-		const double n = o.search_n_sigma;
-		m.ellipse_left = projectInnovation(head, Side::Left, images.angles, h_pred, S, n);
-		m.ellipse_right = projectInnovation(head, Side::Right, images.angles, h_pred, S, n);
-		m.left = searchEllipse(images.left, patch, m.ellipse_left, o.nssd_threshold, method);
-		if (!m.left.found) return m;
-		m.right = searchEllipse(images.right, patch, m.ellipse_right, o.nssd_threshold, method);
-		if (!m.right.found) return m;
-		m.pixels = {m.left.uv.x(), m.left.uv.y(), m.right.uv.x(), m.right.uv.y()};
+		m.ellipse_left = projectInnovation(head, Side::Left, angles, h_pred, S, o.search_n_sigma);
+		m.ellipse_right = projectInnovation(head, Side::Right, angles, h_pred, S, o.search_n_sigma);
+		return true;
+	}
+	catch (const geometry::GeometryError&)
+	{
+		return false;  // behind a camera
+	}
+	catch (const std::invalid_argument&)
+	{
+		return false;  // vergence outside (0, π/2)
+	}
+}
+
+void matchInRegions(const StereoImages& images, const geometry::BiSightHead& head,
+                    const cv::Mat& patch, const VisionOptions& o, NssdMethod method,
+                    FeatureMeasurement& m)
+{
+	m.found = false;
+	m.left = searchEllipse(images.left, patch, m.ellipse_left, o.nssd_threshold, method);
+	if (!m.left.found) return;
+	m.right = searchEllipse(images.right, patch, m.ellipse_right, o.nssd_threshold, method);
+	if (!m.right.found) return;
+	m.pixels = {m.left.uv.x(), m.left.uv.y(), m.right.uv.x(), m.right.uv.y()};
+	try
+	{
 		m.p_GinC0 = head.triangulatePoint(m.pixels, images.angles);
 		m.h = geometry::idealHeadMeasure(m.p_GinC0, head.options().interocular_m);
 		m.found = true;
 	}
 	catch (const geometry::GeometryError&)
 	{
-		m.found = false;  // behind a camera or parallel rays: not a measurement
+		// parallel rays or a point behind a camera: not a measurement
 	}
 	catch (const std::invalid_argument&)
 	{
-		m.found = false;  // idealHeadInverse/Measure outside their domain
+		// the point coincides with the head centre
 	}
+}
+
+FeatureMeasurement measureInImages(const StereoImages& images, const geometry::BiSightHead& head,
+                                   const cv::Mat& patch, const Eigen::Vector3d& h_pred,
+                                   const Eigen::Matrix3d& S, const VisionOptions& o,
+                                   NssdMethod method)
+{
+	FeatureMeasurement m;
+	if (predictRegions(head, images.angles, h_pred, S, o, m))
+		matchInRegions(images, head, patch, o, method, m);
 	return m;
 }
 

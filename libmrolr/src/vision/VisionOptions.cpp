@@ -45,6 +45,9 @@ void VisionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	fixation_max_attempts = readIntIn(cfg, section, "fixation_max_attempts", 1, 100);
 	fixation_search_radius_px = readIn(cfg, section, "fixation_search_radius_px", 1, 10000);
 	pixel_sigma_px = readIn(cfg, section, "pixel_sigma_px", 1e-6, 1000);
+	acquire_pan_deg = readIn(cfg, section, "acquire_pan_deg", 0, 180);
+	acquire_tilt_deg = readIn(cfg, section, "acquire_tilt_deg", -90, 90);
+	acquire_box_px = readIntIn(cfg, section, "acquire_box_px", patch_size_px, 100000);
 }
 
 VisionOptions VisionOptions::fromFile(const std::string& path, const std::string& section)

@@ -25,6 +25,18 @@ struct FeatureMeasurement
 	geometry::HeadAngles angles;                        ///< radians, the angles of the images used
 };
 
+/** The search ellipses (eqs 5.37–5.39) of a feature with predicted measurement @p h_pred and
+ * innovation covariance @p S in both images taken at @p angles. Returns false when the prediction
+ * cannot be projected (behind a camera, vergence outside (0, π/2)). */
+bool predictRegions(const geometry::BiSightHead& head, const geometry::HeadAngles& angles,
+                    const Eigen::Vector3d& h_pred, const Eigen::Matrix3d& S,
+                    const VisionOptions& options, FeatureMeasurement& m);
+
+/** Matches @p patch inside the ellipses already in @p m, triangulates and fills h (eq 5.40). */
+void matchInRegions(const StereoImages& images, const geometry::BiSightHead& head,
+                    const cv::Mat& patch, const VisionOptions& options, NssdMethod method,
+                    FeatureMeasurement& m);
+
 /** Measures the feature of saved @p patch in @p images, given the predicted ideal-head measurement
  * @p h_pred and innovation covariance @p S (rad²). Never throws for a feature that is not found
  * or cannot be projected: found = false. */

@@ -23,7 +23,10 @@ struct VisionOptions
 	double lockon_radius_px = 2;    ///< lock-on: patch centre this close to (u0, v0) in both (5.3)
 	int fixation_max_attempts = 4;  ///< fixation retries before the feature is discarded (5.3)
 	double fixation_search_radius_px = 40;  ///< half-side of the box searched after a saccade
-	double pixel_sigma_px = 1.0;  ///< matching noise per image coordinate, for triangulation
+	double pixel_sigma_px = 1.0;   ///< matching noise per image coordinate, for triangulation
+	double acquire_pan_deg = 30;   ///< new features are sought at pan +this, 0, −this (5.7)
+	double acquire_tilt_deg = 10;  ///< … with the head tilted up by this
+	int acquire_box_px = 200;  ///< side of the central left-image box searched for a new feature
 
 	/** Reads every key above from @p section; all keys are required. */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

@@ -1,0 +1,87 @@
+#pragma once
+/** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (issue 5, thesis 5.2–5.7, 7.2).
+ *
+ *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--out DIR] [--json]
+ *
+ * The robot drives the world's waypoints (rotate–translate–rotate legs planned from the estimate),
+ * its true wheels slipping as configured; at every step the head saccades to the selected feature,
+ * finds its saved patch by NSSD in the predicted ellipses and the filter is updated with the
+ * triangulated angles. Known landmarks of the world are acquired at the start pose (fixate, lock
+ * on, store the patch) and enter the map with zero covariance. */
+
+#include <mrolr/base/LabmateModel.h>
+#include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/geometry/BiSightOptions.h>
+#include <mrolr/slam/SlamOptions.h>
+#include <mrolr/vision/VisionOptions.h>
+#include <mrolr/vision/VisualSlam.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mrolr::apps
+{
+/** Simulation settings of mrolr-slam, section [slam_run] of config/slam.ini. */
+struct SlamRunOptions
+{
+	std::string labmate_config_file = "labmate.ini";  ///< relative to the config file's folder
+	std::string bisight_config_file = "bisight.ini";
+	unsigned seed = 1;
+	double true_velocity_noise_fraction = 0.05;  ///< σ_i = fraction · |v_i| of the true wheels
+	double slip_burst_probability = 0.05;        ///< a slip burst starts at a translation step
+	int slip_burst_length_steps = 3;
+	double slip_fraction = 0.2;   ///< fraction of its distance the left wheel loses in a burst
+	double image_noise_grey = 2;  ///< std of the image noise, grey levels
+	int texture_size_px = 31;     ///< side of each landmark's texture in the images
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** One step of the run, for the trajectory CSV. */
+struct SlamStepLog
+{
+	Eigen::Vector3d x_true, x_est, x_dr;  ///< (z, x, φ), metres and radians
+	Eigen::Vector3d var_est;              ///< diagonal of the vehicle covariance
+	vision::CycleRecord record;
+};
+
+/** Figures of a run (the --json summary). */
+struct SlamSummary
+{
+	double slam_final_position_error_m = 0, slam_rms_position_m = 0;
+	double dr_final_position_error_m = 0, dr_rms_position_m = 0;
+	int features = 0, features_added = 0, features_deleted = 0;
+	int measurements = 0, matched = 0, accepted = 0;
+	double match_success_rate = 0;
+	int cycles = 0;
+	vision::CycleTimes mean_times;  ///< per cycle, ms
+};
+
+class SlamApp
+{
+ public:
+	/** Parses the command line; throws util::UsageError for bad arguments. */
+	void initialize(const std::vector<std::string>& args);
+	/** Runs, writes the outputs, prints a summary (or JSON) to @p out. Returns the exit code. */
+	int run(std::ostream& out);
+
+	// Inputs (set by initialize)
+	std::string world_path, config_path, rawlog_path, out_dir;
+	bool live = false, json = false, help_shown = false;
+
+	// Results (set by run)
+	std::vector<SlamStepLog> steps;
+	std::vector<std::string> map_lines;  ///< map.csv rows
+	SlamSummary summary;
+
+ private:
+	void runLive();
+	void writeOutputs() const;
+	void printSummary(std::ostream& out) const;
+};
+
+}  // namespace mrolr::apps

@@ -1,0 +1,132 @@
+#include <mrolr/apps/SlamApp.h>
+#include <mrolr/apps/TclapSupport.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+namespace mrolr::apps
+{
+void SlamApp::initialize(const std::vector<std::string>& args)
+{
+	TCLAP::CmdLine cmd("mrolr-slam: vision-driven EKF-SLAM on a simulated world", ' ', "1");
+	TCLAP::ValueArg<std::string> world("", "world", "world file (maps/<name>/world.ini)", false, "",
+	                                   "FILE", cmd);
+	TCLAP::ValueArg<std::string> config("", "config", "SLAM configuration", false,
+	                                    std::string(MROLR_SOURCE_DIR) + "/config/slam.ini", "FILE",
+	                                    cmd);
+	TCLAP::SwitchArg liveArg(
+	    "", "live", "run on the simulator: drive the waypoints, measure with the head", cmd);
+	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "replay a rawlog recorded by mrolr-sim",
+	                                    false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> out(
+	    "", "out", "folder for trajectory/map/decisions CSV and a PNG plot", false, "", "DIR", cmd);
+	TCLAP::SwitchArg js("", "json", "print the summary as JSON", cmd);
+	if (!parseTclap(cmd, args))
+	{
+		help_shown = true;
+		return;
+	}
+	world_path = world.getValue(), config_path = config.getValue(), rawlog_path = rawlog.getValue();
+	out_dir = out.getValue(), live = liveArg.getValue(), json = js.getValue();
+	if (live == !rawlog_path.empty())
+		throw util::UsageError("give exactly one of --live and --rawlog FILE");
+	if (live && world_path.empty()) throw util::UsageError("--live needs --world FILE");
+}
+
+namespace
+{
+double planarError(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+	return (a - b).head<2>().norm();
+}
+
+SlamSummary summarise(const std::vector<SlamStepLog>& steps, SlamSummary s)
+{
+	double se_slam = 0, se_dr = 0;
+	for (const auto& st : steps)
+	{
+		se_slam += std::pow(planarError(st.x_est, st.x_true), 2);
+		se_dr += std::pow(planarError(st.x_dr, st.x_true), 2);
+		s.measurements += st.record.measured;
+		s.matched += st.record.measurement.found;
+		s.accepted += st.record.accepted;
+		s.mean_times += st.record.times;
+	}
+	const double n = std::max<size_t>(steps.size(), 1);
+	s.cycles = static_cast<int>(steps.size());
+	s.slam_rms_position_m = std::sqrt(se_slam / n), s.dr_rms_position_m = std::sqrt(se_dr / n);
+	if (!steps.empty())
+	{
+		s.slam_final_position_error_m = planarError(steps.back().x_est, steps.back().x_true);
+		s.dr_final_position_error_m = planarError(steps.back().x_dr, steps.back().x_true);
+	}
+	s.match_success_rate = s.measurements ? double(s.accepted) / s.measurements : 0;
+	auto& t = s.mean_times;
+	for (double* v : {&t.predict_ms, &t.manage_ms, &t.select_ms, &t.search_ms, &t.grab_ms,
+	                  &t.match_ms, &t.update_ms})
+		*v /= n;
+	return s;
+}
+
+nlohmann::json toJson(const SlamSummary& s)
+{
+	const auto& t = s.mean_times;
+	return {{"slam_final_position_error_m", s.slam_final_position_error_m},
+	        {"slam_rms_position_m", s.slam_rms_position_m},
+	        {"dr_final_position_error_m", s.dr_final_position_error_m},
+	        {"dr_rms_position_m", s.dr_rms_position_m},
+	        {"features", s.features},
+	        {"features_added", s.features_added},
+	        {"features_deleted", s.features_deleted},
+	        {"measurements", s.measurements},
+	        {"matched", s.matched},
+	        {"accepted", s.accepted},
+	        {"match_success_rate", s.match_success_rate},
+	        {"cycles", s.cycles},
+	        {"ms_per_cycle",
+	         {{"processing", t.processingMs()},
+	          {"predict", t.predict_ms},
+	          {"select", t.select_ms},
+	          {"search", t.search_ms},
+	          {"match", t.match_ms},
+	          {"update", t.update_ms},
+	          {"grab_images", t.grab_ms},
+	          {"acquire_features", t.manage_ms}}}};
+}
+}  // namespace
+
+int SlamApp::run(std::ostream& out)
+{
+	if (help_shown) return util::kExitOk;
+	if (!live)
+		throw std::runtime_error(
+		    "--rawlog replay is not implemented yet (needs the mrolr-sim rawlog reader); use "
+		    "--live");
+	steps.clear();
+	summary = SlamSummary();
+	runLive();
+	summary = summarise(steps, summary);
+	if (!out_dir.empty()) writeOutputs();
+	printSummary(out);
+	return util::kExitOk;
+}
+
+void SlamApp::printSummary(std::ostream& out) const
+{
+	const nlohmann::json j = toJson(summary);
+	if (json)
+	{
+		out << j.dump(2) << "\n";
+		return;
+	}
+	out << std::setprecision(4);
+	for (const auto& [key, value] : j.items())
+		if (!value.is_object()) out << std::left << std::setw(30) << key << value << "\n";
+	for (const auto& [key, value] : j["ms_per_cycle"].items())
+		out << "ms_per_cycle." << std::left << std::setw(17) << key << value << "\n";
+}
+
+}  // namespace mrolr::apps

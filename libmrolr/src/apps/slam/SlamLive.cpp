@@ -1,0 +1,163 @@
+// mrolr-slam --live: drive the world's waypoints with a simulated stereo head and vision-driven
+// EKF-SLAM (thesis 5.6.3, 7.2(a)-(c)).
+#include <mrolr/apps/SlamApp.h>
+#include <mrolr/geometry/IdealHead.h>
+#include <mrolr/util/Config.h>
+#include <mrolr/vision/Fixation.h>
+#include <mrolr/vision/SyntheticWorld.h>
+#include <mrolr/world/World.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace mrolr::apps
+{
+namespace
+{
+mrpt::config::CConfigFile openConfig(const std::string& path)
+{
+	if (!std::ifstream(path).good())
+		throw util::ConfigError(path + ": cannot open the configuration file");
+	return mrpt::config::CConfigFile(path);
+}
+
+/** Everything a live run needs, read from the config files. */
+struct LiveSetup
+{
+	SlamRunOptions run;
+	vision::VisionOptions vision;
+	slam::SlamOptions slam;
+	base::LabmateOptions labmate;
+	base::TrajectoryOptions trajectory;
+	geometry::BiSightOptions bisight;
+};
+
+LiveSetup loadSetup(const std::string& config_path)
+{
+	LiveSetup s;
+	const auto cfg = openConfig(config_path);
+	s.run.loadFromConfigFile(cfg, "slam_run");
+	s.vision.loadFromConfigFile(cfg, "vision");
+	s.slam.loadFromConfigFile(cfg, "slam");
+	const auto dir = std::filesystem::path(config_path).parent_path();
+	const auto bisight = openConfig((dir / s.run.bisight_config_file).string());
+	s.bisight.loadFromConfigFile(bisight, "bisight");
+	s.slam.head.loadFromConfigFile(bisight, "bisight");
+	const auto labmate = openConfig((dir / s.run.labmate_config_file).string());
+	s.labmate.loadFromConfigFile(labmate, "labmate");
+	s.trajectory.loadFromConfigFile(labmate, "trajectory");
+	return s;
+}
+
+std::vector<vision::TexturedLandmark> texturedLandmarks(const world::World& w, int texture_px)
+{
+	std::vector<vision::TexturedLandmark> out;
+	for (size_t i = 0; i < w.landmarks.size(); ++i)
+		out.push_back({w.landmarks[i].name, w.landmarks[i].p_LinW,
+		               vision::makeTexture(texture_px, 1000 + i)});
+	return out;
+}
+
+/** The true wheels: noisy, and the left wheel slips during bursts. */
+class TrueWheels
+{
+ public:
+	explicit TrueWheels(const SlamRunOptions& o) : o_(o), rng_(o.seed) {}
+	base::WheelControl perturb(const base::PlannedStep& step)
+	{
+		base::WheelControl u = step.u;
+		std::normal_distribution<double> n01;
+		u.v1_mps *= 1 + o_.true_velocity_noise_fraction * n01(rng_);
+		u.v2_mps *= 1 + o_.true_velocity_noise_fraction * n01(rng_);
+		if (step.kind != base::PlannedStep::Kind::Translate) return u;
+		if (burst_left_ == 0 &&
+		    std::uniform_real_distribution<double>()(rng_) < o_.slip_burst_probability)
+			burst_left_ = o_.slip_burst_length_steps;
+		if (burst_left_ > 0) --burst_left_, u.v2_mps *= 1 - o_.slip_fraction;
+		return u;
+	}
+
+ private:
+	SlamRunOptions o_;
+	std::mt19937 rng_;
+	int burst_left_ = 0;
+};
+
+/** Acquires a known landmark the way the thesis did (5.6.2): fixate it from the start pose, lock
+ * on, and store its patch. Throws when lock-on fails, since the map would lack its anchor. */
+cv::Mat acquireKnownPatch(vision::SyntheticWorld& device, const geometry::BiSightHead& head,
+                          const Eigen::Vector3d& p_inC0, const vision::VisionOptions& o,
+                          const std::string& name)
+{
+	device.moveTo(head.fixate(p_inC0));
+	const auto& cam = head.camera();
+	const cv::Mat patch =
+	    vision::extractPatch(device.grab().left, {cam.u0_px, cam.v0_px}, o.patch_size_px);
+	const vision::FixationResult r = vision::fixateOnPatch(device, head, patch, p_inC0, o);
+	if (!r.locked) throw std::runtime_error("known feature '" + name + "': " + r.failure);
+	return patch;
+}
+}  // namespace
+
+void SlamApp::runLive()
+{
+	const LiveSetup s = loadSetup(config_path);
+	const world::World w = world::World::load(world_path);
+	if (w.waypoints.size() < 2)
+		throw std::runtime_error(world_path + ": the route needs at least 2 waypoints");
+	const geometry::BiSightHead head(s.bisight);
+	const base::LabmateModel model(s.labmate);
+	vision::SyntheticWorld device(head, texturedLandmarks(w, s.run.texture_size_px),
+	                              s.run.image_noise_grey, s.run.seed);
+	const Eigen::Vector3d x0(w.waypoints[0].z_m, w.waypoints[0].x_m, w.waypoints[0].phi_rad);
+	slam::ActiveSlamFilter filter(s.slam, model);
+	filter.reset(x0);
+	device.setVehicle(x0);
+	vision::VisualSlam vslam(filter, head, s.vision);
+	for (const auto& l : w.landmarks)
+		if (l.known)
+			vslam.addKnownFeature(
+			    l.name, l.p_LinW,
+			    acquireKnownPatch(device, head,
+			                      slam::pointInHead(x0, l.p_LinW, s.slam.head.constants), s.vision,
+			                      l.name));
+	TrueWheels wheels(s.run);
+	Eigen::Vector3d x_true = x0, x_dr = x0;
+	auto log = [&](vision::CycleRecord rec)
+	{
+		steps.push_back({x_true, filter.vehicle(), x_dr, filter.vehicleCovariance().diagonal(),
+		                 std::move(rec)});
+	};
+	log(vslam.step({}, device));
+	for (size_t k = 1; k < w.waypoints.size(); ++k)
+	{
+		const auto& wp = w.waypoints[k];
+		for (const auto& step :
+		     base::planLeg(filter.vehicle(), {wp.z_m, wp.x_m, wp.phi_rad}, model, s.trajectory))
+		{
+			x_true = model.move(x_true, wheels.perturb(step));
+			x_dr = model.move(x_dr, step.u);
+			device.setVehicle(x_true);
+			log(vslam.step(step.u, device));
+		}
+	}
+	summary.features_added = vslam.featuresAdded();
+	summary.features_deleted = vslam.featuresDeleted();
+	summary.features = static_cast<int>(filter.numFeatures());
+	map_lines.clear();
+	for (size_t i = 0; i < filter.numFeatures(); ++i)
+	{
+		const Eigen::Vector3d p = filter.feature(i);
+		const Eigen::Vector3d sd = filter.featureCovariance(i).diagonal().cwiseSqrt();
+		std::ostringstream line;
+		line << filter.info(i).label << "," << filter.info(i).known << "," << p.x() << "," << p.y()
+		     << "," << p.z() << "," << sd.x() << "," << sd.y() << "," << sd.z();
+		map_lines.push_back(line.str());
+	}
+}
+
+}  // namespace mrolr::apps

@@ -1,0 +1,168 @@
+#include <mrolr/geometry/IdealHead.h>
+#include <mrolr/slam/FeatureSelection.h>
+#include <mrolr/slam/FeatureVisibility.h>
+#include <mrolr/vision/Fixation.h>
+#include <mrolr/vision/VisualSlam.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace mrolr::vision
+{
+namespace
+{
+/** Milliseconds since @p t0, and resets t0 to now. */
+double lap(std::chrono::steady_clock::time_point& t0)
+{
+	const auto now = std::chrono::steady_clock::now();
+	const double ms = std::chrono::duration<double, std::milli>(now - t0).count();
+	t0 = now;
+	return ms;
+}
+
+constexpr double kDuplicateDistance_m = 0.2;  ///< a new feature this close to a mapped one is it
+}  // namespace
+
+CycleTimes& CycleTimes::operator+=(const CycleTimes& o)
+{
+	predict_ms += o.predict_ms, manage_ms += o.manage_ms, select_ms += o.select_ms;
+	search_ms += o.search_ms, grab_ms += o.grab_ms, match_ms += o.match_ms;
+	update_ms += o.update_ms;
+	return *this;
+}
+
+VisualSlam::VisualSlam(slam::ActiveSlamFilter& filter, const geometry::BiSightHead& head,
+                       const VisionOptions& options)
+    : filter_(filter), head_(head), options_(options)
+{
+}
+
+void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
+                                 const cv::Mat& patch)
+{
+	filter_.addKnownFeature(label, p_FinW);
+	patches_.push_back(patch.clone());
+}
+
+CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& device)
+{
+	CycleRecord r;
+	auto t0 = std::chrono::steady_clock::now();
+	if (u.dt_s > 0) filter_.predict(u);
+	r.times.predict_ms = lap(t0);
+	if (static_cast<int>(visibleFeatures().size()) < filter_.options().min_visible_features)
+		acquireFeatures(device, r);
+	r.times.manage_ms = lap(t0);
+	selectFeature(r);
+	r.times.select_ms = lap(t0);
+	if (r.measured) measureSelected(device, r);
+	deleteFailed(r);
+	return r;
+}
+
+std::vector<size_t> VisualSlam::visibleFeatures()
+{
+	std::vector<size_t> out;
+	const Eigen::Vector3d x_v = filter_.vehicle();
+	for (size_t i = 0; i < filter_.numFeatures(); ++i)
+		if (slam::assessVisibility(x_v, filter_.feature(i), filter_.info(i).p_C0atInitInW,
+		                           filter_.options()) == slam::Visibility::Visible)
+			out.push_back(i);
+	return out;
+}
+
+bool VisualSlam::isDuplicate(const Eigen::Vector3d& p_FinW)
+{
+	for (size_t j = 0; j < filter_.numFeatures(); ++j)
+		if ((filter_.feature(j) - p_FinW).norm() < kDuplicateDistance_m) return true;
+	return false;
+}
+
+void VisualSlam::acquireFeatures(StereoHeadDevice& device, CycleRecord& r)
+{
+	const double pan = options_.acquire_pan_deg * M_PI / 180;
+	const double tilt = options_.acquire_tilt_deg * M_PI / 180;
+	const auto& cam = head_.camera();
+	const int side = options_.acquire_box_px;
+	const cv::Rect box(int(cam.u0_px) - side / 2, int(cam.v0_px) - side / 2, side, side);
+	for (double a : {pan, 0.0, -pan})
+	{
+		device.moveTo({a, tilt, 0, 0});
+		const Acquisition acq = acquireFeature(device, head_, box, options_);
+		if (!acq.ok) continue;
+		const Eigen::Vector3d h =
+		    geometry::idealHeadMeasure(acq.fixation.p_GinC0, head_.options().interocular_m);
+		const auto init =
+		    slam::initialiseFromMeasurement(filter_.vehicle(), h, filter_.options().head.constants);
+		if (isDuplicate(init.p_FinW)) continue;
+		const std::string label = "F" + std::to_string(next_label_++);
+		filter_.initialiseFeature(label, h);
+		patches_.push_back(acq.patch);
+		r.added.push_back(label);
+		++added_;
+		if (static_cast<int>(visibleFeatures().size()) >= filter_.options().min_visible_features)
+			return;
+	}
+}
+
+void VisualSlam::selectFeature(CycleRecord& r)
+{
+	for (size_t i : visibleFeatures())
+	{
+		const double vs = slam::innovationVolume(filter_.innovationCovariance(i),
+		                                         filter_.options().innovation_volume_sigma);
+		if (r.measured && vs <= r.vs) continue;
+		r.measured = true, r.feature = i, r.vs = vs;
+	}
+	if (r.measured) r.label = filter_.info(r.feature).label;
+}
+
+void VisualSlam::measureSelected(StereoHeadDevice& device, CycleRecord& r)
+{
+	auto t0 = std::chrono::steady_clock::now();
+	const Eigen::Vector3d h_pred = filter_.predictedMeasurement(r.feature);
+	const Eigen::Matrix3d S = filter_.innovationCovariance(r.feature);
+	FeatureMeasurement& m = r.measurement;
+	bool ok = false;
+	try
+	{
+		const Eigen::Vector3d p = geometry::idealHeadInverse(h_pred, head_.options().interocular_m);
+		device.moveTo(head_.fixate(p));
+		ok = predictRegions(head_, device.angles(), h_pred, S, options_, m);
+	}
+	catch (const geometry::GeometryError&)
+	{
+	}
+	catch (const std::invalid_argument&)
+	{
+	}
+	r.times.search_ms = lap(t0);
+	if (ok)
+	{
+		const StereoImages images = device.grab();
+		r.times.grab_ms = lap(t0);
+		matchInRegions(images, head_, patches_[r.feature], options_, NssdMethod::OpenCv, m);
+		r.times.match_ms = lap(t0);
+	}
+	if (m.found)
+	{
+		const slam::UpdateReport rep = filter_.update({slam::Observation{r.feature, m.h}});
+		r.accepted = !rep.accepted.empty();
+	}
+	filter_.recordAttempt(r.feature, r.accepted);
+	r.times.update_ms = lap(t0);
+}
+
+void VisualSlam::deleteFailed(CycleRecord& r)
+{
+	for (size_t i = filter_.numFeatures(); i-- > 0;)
+	{
+		if (filter_.info(i).known || !filter_.shouldDelete(i)) continue;
+		r.deleted.push_back(filter_.info(i).label);
+		filter_.deleteFeature(i);
+		patches_.erase(patches_.begin() + static_cast<long>(i));
+		++deleted_;
+	}
+}
+
+}  // namespace mrolr::vision
