@@ -1,0 +1,83 @@
+#pragma once
+/** Device interfaces of the robot (DESIGN.md "hw"): the simulator (area sim) and the serial drivers
+ * implement them, so the mission cannot tell the two apart. Frames and units as in the thesis:
+ * vehicle pose (z, x, φ) in W, head angles in radians, arm joints d1 in mm and q1..q6 in degrees.
+ */
+
+#include <mrolr/base/LabmateModel.h>
+#include <mrolr/geometry/BiSightHead.h>
+
+#include <mrpt/img/CImage.h>
+
+#include <array>
+
+namespace mrolr::hw
+{
+/** Odometry of the base: the pose integrated from the wheel encoders, and the raw encoder counts.
+ */
+struct Odometry
+{
+	Eigen::Vector3d xv_zxphi = Eigen::Vector3d::Zero();  ///< dead-reckoned (z, x, φ) in W
+	long ticks_right = 0;                                ///< encoder of wheel 1 (v1)
+	long ticks_left = 0;                                 ///< encoder of wheel 2 (v2)
+	double time_s = 0;
+};
+
+/** The Labmate base (thesis 4.2.6): wheel-velocity steps and encoder odometry. */
+class BaseDevice
+{
+ public:
+	virtual ~BaseDevice() = default;
+	/** Executes one control step (blocking for u.dt_s of robot time). */
+	virtual void step(const base::WheelControl& u) = 0;
+	virtual Odometry odometry() const = 0;
+};
+
+/** A stereo pair from the head's cameras, with the joint angles it was taken at. */
+struct StereoImages
+{
+	mrpt::img::CImage left, right;
+	geometry::HeadAngles angles;
+	double time_s = 0;
+};
+
+/** The BiSight head (thesis 4.2.2): joint moves with speed limits and settling, stereo grabs. */
+class HeadDevice
+{
+ public:
+	virtual ~HeadDevice() = default;
+	/** Moves to @p target (throws geometry::FixationError beyond a joint limit); returns the time
+	 * in seconds until the joints have settled. */
+	virtual double moveTo(const geometry::HeadAngles& target) = 0;
+	virtual geometry::HeadAngles angles() const = 0;
+	virtual StereoImages grab() = 0;
+};
+
+/** The model-building turntable (thesis 6.1, B.2.1) before fixed calibrated cameras. */
+class TurntableDevice
+{
+ public:
+	virtual ~TurntableDevice() = default;
+	/** Rotates by @p step_deg (positive counter-clockwise seen from above, about the table axis).
+	 */
+	virtual void rotateBy(double step_deg) = 0;
+	virtual double angleDeg() const = 0;
+	virtual StereoImages grab() = 0;
+};
+
+/** Joint vector of the UMI RTX arm: d1 (mm, the vertical column), q1..q6 (degrees). */
+using ArmJoints = std::array<double, 7>;
+
+/** The UMI RTX arm (thesis 6.7): joint moves within the workspace limits and the gripper. */
+class ArmDevice
+{
+ public:
+	virtual ~ArmDevice() = default;
+	/** Moves to @p joints; throws std::out_of_range naming the joint if a limit is exceeded. */
+	virtual void moveTo(const ArmJoints& joints) = 0;
+	virtual ArmJoints joints() const = 0;
+	virtual void setGripper(bool closed) = 0;
+	virtual bool gripperClosed() const = 0;
+};
+
+}  // namespace mrolr::hw

@@ -1,0 +1,82 @@
+#include <mrolr/sim/SimBase.h>
+#include <mrolr/util/Config.h>
+
+#include <cmath>
+#include <ostream>
+
+namespace mrolr::sim
+{
+void SimBaseOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                        const std::string& section)
+{
+	using namespace util;
+	ticks_per_m = readDouble(cfg, section, "ticks_per_m", ticks_per_m);
+	slip_probability = readDouble(cfg, section, "slip_probability", slip_probability);
+	slip_burst_steps = int(readInt(cfg, section, "slip_burst_steps", slip_burst_steps));
+	slip_fraction = readDouble(cfg, section, "slip_fraction", slip_fraction);
+	seed = unsigned(readInt(cfg, section, "seed", long(seed)));
+	requireInRange(cfg, section, "ticks_per_m", ticks_per_m, 1, 1e7);
+	requireInRange(cfg, section, "slip_probability", slip_probability, 0, 1);
+	requireInRange(cfg, section, "slip_burst_steps", slip_burst_steps, 1, 1000);
+	requireInRange(cfg, section, "slip_fraction", slip_fraction, 0, 1);
+}
+
+void SimBaseOptions::dump(std::ostream& out) const
+{
+	out << "ticks_per_m = " << ticks_per_m << "\nslip_probability = " << slip_probability
+	    << "\nslip_burst_steps = " << slip_burst_steps << "\nslip_fraction = " << slip_fraction
+	    << "\nseed = " << seed << "\n";
+}
+
+SimBase::SimBase(const base::LabmateModel& model, const SimBaseOptions& options,
+                 const Eigen::Vector3d& start_zxphi)
+    : model_(model), options_(options), rng_(options.seed), true_(start_zxphi)
+{
+	odo_.xv_zxphi = start_zxphi;
+}
+
+base::WheelControl SimBase::trueControl(const base::WheelControl& u)
+{
+	std::normal_distribution<double> n(0, 1);
+	const Eigen::Matrix2d U = model_.controlCovariance(u);
+	base::WheelControl t = u;
+	t.v1_mps += std::sqrt(U(0, 0)) * n(rng_);
+	t.v2_mps += std::sqrt(U(1, 1)) * n(rng_);
+	if (slip_left_ == 0 &&
+	    std::uniform_real_distribution<double>(0, 1)(rng_) < options_.slip_probability)
+		slip_left_ = options_.slip_burst_steps;
+	if (slip_left_ > 0)
+	{
+		t.v2_mps *= 1 - options_.slip_fraction;  // the left wheel spins without gripping
+		--slip_left_;
+		++slip_steps_total_;
+	}
+	return t;
+}
+
+long SimBase::countTicks(double travel_m, double& residual)
+{
+	const double exact = travel_m * options_.ticks_per_m + residual;
+	const long ticks = std::lround(exact);
+	residual = exact - double(ticks);
+	return ticks;
+}
+
+void SimBase::step(const base::WheelControl& u)
+{
+	true_ = model_.move(true_, trueControl(u));
+	// the encoders count the commanded wheel turns (slip and ground noise are invisible to them)
+	const long dr = countTicks(u.v1_mps * u.dt_s, residual_right_);
+	const long dl = countTicks(u.v2_mps * u.dt_s, residual_left_);
+	odo_.ticks_right += dr;
+	odo_.ticks_left += dl;
+	if (u.dt_s > 0)
+	{
+		const base::WheelControl measured{double(dr) / options_.ticks_per_m / u.dt_s,
+		                                  double(dl) / options_.ticks_per_m / u.dt_s, u.dt_s};
+		odo_.xv_zxphi = model_.move(odo_.xv_zxphi, measured);
+	}
+	odo_.time_s += u.dt_s;
+}
+
+}  // namespace mrolr::sim
