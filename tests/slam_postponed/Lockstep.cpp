@@ -1,8 +1,6 @@
 #include "Lockstep.h"
 
-#include "HeadMeasurement.h"
-
-#include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/slam/HeadMeasurement.h>
 
 #include <algorithm>
 
@@ -10,10 +8,19 @@ namespace mrolr::slam::test
 {
 namespace
 {
-Eigen::Vector3d wrapped(Eigen::Vector3d v)
+Eigen::Matrix<double, 3, 6> jacobian(const Eigen::Vector3d& xv, const Eigen::Vector3d& y,
+                                     const HeadConstants& head)
 {
-	for (int k = 0; k < 3; ++k) v[k] = base::wrapAngle(v[k]);
-	return v;
+	const MeasurementJacobians J = measurementJacobians(xv, y, head);
+	Eigen::Matrix<double, 3, 6> H;
+	H << J.H_xv, J.H_y;
+	return H;
+}
+
+Eigen::Vector3d innovation(const Eigen::Vector3d& z, const Eigen::Vector3d& xv,
+                           const Eigen::Vector3d& y, const HeadConstants& head)
+{
+	return measurementDifference(z, predictMeasurement(xv, y, head));
 }
 
 Eigen::VectorXd one(double v)
@@ -87,29 +94,29 @@ void Lockstep::predict(const base::WheelControl& u)
 
 void Lockstep::updateBatch(const Eigen::Vector3d& z)
 {
-	const double I = scenario_.interocular();
+	const HeadConstants& head = scenario_.head();
 	const Eigen::Matrix3d& R = scenario_.measurementNoise();
 	Eigen::Vector3d xv = ref_.vehicle(), y = ref_.feature(feature_);
-	ref_.update(feature_, wrapped(z - headMeasure(xv, y, I)), headJacobian(xv, y, I), R);
+	ref_.update(feature_, innovation(z, xv, y, head), jacobian(xv, y, head), R);
 	xv = tracker_.vehicle();
 	y = tracker_.feature();
-	tracker_.update<3>(wrapped(z - headMeasure(xv, y, I)), headJacobian(xv, y, I), R);
+	tracker_.update<3>(innovation(z, xv, y, head), jacobian(xv, y, head), R);
 }
 
 void Lockstep::updateScalar(const Eigen::Vector3d& z)
 {
 	// Each component is linearised at the estimate left by the previous one.
-	const double I = scenario_.interocular();
+	const HeadConstants& head = scenario_.head();
 	const Eigen::Matrix3d& R = scenario_.measurementNoise();
 	for (int k = 0; k < 3; ++k)
 	{
 		Eigen::Vector3d xv = ref_.vehicle(), y = ref_.feature(feature_);
-		double nu = base::wrapAngle(z[k] - headMeasure(xv, y, I)[k]);
-		ref_.update(feature_, one(nu), headJacobian(xv, y, I).row(k), one(R(k, k)).asDiagonal());
+		double nu = innovation(z, xv, y, head)[k];
+		ref_.update(feature_, one(nu), jacobian(xv, y, head).row(k), one(R(k, k)).asDiagonal());
 		xv = tracker_.vehicle();
 		y = tracker_.feature();
-		nu = base::wrapAngle(z[k] - headMeasure(xv, y, I)[k]);
-		tracker_.updateScalar(nu, headJacobian(xv, y, I).row(k), R(k, k));
+		nu = innovation(z, xv, y, head)[k];
+		tracker_.updateScalar(nu, jacobian(xv, y, head).row(k), R(k, k));
 	}
 }
 

@@ -1,7 +1,5 @@
 #include "RandomScenario.h"
 
-#include "HeadMeasurement.h"
-
 #include <cmath>
 
 namespace mrolr::slam::test
@@ -12,7 +10,7 @@ RandomScenario::RandomScenario(const ScenarioOptions& options)
 	// Thesis sample-run noise, rad² (issue 3, eq 5.41).
 	R_ = Eigen::Vector3d(4e-6, 1e-4, 4e-6).asDiagonal();
 	const int N = options.features, n = 3 + 3 * N;
-	std::uniform_real_distribution<double> bearing(-M_PI, M_PI), range(2.0, 6.0), height(0.3, 1.5);
+	std::uniform_real_distribution<double> bearing(-M_PI, M_PI), range(2.0, 6.0), height(1.5, 3.0);
 	x0_ = Eigen::VectorXd::Zero(n);
 	for (int i = 0; i < N; ++i)
 	{
@@ -41,7 +39,7 @@ base::WheelControl RandomScenario::nextControl()
 Eigen::Vector3d RandomScenario::measure(int i)
 {
 	Eigen::Vector3d z =
-	    headMeasure(truth_.head<3>(), truth_.segment<3>(3 + 3 * i), options_.interocular_m);
+	    predictMeasurement(truth_.head<3>(), truth_.segment<3>(3 + 3 * i), options_.head);
 	for (int k = 0; k < 3; ++k) z[k] += normal(std::sqrt(R_(k, k)));
 	return z;
 }

@@ -4,6 +4,7 @@
 // Labmate model (with control noise) and noisy ideal-head measurements of the true features.
 
 #include <mrolr/base/LabmateModel.h>
+#include <mrolr/slam/HeadMeasurement.h>
 
 #include <Eigen/Core>
 
@@ -16,7 +17,7 @@ struct ScenarioOptions
 	int features = 10;  ///< N
 	unsigned seed = 1;
 	int max_track_steps = 8;  ///< a feature is tracked for 1 … this many steps, then switched
-	double interocular_m = 0.25;
+	HeadConstants head;       ///< interocular separation and head height (thesis eqs 5.35, 5.40)
 };
 
 class RandomScenario
@@ -28,7 +29,7 @@ class RandomScenario
 	const Eigen::MatrixXd& initialCovariance() const { return P0_; }
 	const base::LabmateModel& model() const { return model_; }
 	const Eigen::Matrix3d& measurementNoise() const { return R_; }
-	double interocular() const { return options_.interocular_m; }
+	const HeadConstants& head() const { return options_.head; }
 
 	/** A random control; the true vehicle moves by it with control noise. */
 	base::WheelControl nextControl();
