@@ -24,6 +24,8 @@ TEST(SceneModel, CardsAndDiscAtOneMetreAreRecovered)
 	EXPECT_GE(q.recovered_fraction, 0.6);
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 	EXPECT_LE(q.false_features, 1);
+	EXPECT_EQ(q.conics_compared, 1);  // the disc's rim as one conic, not two half arcs
+	EXPECT_LT(q.median_conic_radius_error_mm, 1.0);
 }
 
 // A box on a table seen from 0.75 m, looking down 28°: edges along the scanlines are placed from

@@ -58,7 +58,7 @@ struct FitOptions
 	int min_line_edgels = 10;
 	int min_conic_edgels = 16;
 	double max_rms_mm = 4;  ///< 3D fits worse than this are dropped
-	int max_gap_edgels = 4;  ///< unmatched edgels tolerated inside a 3D string
+	int max_gap_edgels = 40;  ///< unmatched edgels bridged inside a 3D string (edge parts along the scanlines)
 	double max_disparity_jump_px = 1.5;  ///< between consecutive edgels of a 3D string
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
