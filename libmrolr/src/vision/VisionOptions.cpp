@@ -71,7 +71,9 @@ void VisionOptions::dump(std::ostream& out) const
 	    << "\nlockon_radius_px = " << lockon_radius_px
 	    << "\nfixation_max_attempts = " << fixation_max_attempts
 	    << "\nfixation_search_radius_px = " << fixation_search_radius_px
-	    << "\npixel_sigma_px = " << pixel_sigma_px << "\n";
+	    << "\npixel_sigma_px = " << pixel_sigma_px << "\nacquire_pan_deg = " << acquire_pan_deg
+	    << "\nacquire_tilt_deg = " << acquire_tilt_deg << "\nacquire_box_px = " << acquire_box_px
+	    << "\n";
 }
 
 }  // namespace mrolr::vision

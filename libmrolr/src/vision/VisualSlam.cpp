@@ -4,6 +4,7 @@
 #include <mrolr/vision/Fixation.h>
 #include <mrolr/vision/VisualSlam.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -57,6 +58,18 @@ CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& devi
 	r.times.select_ms = lap(t0);
 	if (r.measured) measureSelected(device, r);
 	deleteFailed(r);
+	return r;
+}
+
+CycleRecord VisualSlam::measureFeature(size_t i, StereoHeadDevice& device)
+{
+	CycleRecord r;
+	const auto visible = visibleFeatures();
+	if (std::find(visible.begin(), visible.end(), i) == visible.end()) return r;
+	r.measured = true, r.feature = i, r.label = filter_.info(i).label;
+	r.vs = slam::innovationVolume(filter_.innovationCovariance(i),
+	                              filter_.options().innovation_volume_sigma);
+	measureSelected(device, r);
 	return r;
 }
 

@@ -63,12 +63,17 @@ class VisualSlam
 	/** One cycle after the base moved by @p u (dt_s = 0: no motion, measure only). */
 	CycleRecord step(const base::WheelControl& u, StereoHeadDevice& device);
 
+	/** Measures feature @p i now, without motion or selection (e.g. re-finding a known feature when
+	 * the robot is back home, 5.6.2). Returns found = false if it is not visible. */
+	CycleRecord measureFeature(size_t i, StereoHeadDevice& device);
+	/** Indices of the features the head could measure from the current estimate (5.2.1, 5.7). */
+	std::vector<size_t> visibleFeatures();
+
 	const std::vector<cv::Mat>& patches() const { return patches_; }
 	int featuresAdded() const { return added_; }
 	int featuresDeleted() const { return deleted_; }
 
  private:
-	std::vector<size_t> visibleFeatures();
 	void acquireFeatures(StereoHeadDevice& device, CycleRecord& r);
 	bool isDuplicate(const Eigen::Vector3d& p_FinW);
 	void selectFeature(CycleRecord& r);

@@ -18,6 +18,8 @@ namespace mrolr::apps
 {
 namespace
 {
+constexpr int kHomeMeasurements = 3;  ///< measurements of each known feature at the end
+
 mrpt::config::CConfigFile openConfig(const std::string& path)
 {
 	if (!std::ifstream(path).good())
@@ -145,6 +147,10 @@ void SlamApp::runLive()
 			log(vslam.step(step.u, device));
 		}
 	}
+	// Back home: re-find the known features (5.6.2), which removes the drift of the route.
+	for (size_t i = 0; i < filter.numFeatures(); ++i)
+		if (filter.info(i).known)
+			for (int k = 0; k < kHomeMeasurements; ++k) log(vslam.measureFeature(i, device));
 	summary.features_added = vslam.featuresAdded();
 	summary.features_deleted = vslam.featuresDeleted();
 	summary.features = static_cast<int>(filter.numFeatures());

@@ -1,0 +1,69 @@
+// mrolr-slam --live on maps/lab with wheel slip (issue 5): the final pose is within 5 cm of the
+// truth and at least 3 times closer than dead reckoning; the known feature is re-found at home.
+#include <mrolr/apps/SlamApp.h>
+#include <mrolr/util/Cli.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using mrolr::apps::SlamApp;
+
+namespace
+{
+const std::string kRoot = MROLR_SOURCE_DIR;
+
+SlamApp runApp(const std::vector<std::string>& extra)
+{
+	std::vector<std::string> args{"mrolr-slam", "--world", kRoot + "/maps/lab/world.ini", "--live"};
+	args.insert(args.end(), extra.begin(), extra.end());
+	SlamApp app;
+	app.initialize(args);
+	std::ostringstream out;
+	EXPECT_EQ(app.run(out), 0);
+	return app;
+}
+}  // namespace
+
+TEST(SlamApp, LiveOnTheLabBeatsDeadReckoningAndEndsWithinFiveCentimetres)
+{
+	const auto out = std::filesystem::temp_directory_path() / "mrolr_slam_app_test";
+	const SlamApp app = runApp({"--out", out.string()});
+	const auto& s = app.summary;
+	EXPECT_LE(s.slam_final_position_error_m, 0.05);
+	EXPECT_GE(s.dr_final_position_error_m, 3 * s.slam_final_position_error_m);
+	EXPECT_GT(s.dr_final_position_error_m, 0.2);  // the slip really happened
+	EXPECT_GE(s.features, 4);
+	EXPECT_GT(s.measurements, 50);
+	EXPECT_GT(s.match_success_rate, 0.8);
+	for (const char* f : {"trajectory.csv", "map.csv", "decisions.csv", "paths.png"})
+		EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+	std::ifstream traj(out / "trajectory.csv");
+	const auto lines = std::count(std::istreambuf_iterator<char>(traj), {}, '\n');
+	EXPECT_EQ(static_cast<size_t>(lines), app.steps.size() + 1);
+}
+
+TEST(SlamApp, KnownFeatureIsReFoundAtHome)
+{
+	const SlamApp app = runApp({});
+	ASSERT_GE(app.steps.size(), 3u);
+	const auto& last = app.steps.back().record;
+	EXPECT_EQ(last.label, "fire_sign");
+	EXPECT_TRUE(last.measurement.found);
+	EXPECT_TRUE(last.accepted);
+	EXPECT_LT(last.measurement.left.score, 0.9);
+}
+
+TEST(SlamApp, BadArgumentsAreUsageErrors)
+{
+	SlamApp app;
+	EXPECT_THROW(app.initialize({"mrolr-slam", "--world", "x.ini"}), mrolr::util::UsageError);
+	EXPECT_THROW(app.initialize({"mrolr-slam", "--live"}), mrolr::util::UsageError);
+	EXPECT_THROW(app.initialize({"mrolr-slam", "--bogus"}), mrolr::util::UsageError);
+	SlamApp missing;
+	missing.initialize({"mrolr-slam", "--world", "/nonexistent/world.ini", "--live"});
+	std::ostringstream out;
+	EXPECT_ANY_THROW(missing.run(out));
+}
