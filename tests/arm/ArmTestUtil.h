@@ -4,10 +4,15 @@
 #include <mrolr/arm/MotorCounts.h>
 #include <mrolr/arm/RtxOptions.h>
 
+#include <mrpt/config/CConfigFile.h>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <random>
+#include <sstream>
+#include <string>
+#include <utility>
 
 namespace mrolr::arm::test
 {
@@ -31,6 +36,19 @@ inline RtxJoints randomReachableJoints(std::mt19937& rng, const RtxOptions& o = 
 		const double r2 = o.a2_mm * o.a2_mm + o.a3_mm * o.a3_mm + 2 * o.a2_mm * o.a3_mm * c3;
 		if (std::sqrt(r2) <= o.wrist_radius_max_mm) return j;
 	}
+}
+
+/** The dump() of options @p O loaded from @p section of config/arm_rtx.ini, and of its defaults. */
+template <class O>
+std::pair<std::string, std::string> shippedAndDefaultDump(const std::string& section)
+{
+	O loaded;
+	loaded.loadFromConfigFile(mrpt::config::CConfigFile(MROLR_SOURCE_DIR "/config/arm_rtx.ini"),
+	                          section);
+	std::ostringstream a, b;
+	loaded.dump(a);
+	O().dump(b);
+	return {a.str(), b.str()};
 }
 
 inline double positionError(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)

@@ -77,13 +77,9 @@ TEST(ArmCounts, ConfigFileEqualsDefaultsAndDumpReadsBack)
 	std::ostringstream c;
 	again.dump(c);
 	EXPECT_EQ(c.str(), a.str());
-	JacobianIkOptions jo;
-	jo.loadFromConfigFile(mrpt::config::CConfigFile(MROLR_SOURCE_DIR "/config/arm_rtx.ini"),
-	                      "rtx_jacobian_ik");
-	std::ostringstream d, e;
-	jo.dump(d);
-	JacobianIkOptions().dump(e);
-	EXPECT_EQ(d.str(), e.str());
+	const auto [shipped, defaults] =
+	    test::shippedAndDefaultDump<JacobianIkOptions>("rtx_jacobian_ik");
+	EXPECT_EQ(shipped, defaults);
 }
 
 TEST(ArmCounts, BadConfigNamesSectionAndKey)

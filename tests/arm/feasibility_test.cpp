@@ -115,11 +115,7 @@ TEST(ArmGraspFeasibility, EachFailedCheckIsNamed)
 
 TEST(ArmGraspFeasibility, OptionsFileEqualsDefaults)
 {
-	GraspFeasibilityOptions o;
-	o.loadFromConfigFile(mrpt::config::CConfigFile(MROLR_SOURCE_DIR "/config/arm_rtx.ini"),
-	                     "arm_grasp");
-	std::ostringstream a, b;
-	o.dump(a);
-	GraspFeasibilityOptions().dump(b);
-	EXPECT_EQ(a.str(), b.str());
+	const auto [shipped, defaults] =
+	    test::shippedAndDefaultDump<GraspFeasibilityOptions>("arm_grasp");
+	EXPECT_EQ(shipped, defaults);
 }

@@ -4,11 +4,10 @@
 #include <mrolr/arm/PoseText.h>
 #include <mrolr/util/Config.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include "IniFile.h"
 
 #include <Eigen/SVD>
 
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
@@ -32,12 +31,7 @@ void ArmMount::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 ArmMount ArmMount::fromFile(const std::string& path, const std::string& section)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the arm mounting file");
-	mrpt::config::CConfigFile cfg(path);
-	ArmMount m;
-	m.loadFromConfigFile(cfg, section);
-	return m;
+	return detail::loadSection<ArmMount>(path, section, "arm mounting file");
 }
 
 void ArmMount::dump(std::ostream& out) const

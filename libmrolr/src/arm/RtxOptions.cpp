@@ -1,9 +1,8 @@
 #include <mrolr/arm/RtxOptions.h>
 #include <mrolr/util/Config.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include "IniFile.h"
 
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -57,12 +56,7 @@ void RtxOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 RtxOptions RtxOptions::fromFile(const std::string& path, const std::string& section)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the configuration file");
-	mrpt::config::CConfigFile cfg(path);
-	RtxOptions o;
-	o.loadFromConfigFile(cfg, section);
-	return o;
+	return detail::loadSection<RtxOptions>(path, section, "configuration file");
 }
 
 void RtxOptions::dump(std::ostream& out) const
