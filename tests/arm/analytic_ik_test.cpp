@@ -121,17 +121,16 @@ TEST(ArmAnalyticIk, ShoulderLimitIsNamedForATargetBehindTheArm)
 	EXPECT_THAT(r.reason(), HasSubstr("shoulder count"));
 }
 
-TEST(ArmAnalyticIk, WristYawLimitIsNamed)
+TEST(ArmAnalyticIk, WristYawAndWristMotorLimitsAreNamed)
 {
-	// Arm along +x but gripper heading back towards the column: yaw relative to forearm ≈ 180°.
+	// Wrist 400 mm out along x, gripper heading back at the column: the normal wrist needs a yaw of
+	// ±142° (beyond ±110°), the flipped wrist a wrist-motor turn beyond ±180°.
 	const GripperPose g{{400 - 177, 0, 500}, 180, 0, 0};
 	const IkResult r = AnalyticIk().solve(poseFromGripper(g));
-	for (const auto& s : r.solutions)  // any solution found must respect the ±110° yaw
-		EXPECT_LE(std::abs(s.counts[static_cast<size_t>(Motor::Yaw)]), 1071 + 1e-9);
-	if (r.solutions.empty())
-	{
-		EXPECT_THAT(r.reason(), HasSubstr("yaw count"));
-	}
+	EXPECT_TRUE(r.solutions.empty());
+	EXPECT_THAT(r.reason(), HasSubstr("elbow left, wrist normal: yaw count -1382.52 outside limit "
+									  "[-1071, 1071]"));
+	EXPECT_THAT(r.reason(), HasSubstr("wrist flipped: wrist"));
 }
 
 TEST(ArmAnalyticIk, NonFinitePoseIsRejected)
