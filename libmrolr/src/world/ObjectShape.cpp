@@ -100,7 +100,7 @@ Marking parseMarking(const IniDocument& doc, const IniSection& s, const std::str
 	m.letter = letter.value[0];
 	m.height_mm = optionalNumbers(doc, s, "height_mm", {30.0})[0];
 	m.stroke_mm = optionalNumbers(doc, s, "stroke_mm", {4.0})[0];
-	m.colour = partColour(doc, s);
+	m.colour = s.find("colour") ? partColour(doc, s) : Eigen::Vector3d(0.05, 0.05, 0.05);
 	return m;
 }
 
