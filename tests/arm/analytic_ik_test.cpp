@@ -129,7 +129,7 @@ TEST(ArmAnalyticIk, WristYawAndWristMotorLimitsAreNamed)
 	const IkResult r = AnalyticIk().solve(poseFromGripper(g));
 	EXPECT_TRUE(r.solutions.empty());
 	EXPECT_THAT(r.reason(), HasSubstr("elbow left, wrist normal: yaw count -1382.52 outside limit "
-									  "[-1071, 1071]"));
+	                                  "[-1071, 1071]"));
 	EXPECT_THAT(r.reason(), HasSubstr("wrist flipped: wrist"));
 }
 

@@ -11,6 +11,7 @@
 #include <kdl/chainjnttojacsolver.hpp>
 
 #include <mrpt/core/bits_math.h>
+#include <mrpt/opengl/CSetOfObjects.h>
 
 #include <cmath>
 
@@ -142,11 +143,14 @@ TEST(ArmKinematics, YawPitchRollConventionIsTheWristOfTheArm)
 	EXPECT_TRUE(rotationFromYawPitchRoll(90, 0, 0).col(2).isApprox(Eigen::Vector3d::UnitY()));
 }
 
-TEST(ArmKinematics, DrawingChainIsScaled)
+TEST(ArmKinematics, DrawingChainIsScaledAndDrawable)
 {
 	const auto chain = RtxKinematics().chain(RtxJoints(), 0.001);
+	mrpt::opengl::CSetOfObjects::Ptr gl = mrpt::opengl::CSetOfObjects::Create();
 	std::vector<mrpt::poses::CPose3D> poses;
-	chain.recomputeAllPoses(poses);
-	EXPECT_NEAR(poses.back().x(), 0.685, 1e-12);
+	chain.getAs3DObject(gl, &poses);
+	EXPECT_GT(gl->size(), 0u);
+	ASSERT_EQ(poses.size(), 7u);
+	EXPECT_NEAR(poses.back().x(), 0.685, 1e-12);  // metres
 	EXPECT_NEAR(poses.back().z(), 0.922, 1e-12);
 }
