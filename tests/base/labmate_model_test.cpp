@@ -97,13 +97,14 @@ TEST(LabmateModel, JacobiansMatchCentralDifferences)
 	{
 		const Eigen::Vector3d x(pos(rng), pos(rng), ang(rng));
 		WheelControl u{vel(rng), vel(rng), dt(rng)};
-		if (k % 3 == 0) u.v2_mps = u.v1_mps + 1e-7;	 // near-straight
+		if (k % 3 == 0) u.v2_mps = u.v1_mps + 1e-7;  // near-straight
 		const auto fx = [&](const Eigen::Vector3d& xv) { return kModel.move(xv, u); };
-		const auto fu = [&](const Eigen::Vector2d& v)
-		{ return kModel.move(x, {v[0], v[1], u.dt_s}); };
+		const auto fu = [&](const Eigen::Vector2d& v) {
+			return kModel.move(x, {v[0], v[1], u.dt_s});
+		};
 		const Eigen::Matrix3d Fn = centralDiff<decltype(fx), 3>(fx, x, 1e-6);
 		const Eigen::Matrix<double, 3, 2> Gn =
-			centralDiff<decltype(fu), 2>(fu, Eigen::Vector2d(u.v1_mps, u.v2_mps), 1e-6);
+		    centralDiff<decltype(fu), 2>(fu, Eigen::Vector2d(u.v1_mps, u.v2_mps), 1e-6);
 		EXPECT_LT((kModel.jacobianState(x, u) - Fn).cwiseAbs().maxCoeff(), 1e-8);
 		EXPECT_LT((kModel.jacobianControl(x, u) - Gn).cwiseAbs().maxCoeff(), 1e-7);
 	}
@@ -111,13 +112,14 @@ TEST(LabmateModel, JacobiansMatchCentralDifferences)
 
 TEST(LabmateModel, ProcessNoiseMatchesMonteCarlo)
 {
-	// Small noise so that first-order propagation is accurate: compare Q with the sample covariance.
+	// Small noise so that first-order propagation is accurate: compare Q with the sample
+	// covariance.
 	LabmateOptions o;
 	o.velocity_noise_fraction = 0.02;
 	const LabmateModel m(o);
 	const Eigen::Vector3d x0(0.5, -0.2, 0.7);
-	for (const WheelControl u : {WheelControl{0.1, 0.1, 2}, WheelControl{0.12, 0.07, 3},
-								  WheelControl{0.05, -0.05, 4}})
+	for (const WheelControl u :
+	     {WheelControl{0.1, 0.1, 2}, WheelControl{0.12, 0.07, 3}, WheelControl{0.05, -0.05, 4}})
 	{
 		std::mt19937 rng(11);
 		std::normal_distribution<double> n(0, 1);
@@ -145,9 +147,9 @@ TEST(LabmateModel, ProcessNoiseMatchesMonteCarlo)
 
 TEST(LabmateModel, ConfigErrorsNameTheKey)
 {
-	mrpt::config::CConfigFileMemory cfg(std::string(
-		"[labmate]\nwheel_half_separation_m = 0.3\nvelocity_noise_fraction = abc\n"
-		"translation_speed_mps = 0.1\nrotation_wheel_speed_mps = 0.05\n"));
+	mrpt::config::CConfigFileMemory cfg(
+	    std::string("[labmate]\nwheel_half_separation_m = 0.3\nvelocity_noise_fraction = abc\n"
+	                "translation_speed_mps = 0.1\nrotation_wheel_speed_mps = 0.05\n"));
 	LabmateOptions o;
 	try
 	{

@@ -33,10 +33,10 @@ TEST(TrajectoryPlanner, StepsSumToTheDistanceAndNeverExceedAFullStep)
 		if (s.size() > 1)
 		{
 			EXPECT_TRUE(s.back() < o.min_step_m || std::abs(s.back() - o.step_length_m) < 1e-12)
-				<< d;
+			    << d;
 		}
 	}
-	EXPECT_EQ(translationSteps(0.4, o).size(), 2u);	 // whole steps are not halved
+	EXPECT_EQ(translationSteps(0.4, o).size(), 2u);  // whole steps are not halved
 }
 
 TEST(TrajectoryPlanner, NoiseFreeLegReachesTheWaypoint)

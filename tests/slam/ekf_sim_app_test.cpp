@@ -32,15 +32,15 @@ TEST(EkfSimApp, JsonOutputsAndRawlog)
 	const std::string dir = tempDir("json");
 	EkfSimApp app;
 	app.initialize({"mrolr-ekf-sim", "--world", kWorld, "--runs", "3", "--seed", "4", "--out", dir,
-					"--rawlog", dir + "/run0.rawlog", "--json"});
+	                "--rawlog", dir + "/run0.rawlog", "--json"});
 	std::ostringstream out;
 	ASSERT_EQ(app.run(out), 0);
 	const auto j = nlohmann::json::parse(out.str());
-	for (const char* key : {"runs", "steps", "nees_bounds", "nees_inside_fraction",
-							"slam_rms_position_m", "slam_final_position_error_m",
-							"slam_rms_heading_deg", "dr_rms_position_m", "dr_final_position_error_m",
-							"mean_landmark_error_m", "mean_nis", "features_added",
-							"features_deleted", "outliers_rejected", "ms_per_step"})
+	for (const char* key :
+	     {"runs", "steps", "nees_bounds", "nees_inside_fraction", "slam_rms_position_m",
+	      "slam_final_position_error_m", "slam_rms_heading_deg", "dr_rms_position_m",
+	      "dr_final_position_error_m", "mean_landmark_error_m", "mean_nis", "features_added",
+	      "features_deleted", "outliers_rejected", "ms_per_step"})
 		EXPECT_TRUE(j.contains(key)) << key;
 	EXPECT_EQ(j["runs"], 3);
 	EXPECT_EQ(j["nees_bounds"].size(), 2u);

@@ -32,10 +32,10 @@ std::vector<RunResult> monteCarlo(const SimulationSetup& s, int runs, uint64_t s
 void print(const MonteCarloSummary& m)
 {
 	std::cout << "runs " << m.runs << " steps " << m.steps << " NEES bounds [" << m.nees_lo << ", "
-			  << m.nees_hi << "] inside " << m.nees_inside_fraction << " mean NIS " << m.mean_nis
-			  << " slam rms " << m.slam_rms_position_m << " final "
-			  << m.slam_final_position_error_m << " dr rms " << m.dr_rms_position_m << " final "
-			  << m.dr_final_position_error_m << " rejected " << m.outliers_rejected << "\n";
+	          << m.nees_hi << "] inside " << m.nees_inside_fraction << " mean NIS " << m.mean_nis
+	          << " slam rms " << m.slam_rms_position_m << " final " << m.slam_final_position_error_m
+	          << " dr rms " << m.dr_rms_position_m << " final " << m.dr_final_position_error_m
+	          << " rejected " << m.outliers_rejected << "\n";
 }
 }  // namespace
 
@@ -54,7 +54,10 @@ TEST(EkfSim, ConsistencyOver50Runs)
 	EXPECT_GE(m.nees_steps, m.steps - 1);
 	for (double v : m.mean_nees)
 	{
-		if (std::isfinite(v)) EXPECT_LT(v, 3 * m.nees_hi);
+		if (std::isfinite(v))
+		{
+			EXPECT_LT(v, 3 * m.nees_hi);
+		}
 	}
 	EXPECT_LT(m.slam_rms_position_m, 0.3 * m.dr_rms_position_m);
 }
@@ -83,7 +86,7 @@ TEST(EkfSim, OutliersAreRejectedByTheGate)
 		rejected += r.measurements_rejected;
 	}
 	std::cout << "outliers injected " << injected << " rejected " << caught << " of " << rejected
-			  << " rejections\n";
+	          << " rejections\n";
 	ASSERT_GT(injected, 50);
 	EXPECT_GT(caught, 0.95 * injected);
 	const auto m = summarise(runs);

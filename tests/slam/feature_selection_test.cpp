@@ -1,6 +1,6 @@
+#include <mrolr/slam/Chi2.h>
 #include <mrolr/slam/FeatureSelection.h>
 #include <mrolr/slam/FeatureVisibility.h>
-#include <mrolr/slam/Chi2.h>
 
 #include "slam_test_util.h"
 
@@ -16,7 +16,8 @@ TEST(FeatureSelection, VolumeIsTheEllipsoidVolume)
 	const Eigen::Matrix3d S = A * A.transpose() + 0.1 * Eigen::Matrix3d::Identity();
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(S);
 	const auto l = e.eigenvalues();
-	const double expected = 4.0 / 3.0 * M_PI * 27 * std::sqrt(l[0]) * std::sqrt(l[1]) * std::sqrt(l[2]);
+	const double expected =
+	    4.0 / 3.0 * M_PI * 27 * std::sqrt(l[0]) * std::sqrt(l[1]) * std::sqrt(l[2]);
 	EXPECT_NEAR(innovationVolume(S, 3), expected, 1e-12 * expected);
 }
 
@@ -40,7 +41,7 @@ TEST(FeatureSelection, SaccadeCostGrowsWithTheHeadMove)
 	o.saccade_overhead_s = 0.5;
 	o.step_time_s = 1;
 	EXPECT_EQ(measurementsLostBySaccade({0, 0, 0.05}, {0, 0, 0.05}, o), 1);
-	EXPECT_EQ(measurementsLostBySaccade({0, 0, 0.05}, {M_PI / 2, 0, 0.05}, o), 4);	// 3 s + 0.5 s
+	EXPECT_EQ(measurementsLostBySaccade({0, 0, 0.05}, {M_PI / 2, 0, 0.05}, o), 4);  // 3 s + 0.5 s
 }
 
 TEST(FeatureSelection, SaccadeDecisionStaysOrSwitches)
@@ -53,14 +54,15 @@ TEST(FeatureSelection, SaccadeDecisionStaysOrSwitches)
 	q.P = Eigen::MatrixXd::Zero(9, 9);
 	q.P.topLeftCorner<3, 3>() = 1e-3 * Eigen::Matrix3d::Identity();
 	q.P.block<3, 3>(3, 3) = 1e-4 * Eigen::Matrix3d::Identity();
-	q.P.block<3, 3>(6, 6) = 0.05 * Eigen::Matrix3d::Identity();	 // feature 1 very uncertain
+	q.P.block<3, 3>(6, 6) = 0.05 * Eigen::Matrix3d::Identity();  // feature 1 very uncertain
 	q.visible = {0, 1};
 	q.current = 0;
-	q.head_angles = predictMeasurement(Eigen::Vector3d::Zero(), q.x.segment<3>(3), o.head.constants);
+	q.head_angles =
+	    predictMeasurement(Eigen::Vector3d::Zero(), q.x.segment<3>(3), o.head.constants);
 	q.upcoming = {mrolr::base::WheelControl{0.1, 0.1, 2}};
 	const auto d = decideSaccade(q, o, model);
 	ASSERT_TRUE(d.feature.has_value());
-	EXPECT_EQ(*d.feature, 1u);	// measuring the uncertain feature lowers Vs(max) most
+	EXPECT_EQ(*d.feature, 1u);  // measuring the uncertain feature lowers Vs(max) most
 	EXPECT_TRUE(d.saccade);
 	EXPECT_EQ(d.vs_max.size(), 2u);
 	// When both features are equally certain the current one is kept (no saccade cost).
@@ -74,9 +76,9 @@ TEST(FeatureVisibility, ViewpointRulesOf521)
 {
 	const SlamOptions o = slamtest::defaultOptions();
 	const Eigen::Vector3d y(0, 1.5, 4);
-	const Eigen::Vector3d c0(0, 1, 0);	// seen first from the origin
+	const Eigen::Vector3d c0(0, 1, 0);  // seen first from the origin
 	EXPECT_EQ(assessVisibility({0, 0, 0}, y, c0, o), Visibility::Visible);
-	EXPECT_EQ(assessVisibility({2.5, 0, 0}, y, c0, o), Visibility::DistanceRatio);	// 1.5 / 4
+	EXPECT_EQ(assessVisibility({2.5, 0, 0}, y, c0, o), Visibility::DistanceRatio);  // 1.5 / 4
 	EXPECT_EQ(assessVisibility({4, 4, -M_PI / 2}, y, c0, o), Visibility::ViewDirection);
 	EXPECT_EQ(assessVisibility({0, 0, M_PI}, y, c0, o), Visibility::BeyondPanLimit);
 	EXPECT_EQ(headCanFixate({0, 0, 0}, {0, 1.0, 0.1}, o.head), Visibility::BeyondVergenceLimit);

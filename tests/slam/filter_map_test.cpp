@@ -36,8 +36,8 @@ TEST(FilterMap, InitialisationFollowsEq548)
 	const Eigen::Matrix3d Pvv = spd(0.01, 0.02, 0.003);
 	EXPECT_LT((f.feature(0) - g.p_FinW).norm(), 1e-12);
 	EXPECT_LT((P.block<3, 3>(3, 0) - g.dy_dxv * Pvv).norm(), 1e-15);
-	const Eigen::Matrix3d Pyy =
-		g.dy_dxv * Pvv * g.dy_dxv.transpose() + g.dy_dh * f.measurementNoise() * g.dy_dh.transpose();
+	const Eigen::Matrix3d Pyy = g.dy_dxv * Pvv * g.dy_dxv.transpose() +
+	                            g.dy_dh * f.measurementNoise() * g.dy_dh.transpose();
 	EXPECT_LT((P.block<3, 3>(3, 3) - Pyy).norm(), 1e-14);
 	// A second feature is correlated with the first through the vehicle.
 	f.initialiseFeature("b", {-0.4, 0.1, 0.04});
@@ -81,9 +81,9 @@ TEST(FilterMap, ZeroingMakesTheVehicleTheOrigin)
 	// Measurements are unchanged by a change of world frame.
 	const auto& head = f.options().head.constants;
 	EXPECT_LT((predictMeasurement(Eigen::Vector3d::Zero(), f.feature(1), head) -
-			   predictMeasurement(xv, y1, head))
-				  .norm(),
-			  1e-12);
+	           predictMeasurement(xv, y1, head))
+	              .norm(),
+	          1e-12);
 	// With the vehicle known exactly, feature covariances just rotate: same eigenvalues.
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> e(f.featureCovariance(1));
 	EXPECT_GT(e.eigenvalues().minCoeff(), 0);
@@ -96,7 +96,8 @@ TEST(FilterMap, KnownFeaturesKeepZeroCovariance)
 	{
 		ActiveSlamFilter f(slamtest::defaultOptions(m), kModel);
 		f.addKnownFeature("k", {0.5, 1.8, 4});
-		f.initialiseFeature("n", predictMeasurement(Eigen::Vector3d::Zero(), {-1, 1.2, 3}, {0.25, 1}));
+		f.initialiseFeature("n",
+		                    predictMeasurement(Eigen::Vector3d::Zero(), {-1, 1.2, 3}, {0.25, 1}));
 		for (int k = 0; k < 10; ++k)
 		{
 			f.predict({0.1, 0.1, 1});
@@ -118,6 +119,6 @@ TEST(FilterMap, DeletionRuleNeedsMoreThanHalfOfTheLastTenFailed)
 	for (int k = 0; k < 5; ++k) f.recordAttempt(0, true);
 	for (int k = 0; k < 5; ++k) f.recordAttempt(0, false);
 	EXPECT_FALSE(f.shouldDelete(0));  // 5 of 10: not more than half
-	f.recordAttempt(0, false);		  // the oldest success leaves the window: 6 of 10
-	EXPECT_TRUE(f.shouldDelete(0));	 // 6 failures in the last 10
+	f.recordAttempt(0, false);        // the oldest success leaves the window: 6 of 10
+	EXPECT_TRUE(f.shouldDelete(0));   // 6 failures in the last 10
 }

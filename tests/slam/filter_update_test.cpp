@@ -23,7 +23,7 @@ ActiveSlamFilter makeFilter(UpdateMethod m)
 	ActiveSlamFilter f(slamtest::defaultOptions(m), kModel);
 	for (size_t i = 0; i < kPoints.size(); ++i)
 		f.initialiseFeature("p" + std::to_string(i),
-							predictMeasurement(Eigen::Vector3d::Zero(), kPoints[i], kHead));
+		                    predictMeasurement(Eigen::Vector3d::Zero(), kPoints[i], kHead));
 	return f;
 }
 
@@ -61,10 +61,11 @@ TEST(FilterUpdate, GateRejectsOutliersAndKeepsInliers)
 	EXPECT_GT((f.stateVector() - before).norm(), 0);
 	// An outlier alone changes nothing.
 	const Eigen::VectorXd mid = f.stateVector();
-	const auto r2 = f.update({Observation{2, f.predictedMeasurement(2) + Eigen::Vector3d(0, 0.5, 0)}});
+	const auto r2 =
+	    f.update({Observation{2, f.predictedMeasurement(2) + Eigen::Vector3d(0, 0.5, 0)}});
 	EXPECT_EQ(r2.rejected.size(), 1u);
 	EXPECT_EQ((f.stateVector() - mid).norm(), 0.0);
-	EXPECT_NEAR(f.gateThreshold(), 11.3449, 1e-3);	// χ²₃ at 99 %
+	EXPECT_NEAR(f.gateThreshold(), 11.3449, 1e-3);  // χ²₃ at 99 %
 }
 
 TEST(FilterUpdate, CovarianceStaysSymmetricPositiveSemiDefinite)
@@ -87,7 +88,8 @@ TEST(FilterUpdate, PostponedEqualsTheBatchUpdate)
 	runSequence(batch, true);
 	runSequence(postponed, true);
 	const Eigen::MatrixXd Pb = batch.covariance(), Pp = postponed.covariance();
-	EXPECT_LT((batch.stateVector() - postponed.stateVector()).norm() / batch.stateVector().norm(), 1e-9);
+	EXPECT_LT((batch.stateVector() - postponed.stateVector()).norm() / batch.stateVector().norm(),
+	          1e-9);
 	EXPECT_LT((Pb - Pp).norm() / Pb.norm(), 1e-9);
 }
 
@@ -100,8 +102,8 @@ TEST(FilterUpdate, SequentialAndBatchAgreeToLinearisationError)
 	// The scalar updates re-evaluate h after each component, so they differ only at second order.
 	EXPECT_LT((seq.vehicle() - batch.vehicle()).norm(), 2e-3);
 	EXPECT_LT((seq.vehicleCovariance() - batch.vehicleCovariance()).norm() /
-				  batch.vehicleCovariance().norm(),
-			  0.05);
+	              batch.vehicleCovariance().norm(),
+	          0.05);
 }
 
 TEST(FilterUpdate, PostponedReadsVehicleWithoutCatchUp)

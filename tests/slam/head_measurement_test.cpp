@@ -52,13 +52,13 @@ TEST(HeadMeasurement, JacobiansMatchCentralDifferences)
 		{ return Eigen::Vector3d(initialiseFromMeasurement(xv, hh, kHead).p_FinW); };
 		EXPECT_LT((g.dy_dxv - slamtest::centralDiff(gx, xv)).cwiseAbs().maxCoeff(), 1e-6);
 		const double scale = 1 + g.dy_dh.cwiseAbs().maxCoeff();
-		EXPECT_LT((g.dy_dh - slamtest::centralDiff(gh, h, 1e-8)).cwiseAbs().maxCoeff() / scale, 1e-5);
+		EXPECT_LT((g.dy_dh - slamtest::centralDiff(gh, h, 1e-8)).cwiseAbs().maxCoeff() / scale,
+		          1e-5);
 	}
 }
 
 TEST(HeadMeasurement, DifferenceWrapsAngles)
 {
-	const Eigen::Vector3d d =
-		measurementDifference({M_PI - 0.01, 0, 0.1}, {-M_PI + 0.01, 0, 0.1});
+	const Eigen::Vector3d d = measurementDifference({M_PI - 0.01, 0, 0.1}, {-M_PI + 0.01, 0, 0.1});
 	EXPECT_NEAR(d[0], -0.02, 1e-12);
 }

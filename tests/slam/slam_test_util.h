@@ -9,7 +9,7 @@
 namespace slamtest
 {
 inline mrolr::slam::SlamOptions defaultOptions(
-	mrolr::slam::UpdateMethod m = mrolr::slam::UpdateMethod::Sequential)
+    mrolr::slam::UpdateMethod m = mrolr::slam::UpdateMethod::Sequential)
 {
 	mrolr::slam::SlamOptions o;
 	o.update_method = m;

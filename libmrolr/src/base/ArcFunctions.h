@@ -6,10 +6,10 @@ namespace mrolr::base::detail
 {
 struct ArcTerms
 {
-	double a;	  ///< sinθ/θ
-	double b;	  ///< (1 − cos θ)/θ
-	double da;	///< d(sinθ/θ)/dθ
-	double db;	///< d((1 − cos θ)/θ)/dθ
+	double a;   ///< sinθ/θ
+	double b;   ///< (1 − cos θ)/θ
+	double da;  ///< d(sinθ/θ)/dθ
+	double db;  ///< d((1 − cos θ)/θ)/dθ
 };
 
 /** All four terms at θ (radians); series below |θ| = 1e-2, closed forms above. */

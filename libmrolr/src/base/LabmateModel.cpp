@@ -11,8 +11,8 @@ namespace mrolr::base
 {
 using detail::arcTerms;
 
-void LabmateOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void LabmateOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                        const std::string& section)
 {
 	using util::readDouble;
 	using util::requireInRange;
@@ -29,9 +29,9 @@ void LabmateOptions::loadFromConfigFile(
 void LabmateOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "[labmate]\nwheel_half_separation_m  = " << wheel_half_separation_m
-		<< "\nvelocity_noise_fraction  = " << velocity_noise_fraction
-		<< "\ntranslation_speed_mps    = " << translation_speed_mps
-		<< "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps << "\n";
+	    << "\nvelocity_noise_fraction  = " << velocity_noise_fraction
+	    << "\ntranslation_speed_mps    = " << translation_speed_mps
+	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps << "\n";
 }
 
 LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)
@@ -63,8 +63,8 @@ Eigen::Matrix3d LabmateModel::jacobianState(const Eigen::Vector3d& x_v, const Wh
 	return F;
 }
 
-Eigen::Matrix<double, 3, 2> LabmateModel::jacobianControl(
-	const Eigen::Vector3d& x_v, const WheelControl& u) const
+Eigen::Matrix<double, 3, 2> LabmateModel::jacobianControl(const Eigen::Vector3d& x_v,
+                                                          const WheelControl& u) const
 {
 	const double th = turnAngle(u), s = arcLength(u);
 	const auto k = arcTerms(th);

@@ -6,8 +6,8 @@
 
 namespace mrolr::base
 {
-void TrajectoryOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void TrajectoryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                           const std::string& section)
 {
 	using util::readDouble;
 	using util::requireInRange;
@@ -24,9 +24,9 @@ void TrajectoryOptions::loadFromConfigFile(
 void TrajectoryOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "[trajectory]\nstep_length_m         = " << step_length_m
-		<< "\nmin_step_m            = " << min_step_m
-		<< "\nmax_rotation_step_deg = " << max_rotation_step_deg
-		<< "\nposition_tolerance_m  = " << position_tolerance_m << "\n";
+	    << "\nmin_step_m            = " << min_step_m
+	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
+	    << "\nposition_tolerance_m  = " << position_tolerance_m << "\n";
 }
 
 double wrapAngle(double a)
@@ -64,17 +64,16 @@ std::vector<double> rotationSteps(double angle_rad, const TrajectoryOptions& o)
 
 namespace
 {
-void appendRotation(
-	std::vector<PlannedStep>& plan, double angle, const LabmateModel& m, const TrajectoryOptions& o)
+void appendRotation(std::vector<PlannedStep>& plan, double angle, const LabmateModel& m,
+                    const TrajectoryOptions& o)
 {
 	for (double a : rotationSteps(angle, o))
 		plan.push_back({PlannedStep::Kind::Rotate, a, m.rotationControl(a)});
 }
 }  // namespace
 
-std::vector<PlannedStep> planLeg(
-	const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LabmateModel& model,
-	const TrajectoryOptions& o)
+std::vector<PlannedStep> planLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                 const LabmateModel& model, const TrajectoryOptions& o)
 {
 	std::vector<PlannedStep> plan;
 	const double dz = to[0] - from[0], dx = to[1] - from[1];

@@ -11,13 +11,13 @@
 namespace mrolr::slam
 {
 ActiveSlamFilter::ActiveSlamFilter(const SlamOptions& options, const base::LabmateModel& model)
-	: m_options(options), m_model(model)
+    : m_options(options), m_model(model)
 {
 	m_gate = chi2Quantile(options.gate_probability, 3);
 	KF_options.use_analytic_observation_jacobian = true;
 	KF_options.use_analytic_transition_jacobian = true;
 	KF_options.method = options.update_method == UpdateMethod::Batch ? mrpt::bayes::kfEKFNaive
-																	  : mrpt::bayes::kfEKFAlaDavison;
+	                                                                 : mrpt::bayes::kfEKFAlaDavison;
 	reset();
 }
 
@@ -39,7 +39,8 @@ UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
 	for (size_t a = 0; a < z.size(); ++a)
 	{
 		if (z[a].feature >= m_info.size())
-			throw std::out_of_range("ActiveSlamFilter::update: no feature " + std::to_string(z[a].feature));
+			throw std::out_of_range("ActiveSlamFilter::update: no feature " +
+			                        std::to_string(z[a].feature));
 		for (size_t b = a + 1; b < z.size(); ++b)
 			if (z[a].feature == z[b].feature)
 				throw std::invalid_argument("ActiveSlamFilter::update: feature measured twice");
@@ -78,8 +79,8 @@ void ActiveSlamFilter::OnTransitionNoise(KFMatrix_VxV& Q) const
 	Q.asEigen() = m_model.processNoise(vehicleRaw(), m_u);
 }
 
-void ActiveSlamFilter::OnPreComputingPredictions(
-	const vector_KFArray_OBS&, std::vector<size_t>& out_idx) const
+void ActiveSlamFilter::OnPreComputingPredictions(const vector_KFArray_OBS&,
+                                                 std::vector<size_t>& out_idx) const
 {
 	// Only the features being measured: the head looks at one feature at a time.
 	out_idx.clear();
@@ -93,14 +94,14 @@ void ActiveSlamFilter::OnGetObservationNoise(KFMatrix_OxO& R) const
 
 Eigen::Matrix3d ActiveSlamFilter::measurementNoise() const
 {
-	const Eigen::Vector3d s(
-		m_options.std_pan_rad, m_options.std_elevation_rad, m_options.std_vergence_rad);
+	const Eigen::Vector3d s(m_options.std_pan_rad, m_options.std_elevation_rad,
+	                        m_options.std_vergence_rad);
 	return s.cwiseAbs2().asDiagonal();
 }
 
 void ActiveSlamFilter::OnGetObservationsAndDataAssociation(
-	vector_KFArray_OBS& out_z, std::vector<int>& out_da, const vector_KFArray_OBS& predictions,
-	const KFMatrix& S, const std::vector<size_t>& idx_in_S, const KFMatrix_OxO&)
+    vector_KFArray_OBS& out_z, std::vector<int>& out_da, const vector_KFArray_OBS& predictions,
+    const KFMatrix& S, const std::vector<size_t>& idx_in_S, const KFMatrix_OxO&)
 {
 	out_z.clear();
 	out_da.clear();
@@ -124,15 +125,15 @@ void ActiveSlamFilter::OnGetObservationsAndDataAssociation(
 	}
 }
 
-void ActiveSlamFilter::OnObservationModel(
-	const std::vector<size_t>& idx, vector_KFArray_OBS& out) const
+void ActiveSlamFilter::OnObservationModel(const std::vector<size_t>& idx,
+                                          vector_KFArray_OBS& out) const
 {
 	out.resize(idx.size());
 	const Eigen::Vector3d xv = vehicleRaw();
 	for (size_t k = 0; k < idx.size(); ++k)
 	{
 		const Eigen::Vector3d h =
-			predictMeasurement(xv, featureRaw(idx[k]), m_options.head.constants);
+		    predictMeasurement(xv, featureRaw(idx[k]), m_options.head.constants);
 		for (int c = 0; c < 3; ++c) out[k][c] = h[c];
 	}
 }
@@ -150,7 +151,10 @@ void ActiveSlamFilter::OnSubstractObservationVectors(KFArray_OBS& A, const KFArr
 	for (int k = 0; k < 3; ++k) A[k] = d[k];
 }
 
-void ActiveSlamFilter::OnNormalizeStateVector() { m_xkk[2] = base::wrapAngle(m_xkk[2]); }
+void ActiveSlamFilter::OnNormalizeStateVector()
+{
+	m_xkk[2] = base::wrapAngle(m_xkk[2]);
+}
 
 void ActiveSlamFilter::OnPostIteration()
 {
@@ -160,7 +164,10 @@ void ActiveSlamFilter::OnPostIteration()
 	P = Ps;
 }
 
-Eigen::Vector3d ActiveSlamFilter::vehicleRaw() const { return {m_xkk[0], m_xkk[1], m_xkk[2]}; }
+Eigen::Vector3d ActiveSlamFilter::vehicleRaw() const
+{
+	return {m_xkk[0], m_xkk[1], m_xkk[2]};
+}
 
 Eigen::Vector3d ActiveSlamFilter::featureRaw(size_t i) const
 {

@@ -13,8 +13,8 @@ namespace
 Eigen::Matrix3d noiseOf(const SlamOptions& o)
 {
 	return Eigen::Vector3d(o.std_pan_rad, o.std_elevation_rad, o.std_vergence_rad)
-		.cwiseAbs2()
-		.asDiagonal();
+	    .cwiseAbs2()
+	    .asDiagonal();
 }
 
 /** The 3 × n measurement Jacobian of feature i in the full state. */
@@ -29,9 +29,8 @@ Eigen::MatrixXd fullJacobian(const Eigen::VectorXd& x, size_t i, const SlamOptio
 }
 
 /** Covariance prediction for one control (eq 5.33); the mean follows the model. */
-void predictCovariance(
-	Eigen::VectorXd& x, Eigen::MatrixXd& P, const base::WheelControl& u,
-	const base::LabmateModel& model)
+void predictCovariance(Eigen::VectorXd& x, Eigen::MatrixXd& P, const base::WheelControl& u,
+                       const base::LabmateModel& model)
 {
 	const Eigen::Vector3d xv = x.head<3>();
 	const Eigen::Matrix3d F = model.jacobianState(xv, u);
@@ -51,13 +50,13 @@ void measureCovariance(const Eigen::VectorXd& x, Eigen::MatrixXd& P, size_t i, c
 	P = (0.5 * (P + P.transpose())).eval();
 }
 
-double largestVs(
-	const Eigen::VectorXd& x, const Eigen::MatrixXd& P, const std::vector<size_t>& visible,
-	const SlamOptions& o)
+double largestVs(const Eigen::VectorXd& x, const Eigen::MatrixXd& P,
+                 const std::vector<size_t>& visible, const SlamOptions& o)
 {
 	double vmax = 0;
 	for (size_t j : visible)
-		vmax = std::max(vmax, innovationVolume(innovationCovarianceOf(x, P, j, o), o.innovation_volume_sigma));
+		vmax = std::max(
+		    vmax, innovationVolume(innovationCovarianceOf(x, P, j, o), o.innovation_volume_sigma));
 	return vmax;
 }
 
@@ -72,16 +71,15 @@ double innovationVolume(const Eigen::Matrix3d& S, double n)
 	return 4.0 / 3.0 * M_PI * n * n * n * std::sqrt(std::max(S.determinant(), 0.0));
 }
 
-Eigen::Matrix3d innovationCovarianceOf(
-	const Eigen::VectorXd& x, const Eigen::MatrixXd& P, size_t i, const SlamOptions& o)
+Eigen::Matrix3d innovationCovarianceOf(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, size_t i,
+                                       const SlamOptions& o)
 {
 	const Eigen::MatrixXd H = fullJacobian(x, i, o);
 	return H * P * H.transpose() + noiseOf(o);
 }
 
-std::optional<size_t> largestVolume(
-	const Eigen::VectorXd& x, const Eigen::MatrixXd& P, const std::vector<size_t>& candidates,
-	const SlamOptions& o)
+std::optional<size_t> largestVolume(const Eigen::VectorXd& x, const Eigen::MatrixXd& P,
+                                    const std::vector<size_t>& candidates, const SlamOptions& o)
 {
 	std::optional<size_t> best;
 	double vbest = -1;
@@ -93,27 +91,27 @@ std::optional<size_t> largestVolume(
 	return best;
 }
 
-int measurementsLostBySaccade(
-	const Eigen::Vector3d& h_from, const Eigen::Vector3d& h_to, const SlamOptions& o)
+int measurementsLostBySaccade(const Eigen::Vector3d& h_from, const Eigen::Vector3d& h_to,
+                              const SlamOptions& o)
 {
 	const double move_deg = (h_to - h_from).cwiseAbs().maxCoeff() * 180 / M_PI;
 	const double t = move_deg / o.head_speed_deg_per_s + o.saccade_overhead_s;
 	return static_cast<int>(std::ceil(t / o.step_time_s - 1e-12));
 }
 
-SaccadeDecision decideSaccade(
-	const SaccadeQuery& q, const SlamOptions& o, const base::LabmateModel& model)
+SaccadeDecision decideSaccade(const SaccadeQuery& q, const SlamOptions& o,
+                              const base::LabmateModel& model)
 {
 	SaccadeDecision d;
 	if (q.visible.empty()) return d;
 	const std::vector<base::WheelControl> upcoming =
-		q.upcoming.empty() ? std::vector<base::WheelControl>{base::WheelControl{}} : q.upcoming;
+	    q.upcoming.empty() ? std::vector<base::WheelControl>{base::WheelControl{}} : q.upcoming;
 	// Steps 1–2: measurements lost by each saccade, and the largest.
 	std::vector<int> lost;
 	for (size_t i : q.visible)
 	{
 		const Eigen::Vector3d h = predictMeasurement(
-			q.x.head<3>(), q.x.segment<3>(static_cast<Eigen::Index>(3 + 3 * i)), o.head.constants);
+		    q.x.head<3>(), q.x.segment<3>(static_cast<Eigen::Index>(3 + 3 * i)), o.head.constants);
 		lost.push_back(q.current == i ? 0 : measurementsLostBySaccade(q.head_angles, h, o));
 	}
 	d.n_max = *std::max_element(lost.begin(), lost.end());

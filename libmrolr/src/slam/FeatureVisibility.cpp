@@ -9,19 +9,26 @@ std::string toString(Visibility v)
 {
 	switch (v)
 	{
-		case Visibility::Visible: return "visible";
-		case Visibility::AtHeadCentre: return "at head centre";
-		case Visibility::BeyondPanLimit: return "beyond pan limit";
-		case Visibility::BeyondTiltLimit: return "beyond tilt limit";
-		case Visibility::BeyondVergenceLimit: return "beyond vergence limit";
-		case Visibility::DistanceRatio: return "distance ratio";
-		case Visibility::ViewDirection: return "view direction";
+		case Visibility::Visible:
+			return "visible";
+		case Visibility::AtHeadCentre:
+			return "at head centre";
+		case Visibility::BeyondPanLimit:
+			return "beyond pan limit";
+		case Visibility::BeyondTiltLimit:
+			return "beyond tilt limit";
+		case Visibility::BeyondVergenceLimit:
+			return "beyond vergence limit";
+		case Visibility::DistanceRatio:
+			return "distance ratio";
+		case Visibility::ViewDirection:
+			return "view direction";
 	}
 	return "?";
 }
 
-Visibility headCanFixate(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadModelOptions& head)
+Visibility headCanFixate(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                         const HeadModelOptions& head)
 {
 	const Eigen::Vector3d m = pointInHead(x_v, p_FinW, head.constants);
 	if (!(std::hypot(m.x(), m.z()) > 1e-9)) return Visibility::AtHeadCentre;
@@ -33,9 +40,8 @@ Visibility headCanFixate(
 	return Visibility::Visible;
 }
 
-Visibility assessVisibility(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const Eigen::Vector3d& p_C0atInitInW,
-	const SlamOptions& o)
+Visibility assessVisibility(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                            const Eigen::Vector3d& p_C0atInitInW, const SlamOptions& o)
 {
 	const Visibility limits = headCanFixate(x_v, p_FinW, o.head);
 	if (limits != Visibility::Visible) return limits;

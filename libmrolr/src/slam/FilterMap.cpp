@@ -12,8 +12,8 @@ namespace
 void checkIndex(size_t i, size_t n, const char* what)
 {
 	if (i >= n)
-		throw std::out_of_range(
-			std::string(what) + ": feature " + std::to_string(i) + " of " + std::to_string(n));
+		throw std::out_of_range(std::string(what) + ": feature " + std::to_string(i) + " of " +
+		                        std::to_string(n));
 }
 
 /** x and P with rows/columns [o, o+3) removed. */
@@ -24,7 +24,7 @@ void removeBlock(Eigen::VectorXd& x, Eigen::MatrixXd& P, Eigen::Index o)
 	xn << x.head(o), x.tail(t);
 	Eigen::MatrixXd Pn(n - 3, n - 3);
 	Pn << P.topLeftCorner(o, o), P.topRightCorner(o, t), P.bottomLeftCorner(t, o),
-		P.bottomRightCorner(t, t);
+	    P.bottomRightCorner(t, t);
 	x = xn;
 	P = Pn;
 }
@@ -49,8 +49,8 @@ void ActiveSlamFilter::setState(const Eigen::VectorXd& x, const Eigen::MatrixXd&
 	m_pkk.asEigen() = P;
 }
 
-void ActiveSlamFilter::appendFeature(
-	const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info)
+void ActiveSlamFilter::appendFeature(const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new,
+                                     FeatureInfo info)
 {
 	// P_new: the 3 new rows (3 × (n + 3)), the last block being P_yy.
 	const Eigen::VectorXd x = stateVector();
@@ -88,7 +88,7 @@ size_t ActiveSlamFilter::initialiseFeature(const std::string& label, const Eigen
 	Eigen::MatrixXd rows(3, n + 3);
 	rows.leftCols(n) = g.dy_dxv * P.topRows(3);
 	rows.rightCols(3) = g.dy_dxv * P.topLeftCorner(3, 3) * g.dy_dxv.transpose() +
-		g.dy_dh * measurementNoise() * g.dy_dh.transpose();
+	                    g.dy_dh * measurementNoise() * g.dy_dh.transpose();
 	FeatureInfo info;
 	info.label = label;
 	info.p_C0atInitInW = headCentreInW(xv, m_options.head.constants);
@@ -121,9 +121,10 @@ void ActiveSlamFilter::zeroWorldFrame()
 		const auto Jm = pointInHeadJacobians(xv, x.segment<3>(o), head);
 		J.block<3, 3>(o, 0) = Jm.dm_dxv;
 		J.block<3, 3>(o, o) = Jm.dm_dy;
-		x.segment<3>(o) = pointInHead(xv, x.segment<3>(o), head) + Eigen::Vector3d(0, head.head_height_m, 0);
+		x.segment<3>(o) =
+		    pointInHead(xv, x.segment<3>(o), head) + Eigen::Vector3d(0, head.head_height_m, 0);
 		m_info[i].p_C0atInitInW = pointInHead(xv, m_info[i].p_C0atInitInW, head) +
-			Eigen::Vector3d(0, head.head_height_m, 0);
+		                          Eigen::Vector3d(0, head.head_height_m, 0);
 	}
 	x.head<3>().setZero();
 	setState(x, J * P * J.transpose());
@@ -148,7 +149,10 @@ bool ActiveSlamFilter::shouldDelete(size_t i) const
 	return 2 * failed > m_options.attempt_window;
 }
 
-size_t ActiveSlamFilter::numFeatures() { return m_info.size(); }
+size_t ActiveSlamFilter::numFeatures()
+{
+	return m_info.size();
+}
 
 Eigen::Vector3d ActiveSlamFilter::vehicle()
 {
@@ -203,14 +207,15 @@ Eigen::Matrix3d ActiveSlamFilter::innovationCovariance(size_t i)
 	const Eigen::Vector3d xv = vehicle(), y = feature(i);
 	const auto J = measurementJacobians(xv, y, m_options.head.constants);
 	const auto o = static_cast<Eigen::Index>(3 + 3 * i);
-	const auto P = m_pkk.asEigen();	 // synchronised by feature(i) unless i is the tracked one
+	const auto P = m_pkk.asEigen();  // synchronised by feature(i) unless i is the tracked one
 	Eigen::Matrix<double, 3, 6> H;
 	H << J.H_xv, J.H_y;
 	Eigen::Matrix<double, 6, 6> Pa;
 	if (m_tracker.tracking() && m_tracker.trackedFeature() == i)
 		Pa = m_tracker.activeCovariance();
 	else
-		Pa << P.topLeftCorner<3, 3>(), P.block<3, 3>(0, o), P.block<3, 3>(o, 0), P.block<3, 3>(o, o);
+		Pa << P.topLeftCorner<3, 3>(), P.block<3, 3>(0, o), P.block<3, 3>(o, 0),
+		    P.block<3, 3>(o, o);
 	return H * Pa * H.transpose() + measurementNoise();
 }
 

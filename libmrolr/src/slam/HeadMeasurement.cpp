@@ -23,20 +23,20 @@ Eigen::Vector3d headCentreInW(const Eigen::Vector3d& x_v, const HeadConstants& h
 	return {x_v[1], head.head_height_m, x_v[0]};
 }
 
-Eigen::Vector3d pointInHead(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head)
+Eigen::Vector3d pointInHead(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                            const HeadConstants& head)
 {
 	return vehicleRotation(x_v[2]).transpose() * (p_FinW - headCentreInW(x_v, head));
 }
 
-Eigen::Vector3d predictMeasurement(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head)
+Eigen::Vector3d predictMeasurement(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                   const HeadConstants& head)
 {
 	return geometry::idealHeadMeasure(pointInHead(x_v, p_FinW, head), head.interocular_m);
 }
 
-PointInHeadJacobians pointInHeadJacobians(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head)
+PointInHeadJacobians pointInHeadJacobians(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                          const HeadConstants& head)
 {
 	const Eigen::Vector3d m = pointInHead(x_v, p_FinW, head);
 	const Eigen::Matrix3d Rt = vehicleRotation(x_v[2]).transpose();
@@ -50,8 +50,8 @@ PointInHeadJacobians pointInHeadJacobians(
 	return J;
 }
 
-MeasurementJacobians measurementJacobians(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head)
+MeasurementJacobians measurementJacobians(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                          const HeadConstants& head)
 {
 	const Eigen::Vector3d m = pointInHead(x_v, p_FinW, head);
 	const Eigen::Matrix3d J = geometry::idealHeadJacobian(m, head.interocular_m);
@@ -59,8 +59,8 @@ MeasurementJacobians measurementJacobians(
 	return {J * Jm.dm_dxv, J * Jm.dm_dy};
 }
 
-FeatureInitialisation initialiseFromMeasurement(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& h, const HeadConstants& head)
+FeatureInitialisation initialiseFromMeasurement(const Eigen::Vector3d& x_v,
+                                                const Eigen::Vector3d& h, const HeadConstants& head)
 {
 	const Eigen::Vector3d m = geometry::idealHeadInverse(h, head.interocular_m);
 	const Eigen::Matrix3d R = vehicleRotation(x_v[2]);

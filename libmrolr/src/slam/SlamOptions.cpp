@@ -14,26 +14,28 @@ UpdateMethod parseUpdateMethod(const std::string& name)
 	if (name == "sequential") return UpdateMethod::Sequential;
 	if (name == "batch") return UpdateMethod::Batch;
 	if (name == "postponed") return UpdateMethod::Postponed;
-	throw std::invalid_argument(
-		"unknown update method '" + name + "' (expected sequential, batch or postponed)");
+	throw std::invalid_argument("unknown update method '" + name +
+	                            "' (expected sequential, batch or postponed)");
 }
 
 std::string toString(UpdateMethod m)
 {
 	switch (m)
 	{
-		case UpdateMethod::Sequential: return "sequential";
-		case UpdateMethod::Batch: return "batch";
-		case UpdateMethod::Postponed: return "postponed";
+		case UpdateMethod::Sequential:
+			return "sequential";
+		case UpdateMethod::Batch:
+			return "batch";
+		case UpdateMethod::Postponed:
+			return "postponed";
 	}
 	return "?";
 }
 
 namespace
 {
-double readIn(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
-	double lo, double hi)
+double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
+              const std::string& key, double lo, double hi)
 {
 	const double v = readDouble(cfg, s, key);
 	requireInRange(cfg, s, key, v, lo, hi);
@@ -41,8 +43,8 @@ double readIn(
 }
 }  // namespace
 
-void HeadModelOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& s)
+void HeadModelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                          const std::string& s)
 {
 	constants.interocular_m = readIn(cfg, s, "interocular_m", 1e-3, 10);
 	constants.head_height_m = readIn(cfg, s, "head_height_m", -10, 10);
@@ -54,9 +56,9 @@ void HeadModelOptions::loadFromConfigFile(
 void HeadModelOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "interocular_m = " << constants.interocular_m
-		<< "\nhead_height_m = " << constants.head_height_m << "\npan_limit_deg = " << pan_limit_deg
-		<< "\ntilt_limit_deg = " << tilt_limit_deg
-		<< "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
+	    << "\nhead_height_m = " << constants.head_height_m << "\npan_limit_deg = " << pan_limit_deg
+	    << "\ntilt_limit_deg = " << tilt_limit_deg
+	    << "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
 }
 
 void SlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
@@ -87,18 +89,18 @@ void SlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, c
 void SlamOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "[slam]\nstd_pan_rad = " << std_pan_rad << "\nstd_elevation_rad = " << std_elevation_rad
-		<< "\nstd_vergence_rad = " << std_vergence_rad
-		<< "\nupdate_method = " << toString(update_method)
-		<< "\ngate_probability = " << gate_probability
-		<< "\nmin_visible_features = " << min_visible_features
-		<< "\nattempt_window = " << attempt_window
-		<< "\nvisibility_ratio_min = " << visibility_ratio_min
-		<< "\nvisibility_ratio_max = " << visibility_ratio_max
-		<< "\nmax_view_change_deg = " << max_view_change_deg
-		<< "\ninnovation_volume_sigma = " << innovation_volume_sigma
-		<< "\nhead_speed_deg_per_s = " << head_speed_deg_per_s
-		<< "\nsaccade_overhead_s = " << saccade_overhead_s << "\nstep_time_s = " << step_time_s
-		<< "\n";
+	    << "\nstd_vergence_rad = " << std_vergence_rad
+	    << "\nupdate_method = " << toString(update_method)
+	    << "\ngate_probability = " << gate_probability
+	    << "\nmin_visible_features = " << min_visible_features
+	    << "\nattempt_window = " << attempt_window
+	    << "\nvisibility_ratio_min = " << visibility_ratio_min
+	    << "\nvisibility_ratio_max = " << visibility_ratio_max
+	    << "\nmax_view_change_deg = " << max_view_change_deg
+	    << "\ninnovation_volume_sigma = " << innovation_volume_sigma
+	    << "\nhead_speed_deg_per_s = " << head_speed_deg_per_s
+	    << "\nsaccade_overhead_s = " << saccade_overhead_s << "\nstep_time_s = " << step_time_s
+	    << "\n";
 	head.dumpToTextStream(out);
 }
 

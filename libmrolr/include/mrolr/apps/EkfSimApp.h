@@ -20,7 +20,7 @@ namespace mrolr::apps
 {
 class EkfSimApp
 {
-   public:
+ public:
 	/** Parses the command line (argv[0] first); throws util::UsageError for bad arguments. */
 	void initialize(const std::vector<std::string>& args);
 	/** Runs the simulations and prints the results to @p out; returns the exit code. */
@@ -28,7 +28,7 @@ class EkfSimApp
 
 	// Inputs
 	std::string world_path;
-	std::string config_path;	 ///< empty: config/ekf_sim.ini
+	std::string config_path;  ///< empty: config/ekf_sim.ini
 	int runs = 1;
 	std::optional<uint64_t> seed;  ///< default: [simulation] seed
 	std::string out_dir;
@@ -44,7 +44,7 @@ class EkfSimApp
 
 	static std::string defaultConfigPath();
 
-   private:
+ private:
 	void printTable(std::ostream& out) const;
 	void printJson(std::ostream& out) const;
 	void writeOutputs(const world::World& world) const;

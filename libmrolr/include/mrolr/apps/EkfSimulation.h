@@ -26,26 +26,28 @@ namespace mrolr::apps
 struct SimulationOptions
 {
 	uint64_t seed = 1;
-	/** True wheel-velocity noise σ_i = fraction · |v_i| (the filter assumes [labmate]'s fraction). */
+	/** True wheel-velocity noise σ_i = fraction · |v_i| (the filter assumes [labmate]'s fraction).
+	 */
 	double true_velocity_noise_fraction = 0.14;
 	/** True measurement noise (rad); the filter assumes [slam]'s R. */
 	double true_std_pan_rad = 0.002;
 	double true_std_elevation_rad = 0.01;
 	double true_std_vergence_rad = 0.002;
-	/** Wheel slip: a burst starts with this probability per step and lasts this many steps; during a
-	 * burst one wheel (chosen at random) covers only (1 − slip_fraction) of its commanded distance.
-	 * The filter does not model slip. */
+	/** Wheel slip: a burst starts with this probability per step and lasts this many steps; during
+	 * a burst one wheel (chosen at random) covers only (1 − slip_fraction) of its commanded
+	 * distance. The filter does not model slip. */
 	double slip_burst_probability = 0;
 	int slip_burst_length_steps = 3;
 	double slip_fraction = 0.2;
-	/** With this probability a measurement is an outlier: each angle off by ±U(0.5, 1)·magnitude. */
+	/** With this probability a measurement is an outlier: each angle off by ±U(0.5, 1)·magnitude.
+	 */
 	double outlier_fraction = 0;
 	double outlier_magnitude_rad = 0.2;
-	int measurements_per_step = 1;	///< features measured after each motion step
-	double max_range_m = 8;			///< features further away are never found
-	double search_pan_deg = 45;		///< new features are sought at pan +this, 0, −this (5.7)
-	double search_window_deg = 30;	///< half-width of each search direction
-	int laps = 1;					///< times the route is driven
+	int measurements_per_step = 1;  ///< features measured after each motion step
+	double max_range_m = 8;         ///< features further away are never found
+	double search_pan_deg = 45;     ///< new features are sought at pan +this, 0, −this (5.7)
+	double search_window_deg = 30;  ///< half-width of each search direction
+	int laps = 1;                   ///< times the route is driven
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dumpToTextStream(std::ostream& out) const;
@@ -69,10 +71,10 @@ struct SimulationSetup
 struct StepRecord
 {
 	Eigen::Vector3d truth, estimate, dead_reckoning;
-	Eigen::Matrix3d P_vv;		///< vehicle covariance of the estimate
-	double nees = 0;  ///< vehicle NEES eᵀ P_vv⁻¹ e (NaN while P_vv is singular)
-	int features = 0;			///< features in the map
-	int measured = 0;			///< measurements accepted this step
+	Eigen::Matrix3d P_vv;  ///< vehicle covariance of the estimate
+	double nees = 0;       ///< vehicle NEES eᵀ P_vv⁻¹ e (NaN while P_vv is singular)
+	int features = 0;      ///< features in the map
+	int measured = 0;      ///< measurements accepted this step
 };
 
 /** A whole run. */
@@ -84,12 +86,12 @@ struct RunResult
 	int measurements_rejected = 0, attempts_failed = 0;
 	double landmark_error_sum_m = 0;  ///< over the features mapped at the end
 	int landmark_count = 0;
-	std::vector<std::string> final_labels;	///< map at the end: labels,
-	std::vector<Eigen::Vector3d> final_positions;	  ///< estimated positions
-	std::vector<Eigen::Matrix3d> final_covariances;	  ///< and covariances
-	std::vector<Eigen::Vector3d> controls_odometry;	  ///< commanded (v1, v2, dt) per step
-	std::vector<std::vector<std::pair<std::string, Eigen::Vector3d>>> measurements;	 ///< per step
-	double seconds = 0;	 ///< wall time of the run
+	std::vector<std::string> final_labels;           ///< map at the end: labels,
+	std::vector<Eigen::Vector3d> final_positions;    ///< estimated positions
+	std::vector<Eigen::Matrix3d> final_covariances;  ///< and covariances
+	std::vector<Eigen::Vector3d> controls_odometry;  ///< commanded (v1, v2, dt) per step
+	std::vector<std::vector<std::pair<std::string, Eigen::Vector3d>>> measurements;  ///< per step
+	double seconds = 0;  ///< wall time of the run
 };
 
 /** Runs one simulation with its own random seed. Throws std::invalid_argument for a world with
@@ -100,10 +102,10 @@ RunResult runSimulation(const world::World& world, const SimulationSetup& setup,
 struct MonteCarloSummary
 {
 	int runs = 0;
-	int steps = 0;	///< steps common to all runs (the shortest run)
+	int steps = 0;                    ///< steps common to all runs (the shortest run)
 	double nees_lo = 0, nees_hi = 0;  ///< 95 % two-sided bounds of the mean NEES over the runs
-	std::vector<double> mean_nees;	  ///< per step (NaN where NEES is undefined in every run)
-	int nees_steps = 0;				  ///< steps where the mean NEES is defined
+	std::vector<double> mean_nees;    ///< per step (NaN where NEES is undefined in every run)
+	int nees_steps = 0;               ///< steps where the mean NEES is defined
 	double nees_inside_fraction = 0;
 	double slam_rms_position_m = 0, slam_final_position_error_m = 0, slam_rms_heading_deg = 0;
 	double dr_rms_position_m = 0, dr_final_position_error_m = 0;

@@ -10,7 +10,8 @@
  *   x' = x + s (sin φ · sinθ/θ + cos φ · (1 − cos θ)/θ)   (eq 5.6)
  *   φ' = φ + θ                                            (eq 5.7)
  * sinθ/θ and (1 − cos θ)/θ are evaluated by their Taylor series near θ = 0, so the straight-line
- * case (eqs 5.8–5.10, v1 = v2) is the smooth limit, not a special case; v1 = −v2 rotates in place. */
+ * case (eqs 5.8–5.10, v1 = v2) is the smooth limit, not a special case; v1 = −v2 rotates in place.
+ */
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -24,18 +25,18 @@ namespace mrolr::base
 /** One control step: wheel velocities (m/s) held for dt_s seconds. */
 struct WheelControl
 {
-	double v1_mps = 0;	///< right wheel (positive v1 − v2 turns left)
-	double v2_mps = 0;	///< left wheel
+	double v1_mps = 0;  ///< right wheel (positive v1 − v2 turns left)
+	double v2_mps = 0;  ///< left wheel
 	double dt_s = 0;
 };
 
 /** Parameters of the base, section [labmate] of config/labmate.ini. */
 struct LabmateOptions
 {
-	double wheel_half_separation_m = 0.30;	///< D1, half the distance between the wheels
-	double velocity_noise_fraction = 0.14;	///< σ_i = fraction · |v_i| (eq 5.13)
-	double translation_speed_mps = 0.10;	///< wheel speed for straight moves (5.6.3)
-	double rotation_wheel_speed_mps = 0.05;	///< |v1| = |v2| for rotations in place
+	double wheel_half_separation_m = 0.30;   ///< D1, half the distance between the wheels
+	double velocity_noise_fraction = 0.14;   ///< σ_i = fraction · |v_i| (eq 5.13)
+	double translation_speed_mps = 0.10;     ///< wheel speed for straight moves (5.6.3)
+	double rotation_wheel_speed_mps = 0.05;  ///< |v1| = |v2| for rotations in place
 
 	/** Reads every key above; errors name file, section and key (mrolr::util::ConfigError). */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
@@ -45,7 +46,7 @@ struct LabmateOptions
 /** The motion model f_v(x_v, u), its Jacobians and its process noise Q (eqs 5.11–5.19). */
 class LabmateModel
 {
-   public:
+ public:
 	explicit LabmateModel(const LabmateOptions& options = {});
 
 	const LabmateOptions& options() const { return m_options; }
@@ -57,8 +58,8 @@ class LabmateModel
 	Eigen::Matrix3d jacobianState(const Eigen::Vector3d& x_v, const WheelControl& u) const;
 
 	/** ∂f_v/∂u, with u = (v1, v2) (eqs 5.13–5.15, 5.18). */
-	Eigen::Matrix<double, 3, 2> jacobianControl(
-		const Eigen::Vector3d& x_v, const WheelControl& u) const;
+	Eigen::Matrix<double, 3, 2> jacobianControl(const Eigen::Vector3d& x_v,
+	                                            const WheelControl& u) const;
 
 	/** U = diag(σ1², σ2²), σ_i = velocity_noise_fraction · |v_i| (eq 5.13), in (m/s)². */
 	Eigen::Matrix2d controlCovariance(const WheelControl& u) const;
@@ -76,7 +77,7 @@ class LabmateModel
 	/** The control that translates straight by @p distance_m (negative: backwards). */
 	WheelControl translationControl(double distance_m) const;
 
-   private:
+ private:
 	LabmateOptions m_options;
 };
 

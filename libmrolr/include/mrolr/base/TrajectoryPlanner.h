@@ -19,10 +19,10 @@ namespace mrolr::base
 /** Step sizes of the planner, section [trajectory] of config/labmate.ini. */
 struct TrajectoryOptions
 {
-	double step_length_m = 0.20;	///< full translation step (5.6.1)
-	double min_step_m = 0.032;		///< halving stops once the remainder is below this (7.2.1)
-	double max_rotation_step_deg = 180;	 ///< rotations larger than this are split into equal steps
-	double position_tolerance_m = 1e-3;	 ///< legs shorter than this skip the first rotation
+	double step_length_m = 0.20;         ///< full translation step (5.6.1)
+	double min_step_m = 0.032;           ///< halving stops once the remainder is below this (7.2.1)
+	double max_rotation_step_deg = 180;  ///< rotations larger than this are split into equal steps
+	double position_tolerance_m = 1e-3;  ///< legs shorter than this skip the first rotation
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dumpToTextStream(std::ostream& out) const;
@@ -37,7 +37,7 @@ struct PlannedStep
 		Translate
 	};
 	Kind kind = Kind::Translate;
-	double amount = 0;	///< rotation in rad (positive towards x) or distance in m
+	double amount = 0;  ///< rotation in rad (positive towards x) or distance in m
 	WheelControl u;
 };
 
@@ -51,9 +51,8 @@ std::vector<double> translationSteps(double distance_m, const TrajectoryOptions&
 std::vector<double> rotationSteps(double angle_rad, const TrajectoryOptions& options);
 
 /** Rotate–translate–rotate from pose @p from to waypoint pose @p to (both (z, x, φ) in W). */
-std::vector<PlannedStep> planLeg(
-	const Eigen::Vector3d& from, const Eigen::Vector3d& to, const LabmateModel& model,
-	const TrajectoryOptions& options);
+std::vector<PlannedStep> planLeg(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                 const LabmateModel& model, const TrajectoryOptions& options);
 
 /** The angle wrapped into (−π, π]. */
 double wrapAngle(double angle_rad);

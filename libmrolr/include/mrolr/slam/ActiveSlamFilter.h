@@ -27,9 +27,9 @@ namespace mrolr::slam
 struct FeatureInfo
 {
 	std::string label;
-	bool known = false;	 ///< known feature (5.6.2): initialised with zero covariance
+	bool known = false;  ///< known feature (5.6.2): initialised with zero covariance
 	Eigen::Vector3d p_C0atInitInW = Eigen::Vector3d::Zero();  ///< head centre when first seen
-	std::deque<bool> attempts;	///< last measurement attempts, true = success (5.7)
+	std::deque<bool> attempts;  ///< last measurement attempts, true = success (5.7)
 	int successes = 0;
 	int failures = 0;
 };
@@ -46,12 +46,12 @@ struct UpdateReport
 {
 	std::vector<size_t> accepted;  ///< feature indices used to update the filter
 	std::vector<size_t> rejected;  ///< feature indices rejected by the χ² gate
-	std::vector<double> nis;	   ///< NIS of each accepted observation
+	std::vector<double> nis;       ///< NIS of each accepted observation
 };
 
 class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 {
-   public:
+ public:
 	ActiveSlamFilter(const SlamOptions& options, const base::LabmateModel& model);
 
 	const SlamOptions& options() const { return m_options; }
@@ -95,7 +95,8 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	Eigen::VectorXd stateVector();
 	Eigen::MatrixXd covariance();
 	const FeatureInfo& info(size_t i) const { return m_info.at(i); }
-	/** Predicted measurement h(x_v, y_i) and its innovation covariance S_i = H P Hᵀ + R (eq 5.36). */
+	/** Predicted measurement h(x_v, y_i) and its innovation covariance S_i = H P Hᵀ + R (eq 5.36).
+	 */
 	Eigen::Vector3d predictedMeasurement(size_t i);
 	Eigen::Matrix3d innovationCovariance(size_t i);
 	/** The measurement noise R (eq 5.41). */
@@ -106,25 +107,25 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	void setState(const Eigen::VectorXd& x, const Eigen::MatrixXd& P);
 	/** @} */
 
-   protected:
+ protected:
 	void OnGetAction(KFArray_ACT& out_u) const override;
 	void OnTransitionModel(const KFArray_ACT& u, KFArray_VEH& x, bool& skip) const override;
 	void OnTransitionJacobian(KFMatrix_VxV& F) const override;
 	void OnTransitionNoise(KFMatrix_VxV& Q) const override;
-	void OnPreComputingPredictions(
-		const vector_KFArray_OBS& all, std::vector<size_t>& out_idx) const override;
+	void OnPreComputingPredictions(const vector_KFArray_OBS& all,
+	                               std::vector<size_t>& out_idx) const override;
 	void OnGetObservationNoise(KFMatrix_OxO& R) const override;
-	void OnGetObservationsAndDataAssociation(
-		vector_KFArray_OBS& out_z, std::vector<int>& out_da, const vector_KFArray_OBS& predictions,
-		const KFMatrix& S, const std::vector<size_t>& idx_in_S, const KFMatrix_OxO& R) override;
-	void OnObservationModel(
-		const std::vector<size_t>& idx, vector_KFArray_OBS& out) const override;
+	void OnGetObservationsAndDataAssociation(vector_KFArray_OBS& out_z, std::vector<int>& out_da,
+	                                         const vector_KFArray_OBS& predictions,
+	                                         const KFMatrix& S, const std::vector<size_t>& idx_in_S,
+	                                         const KFMatrix_OxO& R) override;
+	void OnObservationModel(const std::vector<size_t>& idx, vector_KFArray_OBS& out) const override;
 	void OnObservationJacobians(size_t idx, KFMatrix_OxV& Hx, KFMatrix_OxF& Hy) const override;
 	void OnSubstractObservationVectors(KFArray_OBS& A, const KFArray_OBS& B) const override;
 	void OnNormalizeStateVector() override;
 	void OnPostIteration() override;
 
-   private:
+ private:
 	Eigen::Vector3d vehicleRaw() const;
 	Eigen::Vector3d featureRaw(size_t i) const;
 	void appendFeature(const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info);

@@ -25,40 +25,40 @@ namespace mrolr::slam
 double innovationVolume(const Eigen::Matrix3d& S, double n_sigma);
 
 /** S_i = H P Hᵀ + R for feature @p i of the full state (x, P) (eq 5.36). */
-Eigen::Matrix3d innovationCovarianceOf(
-	const Eigen::VectorXd& x, const Eigen::MatrixXd& P, size_t i, const SlamOptions& options);
+Eigen::Matrix3d innovationCovarianceOf(const Eigen::VectorXd& x, const Eigen::MatrixXd& P, size_t i,
+                                       const SlamOptions& options);
 
 /** Index (into @p candidates) of the candidate with the largest Vs; nullopt for none. */
-std::optional<size_t> largestVolume(
-	const Eigen::VectorXd& x, const Eigen::MatrixXd& P, const std::vector<size_t>& candidates,
-	const SlamOptions& options);
+std::optional<size_t> largestVolume(const Eigen::VectorXd& x, const Eigen::MatrixXd& P,
+                                    const std::vector<size_t>& candidates,
+                                    const SlamOptions& options);
 
 /** Measurements lost while the head moves from angles @p h_from to @p h_to (5.7 step 1): the
  * slowest joint at head_speed_deg_per_s plus saccade_overhead_s, in units of step_time_s. */
-int measurementsLostBySaccade(
-	const Eigen::Vector3d& h_from, const Eigen::Vector3d& h_to, const SlamOptions& options);
+int measurementsLostBySaccade(const Eigen::Vector3d& h_from, const Eigen::Vector3d& h_to,
+                              const SlamOptions& options);
 
 /** Inputs of the saccade decision. */
 struct SaccadeQuery
 {
-	Eigen::VectorXd x;				 ///< full state
-	Eigen::MatrixXd P;				 ///< full covariance
-	std::vector<size_t> visible;	 ///< features that could be measured (map indices)
-	std::optional<size_t> current;	 ///< feature being tracked, if any
-	Eigen::Vector3d head_angles = Eigen::Vector3d::Zero();	///< ideal-head angles now
+	Eigen::VectorXd x;              ///< full state
+	Eigen::MatrixXd P;              ///< full covariance
+	std::vector<size_t> visible;    ///< features that could be measured (map indices)
+	std::optional<size_t> current;  ///< feature being tracked, if any
+	Eigen::Vector3d head_angles = Eigen::Vector3d::Zero();  ///< ideal-head angles now
 	std::vector<base::WheelControl> upcoming;  ///< the next controls (the last one is repeated)
 };
 
 struct SaccadeDecision
 {
-	std::optional<size_t> feature;	///< feature to measure next (map index)
-	bool saccade = false;			///< true when it differs from the current one
-	int n_max = 0;					///< N_max of step 2
-	std::vector<double> vs_max;		///< Vs(max) per visible feature (step 4)
+	std::optional<size_t> feature;  ///< feature to measure next (map index)
+	bool saccade = false;           ///< true when it differs from the current one
+	int n_max = 0;                  ///< N_max of step 2
+	std::vector<double> vs_max;     ///< Vs(max) per visible feature (step 4)
 };
 
 /** 5.7 steps 1–4 on a linearised covariance prediction. */
-SaccadeDecision decideSaccade(
-	const SaccadeQuery& query, const SlamOptions& options, const base::LabmateModel& model);
+SaccadeDecision decideSaccade(const SaccadeQuery& query, const SlamOptions& options,
+                              const base::LabmateModel& model);
 
 }  // namespace mrolr::slam

@@ -12,16 +12,17 @@
 
 namespace mrolr::slam
 {
-/** The two head constants the filter needs (config/bisight.ini keys interocular_m, head_height_m). */
+/** The two head constants the filter needs (config/bisight.ini keys interocular_m, head_height_m).
+ */
 struct HeadConstants
 {
 	double interocular_m = 0.25;  ///< I, eq 5.40
-	double head_height_m = 1.0;	  ///< M_h, height of C0 above the ground plane (eqs 5.35, 5.50)
+	double head_height_m = 1.0;   ///< M_h, height of C0 above the ground plane (eqs 5.35, 5.50)
 };
 
 /** m_GinC0 of eq 5.35 (metres, C0 axes). */
-Eigen::Vector3d pointInHead(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head);
+Eigen::Vector3d pointInHead(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                            const HeadConstants& head);
 
 /** ∂m_GinC0/∂x_v and ∂m_GinC0/∂y_i = R_y(φ)ᵀ (also the Jacobians of frame zeroing, eq 5.51). */
 struct PointInHeadJacobians
@@ -29,12 +30,12 @@ struct PointInHeadJacobians
 	Eigen::Matrix3d dm_dxv;
 	Eigen::Matrix3d dm_dy;
 };
-PointInHeadJacobians pointInHeadJacobians(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head);
+PointInHeadJacobians pointInHeadJacobians(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                          const HeadConstants& head);
 
 /** h(x_v, y_i) = (pan, elevation, vergence) in rad (eqs 5.35 + 5.40). */
-Eigen::Vector3d predictMeasurement(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head);
+Eigen::Vector3d predictMeasurement(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                   const HeadConstants& head);
 
 /** ∂h/∂x_v and ∂h/∂y_i, both 3×3 (analytic). */
 struct MeasurementJacobians
@@ -42,8 +43,8 @@ struct MeasurementJacobians
 	Eigen::Matrix3d H_xv;
 	Eigen::Matrix3d H_y;
 };
-MeasurementJacobians measurementJacobians(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW, const HeadConstants& head);
+MeasurementJacobians measurementJacobians(const Eigen::Vector3d& x_v, const Eigen::Vector3d& p_FinW,
+                                          const HeadConstants& head);
 
 /** y_i from a first measurement h at pose x_v (eq 5.46), and its Jacobians ∂y/∂x_v, ∂y/∂h used
  * for the new covariance blocks (eq 5.48). */
@@ -53,8 +54,9 @@ struct FeatureInitialisation
 	Eigen::Matrix3d dy_dxv;
 	Eigen::Matrix3d dy_dh;
 };
-FeatureInitialisation initialiseFromMeasurement(
-	const Eigen::Vector3d& x_v, const Eigen::Vector3d& h, const HeadConstants& head);
+FeatureInitialisation initialiseFromMeasurement(const Eigen::Vector3d& x_v,
+                                                const Eigen::Vector3d& h,
+                                                const HeadConstants& head);
 
 /** z − h with every angle difference wrapped into (−π, π]. */
 Eigen::Vector3d measurementDifference(const Eigen::Vector3d& z, const Eigen::Vector3d& h);

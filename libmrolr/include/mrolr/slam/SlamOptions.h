@@ -15,12 +15,13 @@ namespace mrolr::slam
 /** How measurements update the filter. */
 enum class UpdateMethod
 {
-	Sequential,	 ///< one scalar component at a time (eqs 5.42–5.45; MRPT kfEKFAlaDavison)
-	Batch,		 ///< all components at once (MRPT kfEKFNaive)
-	Postponed	 ///< Davison's postponed update while one feature is tracked (appendix C)
+	Sequential,  ///< one scalar component at a time (eqs 5.42–5.45; MRPT kfEKFAlaDavison)
+	Batch,       ///< all components at once (MRPT kfEKFNaive)
+	Postponed    ///< Davison's postponed update while one feature is tracked (appendix C)
 };
 
-/** "sequential" | "batch" | "postponed"; throws std::invalid_argument naming the value otherwise. */
+/** "sequential" | "batch" | "postponed"; throws std::invalid_argument naming the value otherwise.
+ */
 UpdateMethod parseUpdateMethod(const std::string& name);
 std::string toString(UpdateMethod method);
 
@@ -28,9 +29,9 @@ std::string toString(UpdateMethod method);
 struct HeadModelOptions
 {
 	HeadConstants constants;
-	double pan_limit_deg = 90;		 ///< |pan| allowed
-	double tilt_limit_deg = 45;		 ///< |elevation| allowed
-	double vergence_limit_deg = 40;	 ///< vergence allowed (limits how near a feature may be)
+	double pan_limit_deg = 90;       ///< |pan| allowed
+	double tilt_limit_deg = 45;      ///< |elevation| allowed
+	double vergence_limit_deg = 40;  ///< vergence allowed (limits how near a feature may be)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dumpToTextStream(std::ostream& out) const;
@@ -51,15 +52,15 @@ struct SlamOptions
 	/** Feature management (5.7). */
 	int min_visible_features = 2;
 	int attempt_window = 10;  ///< delete when more than half of the last N attempts failed
-	double visibility_ratio_min = 0.7;	///< current / initial viewing distance (5.2.1)
+	double visibility_ratio_min = 0.7;  ///< current / initial viewing distance (5.2.1)
 	double visibility_ratio_max = 1.4;
-	double max_view_change_deg = 45;	///< change of viewing direction since initialisation
+	double max_view_change_deg = 45;  ///< change of viewing direction since initialisation
 	/** Selection (5.7, eq 5.147): Vs is the volume of the n-σ innovation ellipsoid. */
 	double innovation_volume_sigma = 3;
 	/** Saccade model (5.7 step 1): head speed and the time between measurements. */
 	double head_speed_deg_per_s = 60;
 	double saccade_overhead_s = 0.2;  ///< settling and search time per saccade
-	double step_time_s = 1.0;		  ///< time from one measurement to the next while tracking
+	double step_time_s = 1.0;         ///< time from one measurement to the next while tracking
 
 	/** Reads the [slam] keys from @p section (the head is loaded separately into #head). */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

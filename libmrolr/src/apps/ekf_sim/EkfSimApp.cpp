@@ -23,14 +23,20 @@ std::string EkfSimApp::defaultConfigPath()
 void EkfSimApp::initialize(const std::vector<std::string>& args)
 {
 	TCLAP::CmdLine cmd(
-		"mrolr-ekf-sim: Monte-Carlo runs of the active-vision EKF-SLAM simulator (thesis 5.4-5.9)",
-		' ', "1");
-	TCLAP::ValueArg<std::string> world("", "world", "world file (maps/<name>/world.ini)", true, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> cfg("", "config", "simulator .ini (default config/ekf_sim.ini)", false, "", "FILE", cmd);
-	TCLAP::ValueArg<std::string> nruns("", "runs", "number of Monte-Carlo runs (default 1)", false, "1", "N", cmd);
-	TCLAP::ValueArg<std::string> s("", "seed", "seed of run 0 (default: [simulation] seed)", false, "", "S", cmd);
-	TCLAP::ValueArg<std::string> out("", "out", "write steps.csv, nees.csv, paths.png here", false, "", "DIR", cmd);
-	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "write run 0 as an MRPT rawlog", false, "", "FILE", cmd);
+	    "mrolr-ekf-sim: Monte-Carlo runs of the active-vision EKF-SLAM simulator (thesis 5.4-5.9)",
+	    ' ', "1");
+	TCLAP::ValueArg<std::string> world("", "world", "world file (maps/<name>/world.ini)", true, "",
+	                                   "FILE", cmd);
+	TCLAP::ValueArg<std::string> cfg("", "config", "simulator .ini (default config/ekf_sim.ini)",
+	                                 false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> nruns("", "runs", "number of Monte-Carlo runs (default 1)", false,
+	                                   "1", "N", cmd);
+	TCLAP::ValueArg<std::string> s("", "seed", "seed of run 0 (default: [simulation] seed)", false,
+	                               "", "S", cmd);
+	TCLAP::ValueArg<std::string> out("", "out", "write steps.csv, nees.csv, paths.png here", false,
+	                                 "", "DIR", cmd);
+	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "write run 0 as an MRPT rawlog", false, "",
+	                                    "FILE", cmd);
 	TCLAP::SwitchArg js("", "json", "print one JSON object", cmd);
 	TCLAP::SwitchArg quiet("", "quiet", "no progress line", cmd);
 	if (!parseTclap(cmd, args))
@@ -42,12 +48,14 @@ void EkfSimApp::initialize(const std::vector<std::string>& args)
 	config_path = cfg.getValue().empty() ? defaultConfigPath() : cfg.getValue();
 	const double n = util::parseNumberArg(nruns.getValue(), "--runs");
 	if (!(n >= 1 && n <= 100000 && n == std::floor(n)))
-		throw util::UsageError("--runs: '" + nruns.getValue() + "' is not a whole number in 1..100000");
+		throw util::UsageError("--runs: '" + nruns.getValue() +
+		                       "' is not a whole number in 1..100000");
 	runs = static_cast<int>(n);
 	if (!s.getValue().empty())
 	{
 		const double v = util::parseNumberArg(s.getValue(), "--seed");
-		if (!(v >= 0 && v == std::floor(v))) throw util::UsageError("--seed: must be a whole number >= 0");
+		if (!(v >= 0 && v == std::floor(v)))
+			throw util::UsageError("--seed: must be a whole number >= 0");
 		seed = static_cast<uint64_t>(v);
 	}
 	out_dir = out.getValue();
@@ -114,11 +122,14 @@ void EkfSimApp::printTable(std::ostream& out) const
 {
 	const auto& m = summary;
 	const auto row = [&](const char* name, double v, const char* unit)
-	{ out << "  " << std::left << std::setw(38) << name << std::setprecision(6) << v << " " << unit << "\n"; };
+	{
+		out << "  " << std::left << std::setw(38) << name << std::setprecision(6) << v << " "
+		    << unit << "\n";
+	};
 	out << "mrolr-ekf-sim: " << m.runs << " runs of " << m.steps << " steps on " << world_path
-		<< " (" << slam::toString(setup.slam.update_method) << " updates)\n";
-	out << "  " << std::left << std::setw(38) << "mean NEES 95% bounds" << "[" << m.nees_lo << ", "
-		<< m.nees_hi << "]\n";
+	    << " (" << slam::toString(setup.slam.update_method) << " updates)\n";
+	out << "  " << std::left << std::setw(38) << "mean NEES 95% bounds"
+	    << "[" << m.nees_lo << ", " << m.nees_hi << "]\n";
 	row("steps with mean NEES inside", m.nees_inside_fraction, "");
 	row("mean NIS (3 expected)", m.mean_nis, "");
 	row("SLAM RMS position error", m.slam_rms_position_m, "m");

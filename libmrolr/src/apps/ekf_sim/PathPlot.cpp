@@ -28,11 +28,14 @@ View fit(const world::World& w, const RunResult& run)
 {
 	double zmin = 1e9, zmax = -1e9, xmin = 1e9, xmax = -1e9;
 	const auto add = [&](double z, double x)
-	{ zmin = std::min(zmin, z), zmax = std::max(zmax, z), xmin = std::min(xmin, x), xmax = std::max(xmax, x); };
+	{
+		zmin = std::min(zmin, z), zmax = std::max(zmax, z), xmin = std::min(xmin, x),
+		xmax = std::max(xmax, x);
+	};
 	for (const auto& l : w.landmarks) add(l.p_LinW.z(), l.p_LinW.x());
 	for (const auto& s : run.steps)
 		add(s.truth[0], s.truth[1]), add(s.estimate[0], s.estimate[1]),
-			add(s.dead_reckoning[0], s.dead_reckoning[1]);
+		    add(s.dead_reckoning[0], s.dead_reckoning[1]);
 	View v;
 	v.z0 = zmax;
 	v.x0 = xmax;
@@ -41,23 +44,30 @@ View fit(const world::World& w, const RunResult& run)
 }
 
 /** 95 % ellipse of the (z, x) covariance C centred at (z, x). */
-void drawEllipse(cv::Mat& img, const View& v, double z, double x, const Eigen::Matrix2d& C, const cv::Scalar& colour)
+void drawEllipse(cv::Mat& img, const View& v, double z, double x, const Eigen::Matrix2d& C,
+                 const cv::Scalar& colour)
 {
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> e(C);
 	const Eigen::Vector2d l = e.eigenvalues().cwiseMax(0);
-	const Eigen::Vector2d d = e.eigenvectors().col(1);	// major axis in (z, x)
+	const Eigen::Vector2d d = e.eigenvectors().col(1);  // major axis in (z, x)
 	// In the image, z is −row and x is −column: the axis (dz, dx) points to (−dx, −dz) in pixels.
 	const double angle = std::atan2(-d[0], -d[1]) * 180 / M_PI;
-	const cv::Size2d axes(std::sqrt(kChi2_95_2dof * l[1]) * v.scale, std::sqrt(kChi2_95_2dof * l[0]) * v.scale);
-	cv::ellipse(img, cv::RotatedRect(v.px(z, x), cv::Size2f(2 * axes.width, 2 * axes.height), angle), colour, 1, cv::LINE_AA);
+	const cv::Size2d axes(std::sqrt(kChi2_95_2dof * l[1]) * v.scale,
+	                      std::sqrt(kChi2_95_2dof * l[0]) * v.scale);
+	cv::ellipse(img,
+	            cv::RotatedRect(v.px(z, x), cv::Size2f(2 * axes.width, 2 * axes.height), angle),
+	            colour, 1, cv::LINE_AA);
 }
 
-void drawPath(cv::Mat& img, const View& v, const RunResult& run, int which, const cv::Scalar& colour)
+void drawPath(cv::Mat& img, const View& v, const RunResult& run, int which,
+              const cv::Scalar& colour)
 {
 	std::vector<cv::Point> pts;
 	for (const auto& s : run.steps)
 	{
-		const Eigen::Vector3d& p = which == 0 ? s.truth : which == 1 ? s.estimate : s.dead_reckoning;
+		const Eigen::Vector3d& p = which == 0   ? s.truth
+		                           : which == 1 ? s.estimate
+		                                        : s.dead_reckoning;
 		pts.push_back(v.px(p[0], p[1]));
 	}
 	cv::polylines(img, pts, false, colour, 2, cv::LINE_AA);
@@ -65,9 +75,11 @@ void drawPath(cv::Mat& img, const View& v, const RunResult& run, int which, cons
 
 void drawLegend(cv::Mat& img)
 {
-	const std::pair<const char*, cv::Scalar> items[] = {{"true path", {0, 160, 0}},
-		{"EKF-SLAM estimate (95% ellipses)", {200, 0, 0}}, {"dead reckoning", {0, 0, 220}},
-		{"landmarks (filled: known), mapped features", {0, 0, 0}}};
+	const std::pair<const char*, cv::Scalar> items[] = {
+	    {"true path", {0, 160, 0}},
+	    {"EKF-SLAM estimate (95% ellipses)", {200, 0, 0}},
+	    {"dead reckoning", {0, 0, 220}},
+	    {"landmarks (filled: known), mapped features", {0, 0, 0}}};
 	int y = 20;
 	for (const auto& [text, colour] : items)
 	{
@@ -83,8 +95,8 @@ void writePathPlot(const std::string& png, const world::World& w, const RunResul
 	const View v = fit(w, run);
 	for (const auto& l : w.landmarks)
 		cv::rectangle(img, v.px(l.p_LinW.z(), l.p_LinW.x()) - cv::Point2d(4, 4),
-					  v.px(l.p_LinW.z(), l.p_LinW.x()) + cv::Point2d(4, 4), {0, 0, 0},
-					  l.known ? cv::FILLED : 1);
+		              v.px(l.p_LinW.z(), l.p_LinW.x()) + cv::Point2d(4, 4), {0, 0, 0},
+		              l.known ? cv::FILLED : 1);
 	for (size_t i = 0; i < run.final_positions.size(); ++i)
 	{
 		const auto& p = run.final_positions[i];
@@ -99,7 +111,7 @@ void writePathPlot(const std::string& png, const world::World& w, const RunResul
 	drawPath(img, v, run, 1, {200, 0, 0});
 	for (size_t k = 0; k < run.steps.size(); k += 5)
 		drawEllipse(img, v, run.steps[k].estimate[0], run.steps[k].estimate[1],
-					run.steps[k].P_vv.topLeftCorner<2, 2>(), {200, 0, 0});
+		            run.steps[k].P_vv.topLeftCorner<2, 2>(), {200, 0, 0});
 	drawLegend(img);
 	if (!cv::imwrite(png, img)) throw std::runtime_error("cannot write '" + png + "'");
 }

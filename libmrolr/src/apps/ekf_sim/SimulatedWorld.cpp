@@ -16,13 +16,13 @@ base::LabmateOptions trueMotion(const SimulationSetup& s)
 }
 }  // namespace
 
-SimulatedWorld::SimulatedWorld(
-	const world::World& world, const SimulationSetup& setup, uint64_t seed)
-	: m_world(world),
-	  m_setup(setup),
-	  m_model(trueMotion(setup)),
-	  m_rng(seed),
-	  m_first_seen(world.landmarks.size())
+SimulatedWorld::SimulatedWorld(const world::World& world, const SimulationSetup& setup,
+                               uint64_t seed)
+    : m_world(world),
+      m_setup(setup),
+      m_model(trueMotion(setup)),
+      m_rng(seed),
+      m_first_seen(world.landmarks.size())
 {
 }
 
@@ -34,7 +34,7 @@ void SimulatedWorld::move(const base::WheelControl& u)
 	t.v1_mps += f * std::abs(u.v1_mps) * n(m_rng);
 	t.v2_mps += f * std::abs(u.v2_mps) * n(m_rng);
 	if (m_slip_left == 0 &&
-		std::uniform_real_distribution<double>(0, 1)(m_rng) < m_setup.sim.slip_burst_probability)
+	    std::uniform_real_distribution<double>(0, 1)(m_rng) < m_setup.sim.slip_burst_probability)
 	{
 		m_slip_left = m_setup.sim.slip_burst_length_steps;
 		m_slip_wheel = std::uniform_int_distribution<int>(0, 1)(m_rng);
@@ -49,8 +49,8 @@ void SimulatedWorld::move(const base::WheelControl& u)
 
 Eigen::Vector3d SimulatedWorld::trueAngles(size_t k) const
 {
-	return slam::predictMeasurement(
-		m_pose, m_world.landmarks.at(k).p_LinW, m_setup.slam.head.constants);
+	return slam::predictMeasurement(m_pose, m_world.landmarks.at(k).p_LinW,
+	                                m_setup.slam.head.constants);
 }
 
 bool SimulatedWorld::visible(size_t k) const
@@ -60,9 +60,10 @@ bool SimulatedWorld::visible(size_t k) const
 	if ((lm.p_LinW - slam::headCentreInW(m_pose, head)).norm() > m_setup.sim.max_range_m)
 		return false;
 	if (lm.known || !m_first_seen[k])
-		return slam::headCanFixate(m_pose, lm.p_LinW, m_setup.slam.head) == slam::Visibility::Visible;
+		return slam::headCanFixate(m_pose, lm.p_LinW, m_setup.slam.head) ==
+		       slam::Visibility::Visible;
 	return slam::assessVisibility(m_pose, lm.p_LinW, *m_first_seen[k], m_setup.slam) ==
-		slam::Visibility::Visible;
+	       slam::Visibility::Visible;
 }
 
 Eigen::Vector3d SimulatedWorld::measure(size_t k, bool allow_outlier, bool& outlier)
@@ -70,9 +71,8 @@ Eigen::Vector3d SimulatedWorld::measure(size_t k, bool allow_outlier, bool& outl
 	std::normal_distribution<double> n(0, 1);
 	const auto& s = m_setup.sim;
 	Eigen::Vector3d h = trueAngles(k);
-	h += Eigen::Vector3d(
-		s.true_std_pan_rad * n(m_rng), s.true_std_elevation_rad * n(m_rng),
-		s.true_std_vergence_rad * n(m_rng));
+	h += Eigen::Vector3d(s.true_std_pan_rad * n(m_rng), s.true_std_elevation_rad * n(m_rng),
+	                     s.true_std_vergence_rad * n(m_rng));
 	std::uniform_real_distribution<double> u(0, 1);
 	outlier = allow_outlier && u(m_rng) < s.outlier_fraction;
 	if (outlier)

@@ -11,7 +11,7 @@ namespace mrolr::apps::detail
 {
 class SimulatedWorld
 {
-   public:
+ public:
 	SimulatedWorld(const world::World& world, const SimulationSetup& setup, uint64_t seed);
 
 	const Eigen::Vector3d& pose() const { return m_pose; }
@@ -29,7 +29,7 @@ class SimulatedWorld
 	/** Index of the landmark called @p name; throws std::out_of_range when there is none. */
 	size_t landmarkIndex(const std::string& name) const;
 
-   private:
+ private:
 	const world::World& m_world;
 	const SimulationSetup& m_setup;
 	base::LabmateModel m_model;

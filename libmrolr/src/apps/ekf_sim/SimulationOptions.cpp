@@ -11,9 +11,8 @@ namespace mrolr::apps
 {
 namespace
 {
-double readIn(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
-	double lo, double hi)
+double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
+              const std::string& key, double lo, double hi)
 {
 	const double v = util::readDouble(cfg, s, key);
 	util::requireInRange(cfg, s, key, v, lo, hi);
@@ -29,8 +28,8 @@ mrpt::config::CConfigFile openIni(const std::string& path, const std::string& na
 }
 }  // namespace
 
-void SimulationOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& s)
+void SimulationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                           const std::string& s)
 {
 	seed = static_cast<uint64_t>(readIn(cfg, s, "seed", 0, 4e18));
 	true_velocity_noise_fraction = readIn(cfg, s, "true_velocity_noise_fraction", 0, 1);
@@ -52,17 +51,17 @@ void SimulationOptions::loadFromConfigFile(
 void SimulationOptions::dumpToTextStream(std::ostream& out) const
 {
 	out << "[simulation]\nseed = " << seed
-		<< "\ntrue_velocity_noise_fraction = " << true_velocity_noise_fraction
-		<< "\ntrue_std_pan_rad = " << true_std_pan_rad
-		<< "\ntrue_std_elevation_rad = " << true_std_elevation_rad
-		<< "\ntrue_std_vergence_rad = " << true_std_vergence_rad
-		<< "\nslip_burst_probability = " << slip_burst_probability
-		<< "\nslip_burst_length_steps = " << slip_burst_length_steps
-		<< "\nslip_fraction = " << slip_fraction << "\noutlier_fraction = " << outlier_fraction
-		<< "\noutlier_magnitude_rad = " << outlier_magnitude_rad
-		<< "\nmeasurements_per_step = " << measurements_per_step
-		<< "\nmax_range_m = " << max_range_m << "\nsearch_pan_deg = " << search_pan_deg
-		<< "\nsearch_window_deg = " << search_window_deg << "\nlaps = " << laps << "\n";
+	    << "\ntrue_velocity_noise_fraction = " << true_velocity_noise_fraction
+	    << "\ntrue_std_pan_rad = " << true_std_pan_rad
+	    << "\ntrue_std_elevation_rad = " << true_std_elevation_rad
+	    << "\ntrue_std_vergence_rad = " << true_std_vergence_rad
+	    << "\nslip_burst_probability = " << slip_burst_probability
+	    << "\nslip_burst_length_steps = " << slip_burst_length_steps
+	    << "\nslip_fraction = " << slip_fraction << "\noutlier_fraction = " << outlier_fraction
+	    << "\noutlier_magnitude_rad = " << outlier_magnitude_rad
+	    << "\nmeasurements_per_step = " << measurements_per_step
+	    << "\nmax_range_m = " << max_range_m << "\nsearch_pan_deg = " << search_pan_deg
+	    << "\nsearch_window_deg = " << search_window_deg << "\nlaps = " << laps << "\n";
 }
 
 SimulationSetup SimulationSetup::load(const std::string& path)
@@ -75,12 +74,12 @@ SimulationSetup SimulationSetup::load(const std::string& path)
 	const fs::path dir = fs::path(path).parent_path();
 	const auto relative = [&](const std::string& key)
 	{ return (dir / util::readString(cfg, "simulation", key)).string(); };
-	const auto labmate =
-		openIni(relative("labmate_config_file"), util::describeKey(cfg, "simulation", "labmate_config_file"));
+	const auto labmate = openIni(relative("labmate_config_file"),
+	                             util::describeKey(cfg, "simulation", "labmate_config_file"));
 	s.labmate.loadFromConfigFile(labmate, "labmate");
 	s.trajectory.loadFromConfigFile(labmate, "trajectory");
-	const auto head =
-		openIni(relative("bisight_config_file"), util::describeKey(cfg, "simulation", "bisight_config_file"));
+	const auto head = openIni(relative("bisight_config_file"),
+	                          util::describeKey(cfg, "simulation", "bisight_config_file"));
 	s.slam.head.loadFromConfigFile(head, "bisight");
 	return s;
 }

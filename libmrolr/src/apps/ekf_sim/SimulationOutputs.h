@@ -10,8 +10,8 @@ namespace mrolr::apps::detail
 {
 /** steps.csv: one row per run and step (truth, estimate, covariance diagonal, NEES, dead
  * reckoning); nees.csv: the mean NEES per step with its bounds. */
-void writeCsv(
-	const std::string& dir, const std::vector<RunResult>& runs, const MonteCarloSummary& summary);
+void writeCsv(const std::string& dir, const std::vector<RunResult>& runs,
+              const MonteCarloSummary& summary);
 
 /** Top view (z up, x left) of the true, estimated and dead-reckoned paths of @p run with the
  * vehicle's 95 % position ellipses, the true landmarks (known ones filled) and the mapped features
@@ -20,8 +20,7 @@ void writePathPlot(const std::string& png, const world::World& world, const RunR
 
 /** The run as an MRPT rawlog: per step a CActionRobotMovement2D from the commanded odometry and a
  * CSensoryFrame with one CObservationBearingRange holding the measured features (docs/slam.md). */
-void writeRawlog(
-	const std::string& path, const world::World& world, const RunResult& run,
-	const SimulationSetup& setup);
+void writeRawlog(const std::string& path, const world::World& world, const RunResult& run,
+                 const SimulationSetup& setup);
 
 }  // namespace mrolr::apps::detail

@@ -15,19 +15,22 @@ namespace mrolr::apps
 {
 namespace
 {
-Eigen::Vector3d poseOf(const world::Waypoint& w) { return {w.z_m, w.x_m, w.phi_rad}; }
+Eigen::Vector3d poseOf(const world::Waypoint& w)
+{
+	return {w.z_m, w.x_m, w.phi_rad};
+}
 
 class RunEngine
 {
-   public:
+ public:
 	RunEngine(const world::World& w, const SimulationSetup& s, uint64_t seed)
-		: m_world(w), m_setup(s), m_model(s.labmate), m_truth(w, s, seed), m_filter(s.slam, m_model)
+	    : m_world(w), m_setup(s), m_model(s.labmate), m_truth(w, s, seed), m_filter(s.slam, m_model)
 	{
 	}
 
 	RunResult run();
 
-   private:
+ private:
 	void step(const std::vector<base::PlannedStep>& plan, size_t k);
 	std::vector<size_t> predictedVisible();
 	void acquireFeatures();
@@ -45,7 +48,7 @@ class RunEngine
 	detail::SimulatedWorld m_truth;
 	slam::ActiveSlamFilter m_filter;
 	Eigen::Vector3d m_dr = Eigen::Vector3d::Zero();
-	std::string m_tracked;	///< label of the feature being tracked
+	std::string m_tracked;                             ///< label of the feature being tracked
 	Eigen::Vector3d m_head = Eigen::Vector3d::Zero();  ///< ideal-head angles now
 	std::vector<std::pair<std::string, Eigen::Vector3d>> m_step_measurements;
 	int m_step_accepted = 0;
@@ -66,8 +69,8 @@ RunResult RunEngine::run()
 	for (int lap = 0; lap < m_setup.sim.laps; ++lap)
 		for (size_t w = 1; w < m_world.waypoints.size(); ++w)
 		{
-			const auto plan =
-				base::planLeg(m_filter.vehicle(), poseOf(m_world.waypoints[w]), m_model, m_setup.trajectory);
+			const auto plan = base::planLeg(m_filter.vehicle(), poseOf(m_world.waypoints[w]),
+			                                m_model, m_setup.trajectory);
 			for (size_t k = 0; k < plan.size(); ++k) step(plan, k);
 		}
 	finish();
@@ -106,7 +109,7 @@ std::vector<size_t> RunEngine::predictedVisible()
 		const auto& info = m_filter.info(i);
 		const Eigen::Vector3d y = m_filter.feature(i);
 		const auto v = info.known ? slam::headCanFixate(xv, y, m_setup.slam.head)
-								  : slam::assessVisibility(xv, y, info.p_C0atInitInW, m_setup.slam);
+		                          : slam::assessVisibility(xv, y, info.p_C0atInitInW, m_setup.slam);
 		if (v == slam::Visibility::Visible) out.push_back(i);
 	}
 	return out;
@@ -115,10 +118,12 @@ std::vector<size_t> RunEngine::predictedVisible()
 void RunEngine::acquireFeatures()
 {
 	// 5.7: fewer than min_visible_features visible → search left, ahead, right for new ones.
-	const double k = M_PI / 180, dirs[3] = {m_setup.sim.search_pan_deg, 0, -m_setup.sim.search_pan_deg};
+	const double k = M_PI / 180,
+	             dirs[3] = {m_setup.sim.search_pan_deg, 0, -m_setup.sim.search_pan_deg};
 	for (double dir_deg : dirs)
 	{
-		if (static_cast<int>(predictedVisible().size()) >= m_setup.slam.min_visible_features) return;
+		if (static_cast<int>(predictedVisible().size()) >= m_setup.slam.min_visible_features)
+			return;
 		std::optional<size_t> best;
 		double best_off = m_setup.sim.search_window_deg * k;
 		for (size_t l = 0; l < m_world.landmarks.size(); ++l)

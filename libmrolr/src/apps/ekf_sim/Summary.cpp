@@ -48,9 +48,10 @@ void errorFigures(const std::vector<RunResult>& runs, MonteCarloSummary& s)
 			head2 += std::pow(base::wrapAngle(st.truth[2] - st.estimate[2]), 2);
 			++n;
 		}
-		s.slam_final_position_error_m += positionError(r.steps.back().truth, r.steps.back().estimate);
+		s.slam_final_position_error_m +=
+		    positionError(r.steps.back().truth, r.steps.back().estimate);
 		s.dr_final_position_error_m +=
-			positionError(r.steps.back().truth, r.steps.back().dead_reckoning);
+		    positionError(r.steps.back().truth, r.steps.back().dead_reckoning);
 		for (double v : r.nis) nis += v, ++n_nis;
 		lm_sum += r.landmark_error_sum_m;
 		landmarks += r.landmark_count;
