@@ -25,7 +25,7 @@ TEST(recognizer_exact, every_object_found_with_exact_pose)
 	for (size_t k = 0; k < objects.size(); ++k)
 	{
 		const auto T = somePose(static_cast<int>(k));
-		const auto scene = transformWireFrame(objects[k], T);
+		const auto scene = placeInScene(objects[k], T);
 		const Recognizer rec(objects[k], opts);
 		const auto r = rec.recognize(scene);
 		ASSERT_TRUE(r.found) << objects[k].name;
@@ -45,7 +45,7 @@ TEST(recognizer_exact, exact_pose_among_the_other_objects)
 	for (size_t k = 0; k < objects.size(); ++k)
 	{
 		poses.push_back(tablePose(29.0 * k, 30, Eigen::Vector3d(-500 + 110.0 * k, -100, 800)));
-		appendWireFrame(scene, transformWireFrame(objects[k], poses.back()));
+		appendWireFrame(scene, placeInScene(objects[k], poses.back()));
 	}
 	for (size_t k = 0; k < objects.size(); ++k)
 	{

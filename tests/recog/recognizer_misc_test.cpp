@@ -34,7 +34,7 @@ TEST(recognizer_misc, arun_and_both_pose_methods)
 		for (size_t k : {0u, 1u, 4u, 9u})
 		{
 			const auto T = tablePose(33.0 * k, 30, Eigen::Vector3d(0, -120, 750));
-			const auto r = Recognizer(objects[k], opts).recognize(transformWireFrame(objects[k], T));
+			const auto r = Recognizer(objects[k], opts).recognize(placeInScene(objects[k], T));
 			ASSERT_TRUE(r.found) << method << " " << objects[k].name;
 			EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6) << method;
 		}
@@ -53,7 +53,7 @@ TEST(recognizer_misc, model_area_cliques)
 		const auto T = tablePose(20.0 * k, 35, Eigen::Vector3d(10, -120, 700));
 		const Recognizer rec(objects[k], opts);
 		EXPECT_FALSE(rec.table().cliques().empty());
-		const auto r = rec.recognize(transformWireFrame(objects[k], T));
+		const auto r = rec.recognize(placeInScene(objects[k], T));
 		ASSERT_TRUE(r.found) << objects[k].name;
 		EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6);
 	}

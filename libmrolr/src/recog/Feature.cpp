@@ -1,3 +1,4 @@
+#include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Feature.h>
 
 #include <cmath>
@@ -45,24 +46,11 @@ Feature conicFeature(const model::WireFrame& wf, const model::Conic3& c)
 	f.m = f.p1 = f.p2 = c.centre;
 	f.a_mm = std::max(c.a, c.b);
 	f.b_mm = std::min(c.a, c.b);
-	f.len_mm = arcLength(c);
+	f.len_mm = model::arcLength(c);
 	if (f.len_mm < 1e-9) reject(wf, "conic", c.id, "has an empty arc");
 	return f;
 }
 }  // namespace
-
-double arcLength(const model::Conic3& c)
-{
-	const int n = 64;
-	const double dt = (c.t2 - c.t1) / n;
-	double s = 0;
-	for (int i = 0; i < n; ++i)
-	{
-		const double t = c.t1 + (i + 0.5) * dt;
-		s += std::hypot(c.a * std::sin(t), c.b * std::cos(t)) * std::abs(dt);
-	}
-	return s;
-}
 
 Feature Feature::flipped() const
 {

@@ -1,3 +1,4 @@
+#include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Feature.h>
 #include <mrolr/recog/SyntheticScene.h>
 
@@ -47,6 +48,7 @@ void addConic(
 	c.id = static_cast<int>(out.lines.size() + out.conics.size()) + 1;
 	c.centre += gaussian3(rng, n.endpoint_sigma_mm);
 	c.normal = (c.normal + gaussian3(rng, n.endpoint_sigma_mm / std::max(c.a, 1.0))).normalized();
+	c.major = (c.major - c.major.dot(c.normal) * c.normal).normalized();  // keep it in the plane
 	const double dr = std::normal_distribution<>(0, n.endpoint_sigma_mm > 0 ? n.endpoint_sigma_mm : 1e-300)(rng);
 	c.a += dr;
 	c.b += dr;
@@ -58,21 +60,6 @@ void addConic(
 	out.conics.push_back(c);
 }
 }  // namespace
-
-model::WireFrame transformWireFrame(const model::WireFrame& wf, const Eigen::Isometry3d& T)
-{
-	model::WireFrame out = wf;
-	out.frame = model::WireFrameFrame::LeftCamera;
-	for (auto& l : out.lines) l.p1 = T * l.p1, l.p2 = T * l.p2;
-	for (auto& c : out.conics)
-	{
-		c.centre = T * c.centre;
-		c.normal = T.linear() * c.normal;
-		c.major = T.linear() * c.major;
-	}
-	out.grasp.p_mm = T * out.grasp.p_mm;
-	return out;
-}
 
 model::WireFrame corruptScene(
 	const model::WireFrame& wf, const SceneNoise& noise, std::mt19937& rng,
@@ -96,7 +83,7 @@ model::WireFrame corruptScene(
 	for (const auto& l : wf.lines)
 		if (keep(0.5 * (l.p1 + l.p2), l.length())) addLine(out, l, noise, rng);
 	for (const auto& c : wf.conics)
-		if (keep(c.centre, arcLength(c))) addConic(out, c, noise, rng);
+		if (keep(c.centre, model::arcLength(c))) addConic(out, c, noise, rng);
 	if (visible_fraction) *visible_fraction = total > 0 ? kept / total : 0;
 	return out;
 }
@@ -147,7 +134,7 @@ TableScene makeTableScene(
 		const double x = 260.0 * (slots[i] - 0.5 * (static_cast<double>(slots.size()) - 1));
 		const auto T = tablePose(yaw(rng), tilt(rng), Eigen::Vector3d(x, -150, depth(rng)));
 		double visible = 0;
-		const auto seen = corruptScene(transformWireFrame(objects[chosen[i]], T), noise, rng, &visible);
+		const auto seen = corruptScene(placeInScene(objects[chosen[i]], T), noise, rng, &visible);
 		appendWireFrame(ts.scene, seen);
 		if (i == 0 && target >= 0) ts.T_OinS = T, ts.visible_fraction = visible;
 	}

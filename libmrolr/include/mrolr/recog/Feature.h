@@ -37,9 +37,6 @@ struct Feature
 	Feature transformed(const Eigen::Isometry3d& T) const;
 };
 
-/** Arc length of a conic arc (mm), by numerical integration of |x'(t)|. */
-double arcLength(const model::Conic3& c);
-
 /** Lines then conics of @p wf; degenerate elements (zero length, zero radius, non-finite values)
  * are rejected with std::invalid_argument naming the element id. */
 std::vector<Feature> featuresOf(const model::WireFrame& wf);

@@ -3,6 +3,7 @@
  * one side (back features hidden), with missing segments, fragmented lines, endpoint noise,
  * arbitrary endpoint order and normal sign, and clutter from other objects. Millimetres. */
 
+#include <mrolr/model/SceneModel.h>
 #include <mrolr/model/WireFrame.h>
 
 #include <Eigen/Geometry>
@@ -21,8 +22,11 @@ struct SceneNoise
 	double flip_probability = 0.5;  ///< chance of swapping a line's endpoints / a conic's normal
 };
 
-/** @p wf with every element carried by T (frame of the result: LeftCamera). */
-model::WireFrame transformWireFrame(const model::WireFrame& wf, const Eigen::Isometry3d& T);
+/** @p wf carried by T_OinS into the left-camera frame (model::transformWireFrame). */
+inline model::WireFrame placeInScene(const model::WireFrame& wf, const Eigen::Isometry3d& T_OinS)
+{
+	return model::transformWireFrame(wf, T_OinS, model::WireFrameFrame::LeftCamera);
+}
 
 /** Applies @p noise to @p wf (already in scene coordinates); @p visible_fraction receives the
  * fraction of the model's line+arc length that survives hiding and dropping. */

@@ -1,0 +1,63 @@
+#pragma once
+/** `mrolr-recognize`: recognise object models in scene wire-frames and report their poses (issue 7,
+ * thesis 6.3–6.4).
+ *
+ *     mrolr-recognize --model M.wf [--model M2.wf ...]
+ *                     (--scene S.wf [--scene S2.wf ...] | --left L.png --right R.png --calib C.ini)
+ *                     [--config config/recognition.ini] [--scene-config config/model.ini]
+ *                     [--overlay OUT.png] [--scene3d OUT.3Dscene] [--json]
+ *
+ * Several --scene files are the scene models of a pan sweep, searched in order (the first scene
+ * that recognises a model ends that model's search). With --left/--right/--calib the scene is built
+ * from the stereo pair by stereo::reconstructScene ([scene] of --scene-config). --overlay draws the
+ * recognised models on the left image (needs --left and --calib, also with --scene).
+ *
+ *     mrolr-recognize --make-demo DIR
+ *
+ * writes the ten synthetic lab objects (DIR/models/NAME.wf) and noisy, cluttered table scenes with
+ * their truth (DIR/scenes/table_K.wf, DIR/scenes/truth.json) for trying the tool. */
+
+#include <mrolr/model/WireFrame.h>
+#include <mrolr/recog/Recognizer.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mrolr::apps
+{
+class RecognizeApp
+{
+   public:
+	/** Parses the arguments (argv[0] first); throws util::UsageError for bad or missing ones. */
+	void initialize(const std::vector<std::string>& args);
+
+	/** Loads models, options and scenes, recognises every model, prints the results (text or one
+	 * JSON object) and writes the overlay / 3D scene. Returns the exit code (0 also when objects
+	 * are not found: "not found" is an answer). */
+	int run(std::ostream& out);
+
+	// Inputs (set by initialize)
+	std::vector<std::string> model_paths, scene_paths;
+	std::string left_png, right_png, calib_path;
+	std::string config_path = "config/recognition.ini";
+	std::string scene_config_path = "config/model.ini";
+	std::string overlay_png, scene3d_path;
+	std::string demo_dir;  ///< --make-demo
+	bool json = false;
+	bool help_shown = false;
+
+	// Results (set by run)
+	recog::RecognitionOptions options;
+	std::vector<model::WireFrame> models;
+	std::vector<model::WireFrame> scenes;  ///< the scene models searched, in order
+	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
+
+   private:
+	void loadScenes();
+	void writeDemo(std::ostream& out) const;
+	void printText(std::ostream& out) const;
+	void printJson(std::ostream& out) const;
+};
+
+}  // namespace mrolr::apps

@@ -1,0 +1,145 @@
+#include "RecognizeOutput.h"
+
+#include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/model/SceneModel.h>
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/stereo/SceneReconstruction.h>
+#include <mrolr/util/Cli.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/recog/SyntheticScene.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+
+namespace mrolr::apps
+{
+namespace
+{
+/** A shipped file (config/...) relative to the working directory, or else to the source tree. */
+std::string projectFile(const std::string& path)
+{
+	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
+	if (!std::filesystem::exists(path) && std::filesystem::exists(in_source)) return in_source;
+	if (!std::filesystem::exists(path))
+		throw std::runtime_error("configuration file '" + path + "' does not exist");
+	return path;
+}
+
+cv::Mat readImage(const std::string& path, int flags)
+{
+	cv::Mat img = cv::imread(path, flags);
+	if (img.empty()) throw std::runtime_error("cannot read image '" + path + "'");
+	return img;
+}
+
+void printMatrix(std::ostream& out, const Eigen::Matrix4d& T)
+{
+	for (int r = 0; r < 4; ++r)
+	{
+		out << "    ";
+		for (int c = 0; c < 4; ++c) out << std::setw(12) << T(r, c);
+		out << "\n";
+	}
+}
+}  // namespace
+
+void RecognizeApp::loadScenes()
+{
+	for (const auto& p : scene_paths) scenes.push_back(model::loadWireFrame(p));
+	if (!scene_paths.empty()) return;
+	const auto calib = stereo::loadStereoCalibration(calib_path);
+	stereo::SceneOptions so;
+	so.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(scene_config_path)), "scene");
+	const auto s = stereo::reconstructScene(
+		readImage(left_png, cv::IMREAD_GRAYSCALE), readImage(right_png, cv::IMREAD_GRAYSCALE),
+		calib, so);
+	scenes.push_back(model::sceneToWireFrame(s));
+	scenes.back().name = "stereo";
+}
+
+int RecognizeApp::run(std::ostream& out)
+{
+	if (help_shown) return util::kExitOk;
+	if (!demo_dir.empty())
+	{
+		writeDemo(out);
+		return util::kExitOk;
+	}
+	options.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(config_path)), "recognition");
+	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
+	loadScenes();
+	for (const auto& m : models) results.push_back(recog::Recognizer(m, options).searchSweep(scenes));
+	json ? printJson(out) : printText(out);
+	if (!overlay_png.empty())
+		writeOverlay(
+			readImage(left_png, cv::IMREAD_COLOR), stereo::loadStereoCalibration(calib_path),
+			scenes, models, results, overlay_png);
+	if (!scene3d_path.empty()) writeScene3D(scenes, models, results, scene3d_path);
+	return util::kExitOk;
+}
+
+void RecognizeApp::writeDemo(std::ostream& out) const
+{
+	namespace fs = std::filesystem;
+	const auto objects = recog::makeLabObjects();
+	fs::create_directories(fs::path(demo_dir) / "models");
+	fs::create_directories(fs::path(demo_dir) / "scenes");
+	for (const auto& o : objects)
+		model::saveWireFrame(o, (fs::path(demo_dir) / "models" / (o.name + ".wf")).string());
+	recog::SceneNoise noise;
+	noise.endpoint_sigma_mm = 0.7, noise.fragment_probability = 0.3, noise.missing_fraction = 0.15;
+	noise.hide_back_side = true;
+	nlohmann::json truth = nlohmann::json::array();
+	for (int k = 0; k < 4; ++k)
+	{
+		const auto ts = recog::makeTableScene(objects, k < 3 ? k : -1, 3, noise, 4242 + k);
+		const auto name = "table_" + std::to_string(k);
+		model::saveWireFrame(ts.scene, (fs::path(demo_dir) / "scenes" / (name + ".wf")).string());
+		truth.push_back({{"scene", name + ".wf"},
+						 {"target", ts.target >= 0 ? objects[ts.target].name : "none"},
+						 {"T", resultJson([&] {
+							  recog::RecognitionResult r;
+							  r.T_OinS = ts.T_OinS;
+							  return r;
+						  }())["T"]},
+						 {"visible_fraction", ts.visible_fraction}});
+	}
+	std::ofstream((fs::path(demo_dir) / "scenes" / "truth.json").string()) << truth.dump(2) << "\n";
+	out << "wrote " << objects.size() << " models and 4 scenes under " << demo_dir << "\n";
+}
+
+void RecognizeApp::printText(std::ostream& out) const
+{
+	out << std::fixed << std::setprecision(3);
+	for (const auto& r : results)
+	{
+		if (!r.found)
+		{
+			out << r.model << ": not found (best score " << r.score << ", " << r.ms << " ms)\n";
+			continue;
+		}
+		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
+		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
+			<< ", score " << r.score << ", confidence " << r.confidence << ", " << r.matched
+			<< " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
+		printMatrix(out, r.T_OinS.matrix());
+		out << "  roll pitch yaw (deg): " << rpy.transpose() << "\n  translation (mm): "
+			<< r.T_OinS.translation().transpose() << "\n  agreeing cliques: " << r.agreeing_cliques
+			<< ", spread " << r.spread_rot_deg << " deg, " << r.spread_trans_mm << " mm\n";
+	}
+}
+
+void RecognizeApp::printJson(std::ostream& out) const
+{
+	nlohmann::json results_json = nlohmann::json::array();
+	for (const auto& r : results) results_json.push_back(resultJson(r));
+	out << nlohmann::json{{"results", results_json}}.dump(2) << "\n";
+}
+
+}  // namespace mrolr::apps
