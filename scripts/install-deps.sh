@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake make pkg-config git
+  build-essential cmake make pkg-config git ccache
   libmrpt-dev mrpt-apps mrpt-common
   libeigen3-dev nlohmann-json3-dev
   libopencv-dev libopencv-contrib-dev
