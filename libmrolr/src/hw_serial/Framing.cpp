@@ -43,7 +43,7 @@ Unframed unframeLine(std::string_view line)
 	const size_t star = line.rfind('*');
 	if (star == std::string_view::npos || star + 3 != line.size())
 	{
-		u.error = "missing '*HH' checksum";
+		u.error = "no checksum at the end of the line";
 		return u;
 	}
 	const int hi = hexValue(line[star + 1]), lo = hexValue(line[star + 2]);

@@ -57,7 +57,7 @@ std::vector<std::string> SerialClient::call(const std::string& verb,
 	const std::string tries = std::to_string(options_.retries + 1) + " attempts of " +
 	                          std::to_string(options_.timeout_ms) + " ms (command " + verb + ")";
 	if (last == Outcome::Garbage)
-		fail(int(Kind::Garbage), "garbage reply '" + printableBytes(garbage) + "' after " + tries);
+		fail(int(Kind::Garbage), garbage + " after " + tries);
 	fail(int(Kind::Timeout), "no reply after " + tries);
 }
 
@@ -85,21 +85,22 @@ SerialClient::Outcome SerialClient::classifyLine(const AssembledLine& line, int 
 {
 	const Unframed u = unframeLine(line.text);
 	const ParsedMessage p = u.ok ? parseMessage(u.body) : ParsedMessage{};
-	const bool reply_word = p.ok && (p.message.word == "OK" || p.message.word == "ERR");
-	const bool device_lost_request = reply_word && p.message.seq == kNoSeq;
-	if (line.overlong || !reply_word || device_lost_request ||
-	    (p.message.word == "ERR" && p.message.fields.empty()))
+	const Message& m = p.message;
+	const bool is_err = m.word == "ERR" && !m.fields.empty();
+	if (line.overlong || !p.ok || (m.word != "OK" && !is_err))
 	{
-		garbage = line.text + (line.overlong ? "...(overlong)" : "");
+		garbage = (line.overlong ? "overlong reply '" : "garbage reply '") +
+		          printableBytes(line.text) + "'";
 		return Outcome::Garbage;
 	}
-	if (p.message.seq != seq) return Outcome::Timeout;
-	if (p.message.word == "ERR" && p.message.fields[0] == errcode::kBadLine)
+	// a BADLINE answer carries no usable sequence number: our request was damaged on the way
+	if (m.seq == kNoSeq || (is_err && m.fields[0] == errcode::kBadLine))
 	{
-		garbage = line.text;
+		garbage = "the device could not read the request: '" + printableBytes(u.body) + "'";
 		return Outcome::Garbage;
 	}
-	reply = p.message;
+	if (m.seq != seq) return Outcome::Timeout;
+	reply = m;
 	return Outcome::Reply;
 }
 
