@@ -29,9 +29,18 @@ nlohmann::json landmarkJson(const sim::LandmarkView& v)
 	        {"right_px", {v.uR, v.vR}}};
 }
 
-nlohmann::json objectJson(const sim::ObjectView& v)
+/** True when the rendered depth at the object's origin pixel is clearly nearer than any part of
+ * the object can be (another object or the scenery stands in front of it). */
+bool originOccluded(const sim::ObjectView& v, const sim::StereoFrame& f)
 {
-	return {{"name", v.name},
+	const float d = f.depth_left_m(int(std::lround(v.vL)), int(std::lround(v.uL)));
+	return d > 0 && d < v.T_OinL.translation().z() - 0.15;
+}
+
+nlohmann::json objectJson(const sim::ObjectView& v, const sim::StereoFrame& f)
+{
+	return {{"origin_occluded", originOccluded(v, f)},
+	        {"name", v.name},
 	        {"model", v.model},
 	        {"left_px_of_origin", {v.uL, v.vL}},
 	        {"T_OinL", matrixJson(v.T_OinL)},
@@ -63,7 +72,7 @@ nlohmann::json truthJson(const world::World& w, const geometry::BiSightHead& hea
 		if (v.visible) j["landmarks"].push_back(landmarkJson(v));
 	j["objects"] = nlohmann::json::array();
 	for (const auto& v : sim::objectViews(w, head, T_C0inW, a))
-		if (v.visible) j["objects"].push_back(objectJson(v));
+		if (v.visible) j["objects"].push_back(objectJson(v, f));
 	j["render_s"] = f.render_s;
 	return j;
 }
