@@ -11,7 +11,7 @@ constexpr size_t kAlternatives = 3;  // equally large consistent sets kept per f
 
 Tolerance toleranceOf(const LevelParams& p)
 {
-	return {p.position_error_mm, p.rotation_deg * M_PI / 180.0};
+	return Tolerance(p.position_error_mm, p.rotation_deg * M_PI / 180.0);
 }
 
 /** Depth-first search for the largest pairwise-consistent choice of one candidate (or none) per
@@ -89,22 +89,28 @@ class ConsistentSetSearch
 	std::vector<std::vector<FeatureMatch>> best_;
 };
 
-/** Scene matches of member j consistent with the focus match. */
+/** Oriented scene features passing member j's unary gate (computed once per clique). */
+std::vector<size_t> gatedFor(
+	const Feature& m, const OrientedScene& scene, const LevelParams& p, bool focus)
+{
+	std::vector<size_t> out;
+	for (size_t o = 0; o < scene.oriented.size(); ++o)
+		if (passesUnaryGate(m, scene.oriented[o], p, focus)) out.push_back(o);
+	return out;
+}
+
+/** Scene matches of member j (among its gated features) consistent with the focus match. */
 std::vector<FeatureMatch> memberCandidates(
-	const ModelTable& model, size_t j, const FeatureMatch& focus, const OrientedScene& scene,
-	const LevelParams& p, const Tolerance& tol)
+	const ModelTable& model, size_t j, const std::vector<size_t>& gated, const FeatureMatch& focus,
+	const OrientedScene& scene, const Tolerance& tol)
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
 	std::vector<FeatureMatch> out;
-	for (size_t o = 0; o < scene.oriented.size(); ++o)
-	{
-		if (o / 2 == focus.scene()) continue;
-		const Feature& s = scene.oriented[o];
-		if (!passesUnaryGate(mf[j], s, p, false)) continue;
-		if (consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented], s, tol))
+	for (size_t o : gated)
+		if (o / 2 != focus.scene() &&
+			consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented], scene.oriented[o], tol))
 			out.push_back({j, o});
-	}
 	return out;
 }
 
@@ -147,14 +153,15 @@ std::vector<CliqueMatch> matchClique(
 	const auto& clique = model.cliques().at(clique_index);
 	const Tolerance tol = toleranceOf(p);
 	const Feature& mfocus = model.features()[clique.focus];
+	std::vector<std::vector<size_t>> gated;
+	for (size_t j : clique.members) gated.push_back(gatedFor(model.features()[j], scene, p, false));
 	std::vector<CliqueMatch> out;
-	for (size_t o = 0; o < scene.oriented.size(); ++o)
+	for (size_t o : gatedFor(mfocus, scene, p, true))
 	{
-		if (!passesUnaryGate(mfocus, scene.oriented[o], p, true)) continue;
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
-		for (size_t j : clique.members)
-			cands.push_back(memberCandidates(model, j, focus, scene, p, tol));
+		for (size_t k = 0; k < clique.members.size(); ++k)
+			cands.push_back(memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
 		for (auto& ms : search.run(focus, cands))
 			if (static_cast<int>(ms.size()) >= p.clique_size)

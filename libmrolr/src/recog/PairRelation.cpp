@@ -65,10 +65,10 @@ bool inside(double slo, double shi, double mlo, double mhi, double tol)
 
 bool consistentLineLine(const PairRelation& m, const PairRelation& s, const Tolerance& t)
 {
-	const double tanT = std::tan(t.theta_rad), b2 = 2 * t.beta_mm;
+	const double tanT = t.tan_theta, b2 = 2 * t.beta_mm;
 	if (m.parallel) return within(s.h, m.h, b2 + std::abs(m.q1) * tanT);
 	if (!within(s.h, m.h, b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT)) return false;
-	const double sinA = std::max(std::sin(m.alpha), 1e-3);
+	const double sinA = std::max(m.sin_alpha, 1e-3);
 	const double tol1 = b2 + std::abs(m.q2) * tanT / sinA;
 	const double tol2 = b2 + std::abs(m.q1) * tanT / sinA;
 	return inside(s.lo1, s.hi1, m.lo1, m.hi1, tol1) && inside(s.lo2, s.hi2, m.lo2, m.hi2, tol2);
@@ -76,15 +76,25 @@ bool consistentLineLine(const PairRelation& m, const PairRelation& s, const Tole
 
 bool consistentLineConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
 {
-	const double tol = 2 * t.beta_mm + (m.h + std::abs(m.ax1)) * std::tan(t.theta_rad);
+	const double tol = 2 * t.beta_mm + (m.h + std::abs(m.ax1)) * t.tan_theta;
 	return within(s.h, m.h, tol) && within(s.ax1, m.ax1, tol) &&
 		inside(s.lo1, s.hi1, m.lo1, m.hi1, tol);
 }
 
 bool consistentConicConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
 {
-	const double b2 = 2 * t.beta_mm, tol = b2 + m.h * std::tan(t.theta_rad);
+	const double b2 = 2 * t.beta_mm, tol = b2 + m.h * t.tan_theta;
 	return within(s.h, m.h, b2) && within(s.ax1, m.ax1, tol) && within(s.ax2, m.ax2, tol);
+}
+
+/** |alpha_scene - alpha_model| <= 2 theta, compared through cosines (no acos in the inner loop). */
+bool angleWithin(double cos_s, const PairRelation& m, const Tolerance& t)
+{
+	const double two = 2 * t.theta_rad;
+	const double hi = m.alpha - two <= 0 ? 1.0 : m.cos_alpha * t.cos_2theta + m.sin_alpha * t.sin_2theta;
+	const double lo =
+		m.alpha + two >= M_PI ? -1.0 : m.cos_alpha * t.cos_2theta - m.sin_alpha * t.sin_2theta;
+	return cos_s >= lo - 1e-12 && cos_s <= hi + 1e-12;
 }
 }  // namespace
 
@@ -92,6 +102,8 @@ PairRelation relate(const Feature& a, const Feature& b, bool parallel)
 {
 	PairRelation r;
 	r.alpha = angleBetween(a.u, b.u);
+	r.cos_alpha = std::cos(r.alpha);
+	r.sin_alpha = std::sin(r.alpha);
 	r.parallel = parallel;
 	if (a.isLine() && b.isLine())
 		parallel ? lineLineParallel(a, b, r) : lineLineSkew(a, b, r);
@@ -117,8 +129,7 @@ bool consistent(
 	const Feature& sb, const Tolerance& tol)
 {
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
-	const double alpha = angleBetween(sa.u, sb.u);
-	if (!within(alpha, m.alpha, 2 * tol.theta_rad)) return false;
+	if (!angleWithin(sa.u.dot(sb.u), m, tol)) return false;
 	const PairRelation s = relate(sa, sb, m.parallel);
 	if (ma.isLine() && mb.isLine()) return consistentLineLine(m, s, tol);
 	if (ma.isLine() || mb.isLine()) return consistentLineConic(m, s, tol);

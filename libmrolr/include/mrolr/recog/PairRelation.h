@@ -9,6 +9,8 @@
 
 #include <mrolr/recog/Feature.h>
 
+#include <cmath>
+
 namespace mrolr::recog
 {
 /** Lines closer to parallel than this (rad) are related by perpendicular distance only. */
@@ -24,6 +26,7 @@ constexpr double kParallelAngle = 15.0 * M_PI / 180.0;
 struct PairRelation
 {
 	double alpha = 0;
+	double cos_alpha = 1, sin_alpha = 0;
 	bool parallel = false;
 	double h = 0;
 	double q1 = 0, q2 = 0;
@@ -34,8 +37,18 @@ struct PairRelation
 /** Position error beta (mm) and rotation error theta (rad) allowed on each feature (6.3.1). */
 struct Tolerance
 {
-	double beta_mm = 3;
-	double theta_rad = 0.035;
+	Tolerance() : Tolerance(3, 0.035) {}
+	Tolerance(double beta, double theta)
+		: beta_mm(beta),
+		  theta_rad(theta),
+		  tan_theta(std::tan(theta)),
+		  cos_2theta(std::cos(2 * theta)),
+		  sin_2theta(std::sin(2 * theta))
+	{
+	}
+	double beta_mm;
+	double theta_rad;
+	double tan_theta, cos_2theta, sin_2theta;  ///< precomputed: the matcher's inner loop
 };
 
 /** Relation of @p b seen from @p a; @p parallel selects the near-parallel form for line pairs
