@@ -24,10 +24,12 @@ Conic3 circle(int id, const Eigen::Vector3d& c, double r, double t1, double t2)
 WireFrame cube()
 {
 	WireFrame wf;
-	auto c = [](int i) { return Eigen::Vector3d(i & 1 ? 50 : -50, i & 2 ? 50 : -50, i & 4 ? 100 : 0); };
+	auto c = [](int i)
+	{ return Eigen::Vector3d(i & 1 ? 50 : -50, i & 2 ? 50 : -50, i & 4 ? 100 : 0); };
 	for (int i = 0; i < 8; ++i)
 		for (int bit : {1, 2, 4})
-			if (!(i & bit)) wf.lines.push_back({static_cast<int>(wf.lines.size()) + 1, c(i), c(i | bit)});
+			if (!(i & bit))
+				wf.lines.push_back({static_cast<int>(wf.lines.size()) + 1, c(i), c(i | bit)});
 	return wf;
 }
 }  // namespace
@@ -35,8 +37,10 @@ WireFrame cube()
 TEST(ModelEditor, MergesOverlappingCollinearLinesButNotParallelNeighbours)
 {
 	WireFrame wf;
-	wf.lines = {{1, {0, 0, 0}, {60, 0, 0}}, {2, {40, 1, 0}, {100, 1, 0}}, {3, {0, 20, 0}, {100, 20, 0}},
-		{4, {101.5, 0.5, 0}, {130, 0.5, 0}}};
+	wf.lines = {{1, {0, 0, 0}, {60, 0, 0}},
+	            {2, {40, 1, 0}, {100, 1, 0}},
+	            {3, {0, 20, 0}, {100, 20, 0}},
+	            {4, {101.5, 0.5, 0}, {130, 0.5, 0}}};
 	EXPECT_EQ(mergeDuplicates(wf), 2u);
 	ASSERT_EQ(wf.lines.size(), 2u);
 	EXPECT_NEAR(wf.lines[0].length(), 130, 1.0);
@@ -46,7 +50,8 @@ TEST(ModelEditor, MergesOverlappingCollinearLinesButNotParallelNeighbours)
 TEST(ModelEditor, MergesConcentricArcsIntoTheirUnion)
 {
 	WireFrame wf;
-	wf.conics = {circle(1, {0, 0, 0}, 40, 0, 2), circle(2, {1, 0, 0}, 41, 1.5, 4), circle(3, {0, 0, 50}, 40, 0, 6)};
+	wf.conics = {circle(1, {0, 0, 0}, 40, 0, 2), circle(2, {1, 0, 0}, 41, 1.5, 4),
+	             circle(3, {0, 0, 50}, 40, 0, 6)};
 	EXPECT_EQ(mergeDuplicates(wf), 1u);
 	ASSERT_EQ(wf.conics.size(), 2u);
 	EXPECT_NEAR(wf.conics[0].t2 - wf.conics[0].t1, 4.0, 0.05);
@@ -101,7 +106,7 @@ TEST(ModelStats, PerfectPartialAndFalseModels)
 
 	WireFrame half = truth;
 	half.lines.resize(6);
-	half.lines[0].p1 += Eigen::Vector3d(0, -2, 0);  // one endpoint 2 mm outside the cube
+	half.lines[0].p1 += Eigen::Vector3d(0, -2, 0);         // one endpoint 2 mm outside the cube
 	half.lines.push_back({50, {300, 0, 0}, {400, 0, 0}});  // far from everything
 	half.conics.push_back(circle(51, {0, 0, 100}, 30, 0, 1));
 	const ModelQuality q = compareToTruth(half, truth);

@@ -18,7 +18,8 @@ TEST(SceneModel, CardsAndDiscAtOneMetreAreRecovered)
 	const auto rig = stereo::test::testRig();
 	cv::Mat L, R;
 	stereo::test::renderPair(faces, rig, L, R);
-	const WireFrame wf = sceneToWireFrame(stereo::reconstructScene(L, R, rig, stereo::SceneOptions()));
+	const WireFrame wf =
+	    sceneToWireFrame(stereo::reconstructScene(L, R, rig, stereo::SceneOptions()));
 	const ModelQuality q = compareToTruth(wf, truth);
 	printQuality(q, std::cout);
 	EXPECT_GE(q.recovered_fraction, 0.6);
@@ -39,10 +40,12 @@ TEST(SceneModel, BoxOnTableSingleViewsRecoverMostVisibleEdges)
 	{
 		cv::Mat L, R;
 		stereo::test::renderPair(test::viewFaces(yaw), rig, L, R, false);
-		const WireFrame wf = sceneToWireFrame(stereo::reconstructScene(L, R, rig, stereo::SceneOptions()));
+		const WireFrame wf =
+		    sceneToWireFrame(stereo::reconstructScene(L, R, rig, stereo::SceneOptions()));
 		const ModelQuality q = compareToTruth(wf, test::visibleTruthInL(yaw));
-		std::cout << "yaw " << yaw << " recovered " << q.recovered_fraction << " false " << q.false_features
-				  << " median endpoint error mm " << q.median_endpoint_error_mm << "\n";
+		std::cout << "yaw " << yaw << " recovered " << q.recovered_fraction << " false "
+		          << q.false_features << " median endpoint error mm " << q.median_endpoint_error_mm
+		          << "\n";
 		EXPECT_GE(q.recovered_fraction, 0.45) << yaw;
 		EXPECT_LT(q.median_endpoint_error_mm, 3.0) << yaw;
 		sum += q.recovered_fraction;

@@ -47,7 +47,8 @@ int errorLine(const std::string& text)
 	}
 	catch (const WireFrameFormatError& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("t.wf:" + std::to_string(e.lineNumber())), std::string::npos);
+		EXPECT_NE(std::string(e.what()).find("t.wf:" + std::to_string(e.lineNumber())),
+		          std::string::npos);
 		return e.lineNumber();
 	}
 	return -1;
@@ -84,7 +85,7 @@ TEST(WireFrameIO, WriteThenReadIsBitExact)
 TEST(WireFrameIO, ReadsCommentsAndNormalisesHandWrittenVectors)
 {
 	std::istringstream in(header(
-		"# a comment\n\nline 1 0 0 0 10 0 0  # trailing\nconic 2 0 0 0 0 0 2 3 0 0 5 5 0 6.28\n"));
+	    "# a comment\n\nline 1 0 0 0 10 0 0  # trailing\nconic 2 0 0 0 0 0 2 3 0 0 5 5 0 6.28\n"));
 	const WireFrame wf = readWireFrame(in);
 	ASSERT_EQ(wf.lines.size(), 1u);
 	ASSERT_EQ(wf.conics.size(), 1u);
@@ -95,13 +96,13 @@ TEST(WireFrameIO, ReadsCommentsAndNormalisesHandWrittenVectors)
 
 TEST(WireFrameIO, RejectsMalformedLinesWithTheirLineNumber)
 {
-	EXPECT_EQ(errorLine(header("line 1 0 0 0 1 1\n")), 4);  // too few fields
-	EXPECT_EQ(errorLine(header("line 1 0 0 0 1 1 x\n")), 4);  // not a number
-	EXPECT_EQ(errorLine(header("line 0 0 0 0 1 1 1\n")), 4);  // id not positive
+	EXPECT_EQ(errorLine(header("line 1 0 0 0 1 1\n")), 4);                        // too few fields
+	EXPECT_EQ(errorLine(header("line 1 0 0 0 1 1 x\n")), 4);                      // not a number
+	EXPECT_EQ(errorLine(header("line 0 0 0 0 1 1 1\n")), 4);                      // id not positive
 	EXPECT_EQ(errorLine(header("line 1 0 0 0 1 1 1\nline 1 0 0 0 2 2 2\n")), 5);  // duplicate
 	EXPECT_EQ(errorLine(header("\nconic 2 0 0 0 0 0 1 0 0 1 5 5 0 1\n")), 5);  // major ⟂ normal
-	EXPECT_EQ(errorLine(header("conic 2 0 0 0 0 0 1 1 0 0 4 5 0 1\n")), 4);  // a < b
-	EXPECT_EQ(errorLine(header("conic 2 0 0 0 0 0 1 1 0 0 5 5 1 1\n")), 4);  // empty arc
+	EXPECT_EQ(errorLine(header("conic 2 0 0 0 0 0 1 1 0 0 4 5 0 1\n")), 4);    // a < b
+	EXPECT_EQ(errorLine(header("conic 2 0 0 0 0 0 1 1 0 0 5 5 1 1\n")), 4);    // empty arc
 	EXPECT_EQ(errorLine(header("polygon 1 2 3\n")), 4);
 	EXPECT_EQ(errorLine(header("clique 1 2 1\n")), 4);  // N disagrees
 	EXPECT_EQ(errorLine(header("grasp 0 0 0 0 0 0\ngrasp 0 0 0 0 0 0\n")), 5);

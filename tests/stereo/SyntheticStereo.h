@@ -23,18 +23,17 @@ struct Face
 };
 
 /** Outline of a rectangle of size w×h (mm) centred at c with in-plane axes u, v (unit). */
-inline Face rectangle(
-	const Eigen::Vector3d& c, const Eigen::Vector3d& u, const Eigen::Vector3d& v, double w, double h,
-	int grey)
+inline Face rectangle(const Eigen::Vector3d& c, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                      double w, double h, int grey)
 {
 	return {{c - w / 2 * u - h / 2 * v, c + w / 2 * u - h / 2 * v, c + w / 2 * u + h / 2 * v,
-				c - w / 2 * u + h / 2 * v},
-		grey};
+	         c - w / 2 * u + h / 2 * v},
+	        grey};
 }
 
 /** A disc of radius r (mm) centred at c in the plane spanned by unit u, v, as 720 vertices. */
-inline Face disc(
-	const Eigen::Vector3d& c, const Eigen::Vector3d& u, const Eigen::Vector3d& v, double r, int grey)
+inline Face disc(const Eigen::Vector3d& c, const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                 double r, int grey)
 {
 	Face f{{}, grey};
 	for (int i = 0; i < 720; ++i)
@@ -60,9 +59,9 @@ inline StereoCalibration testRig(double verge_rad = 0.02)
 
 /** Renders the faces into one camera given p_cam = R·p_Lcv + t: far ones first (by their first
  * vertex) or, with @p depth_sort false, in the given order. */
-inline cv::Mat renderView(
-	const std::vector<Face>& faces, const cv::Matx33d& K, const cv::Matx33d& R, const cv::Vec3d& t,
-	cv::Size size, bool depth_sort = true, int background = 40)
+inline cv::Mat renderView(const std::vector<Face>& faces, const cv::Matx33d& K,
+                          const cv::Matx33d& R, const cv::Vec3d& t, cv::Size size,
+                          bool depth_sort = true, int background = 40)
 {
 	const int ss = 4;
 	cv::Mat big(size.height * ss, size.width * ss, CV_8U, cv::Scalar(background));
@@ -80,8 +79,10 @@ inline cv::Mat renderView(
 		cv::projectPoints(P, rvec, t, K, cv::noArray(), uv);
 		std::vector<cv::Point> poly;
 		for (const auto& q : uv)
-			poly.emplace_back(cvRound((q.x + 0.5) * ss * 16 - 0.5 * 16), cvRound((q.y + 0.5) * ss * 16 - 0.5 * 16));
-		cv::fillPoly(big, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(faces[i].grey), cv::LINE_8, 4);
+			poly.emplace_back(cvRound((q.x + 0.5) * ss * 16 - 0.5 * 16),
+			                  cvRound((q.y + 0.5) * ss * 16 - 0.5 * 16));
+		cv::fillPoly(big, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(faces[i].grey),
+		             cv::LINE_8, 4);
 	}
 	cv::Mat img;
 	cv::resize(big, img, size, 0, 0, cv::INTER_AREA);
@@ -89,11 +90,11 @@ inline cv::Mat renderView(
 }
 
 /** Left and right images of the faces seen by @p rig. */
-inline void renderPair(
-	const std::vector<Face>& faces, const StereoCalibration& rig, cv::Mat& left, cv::Mat& right,
-	bool depth_sort = true)
+inline void renderPair(const std::vector<Face>& faces, const StereoCalibration& rig, cv::Mat& left,
+                       cv::Mat& right, bool depth_sort = true)
 {
-	left = renderView(faces, rig.K_left, cv::Matx33d::eye(), cv::Vec3d(0, 0, 0), rig.image_size, depth_sort);
+	left = renderView(faces, rig.K_left, cv::Matx33d::eye(), cv::Vec3d(0, 0, 0), rig.image_size,
+	                  depth_sort);
 	right = renderView(faces, rig.K_right, rig.R_RfromL, rig.t_LinR_mm, rig.image_size, depth_sort);
 }
 

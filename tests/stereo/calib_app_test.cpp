@@ -14,8 +14,9 @@ namespace
 std::vector<std::string> args(const std::string& board, const std::string& out)
 {
 	const std::string d = "/usr/share/mrpt/datasets/stereo-calib/";
-	return {"mrolr-calib", "--left", d + "*_left.jpg", "--right", d + "*_right.jpg", "--board", board,
-		"--square-mm", "34", "--out", out, "--json"};
+	return {"mrolr-calib", "--left", d + "*_left.jpg", "--right", d + "*_right.jpg",
+	        "--board",     board,    "--square-mm",    "34",      "--out",
+	        out,           "--json"};
 }
 }  // namespace
 

@@ -41,7 +41,8 @@ cv::Mat render(const BoardSpec& b, const cv::Matx33d& K, const cv::Vec3d& rvec, 
 	// texture pixel (u, v) -> board mm ((u - 2 px) s / px, ...): the first inner corner is at 2 px.
 	const double s = b.square_mm / px;
 	const cv::Matx33d A(s, 0, -2 * px * s, 0, s, -2 * px * s, 0, 0, 1);
-	const cv::Matx33d H = K * cv::Matx33d(R(0, 0), R(0, 1), t[0], R(1, 0), R(1, 1), t[1], R(2, 0), R(2, 1), t[2]) * A;
+	const cv::Matx33d H =
+	    K * cv::Matx33d(R(0, 0), R(0, 1), t[0], R(1, 0), R(1, 1), t[1], R(2, 0), R(2, 1), t[2]) * A;
 	cv::Mat img;
 	cv::warpPerspective(tex, img, cv::Mat(H), {640, 480}, cv::INTER_AREA, cv::BORDER_CONSTANT, 160);
 	cv::GaussianBlur(img, img, {3, 3}, 0.7);
@@ -66,8 +67,8 @@ TEST(StereoCalibration, RecoversKnownCalibrationOfRenderedBoards)
 	const cv::Matx33d K(600, 0, 320, 0, 600, 240, 0, 0, 1);
 	const cv::Vec3d t_LinR(-100, 0, 0);  // right camera 100 mm to the right, parallel
 	std::vector<cv::Mat> L, R;
-	const double tilts[][3] = {{0.3, 0.2, 0}, {-0.3, 0.25, 0.1}, {0.2, -0.35, -0.1}, {-0.25, -0.2, 0.2},
-		{0.4, 0, 0.05}, {0, 0.4, -0.05}};
+	const double tilts[][3] = {{0.3, 0.2, 0},      {-0.3, 0.25, 0.1}, {0.2, -0.35, -0.1},
+	                           {-0.25, -0.2, 0.2}, {0.4, 0, 0.05},    {0, 0.4, -0.05}};
 	for (const auto& tl : tilts)
 	{
 		const cv::Vec3d rv(tl[0], tl[1], tl[2]), t(-80, -60, 700);

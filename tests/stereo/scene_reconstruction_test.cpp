@@ -22,11 +22,13 @@ StereoEdgel project(const Rectifier& r, const Eigen::Vector3d& p_L)
 	const cv::Vec3d q = r.R_RectFromL() * p_cv;
 	const cv::Point2d c = r.principalPoint_px();
 	return {{r.focal_px() * q[0] / q[2] + c.x, r.focal_px() * q[1] / q[2] + c.y},
-		r.focal_px() * r.baseline_mm() / q[2], p_L};
+	        r.focal_px() * r.baseline_mm() / q[2],
+	        p_L};
 }
 
-std::vector<StereoEdgel> alongCurve(
-	const Rectifier& r, const std::function<Eigen::Vector3d(double)>& curve, int n, double noise_px)
+std::vector<StereoEdgel> alongCurve(const Rectifier& r,
+                                    const std::function<Eigen::Vector3d(double)>& curve, int n,
+                                    double noise_px)
 {
 	std::mt19937 rng(7);
 	std::normal_distribution<double> g(0, noise_px);
@@ -45,7 +47,8 @@ std::vector<StereoEdgel> alongCurve(
 cv::Mat stepImage(double x_edge)
 {
 	cv::Mat big(480 * 8, 640 * 8, CV_8U, cv::Scalar(60));
-	big(cv::Rect(static_cast<int>(std::lround((x_edge + 0.5) * 8)), 0, 640 * 8 - static_cast<int>(std::lround((x_edge + 0.5) * 8)), 480 * 8)) = 190;
+	big(cv::Rect(static_cast<int>(std::lround((x_edge + 0.5) * 8)), 0,
+	             640 * 8 - static_cast<int>(std::lround((x_edge + 0.5) * 8)), 480 * 8)) = 190;
 	cv::Mat img;
 	cv::resize(big, img, {640, 480}, 0, 0, cv::INTER_AREA);
 	return img;
@@ -56,13 +59,15 @@ TEST(Rectifier, PointInLeftCameraInvertsTheRectifiedProjection)
 {
 	const Rectifier r(testRig(0.05));
 	EXPECT_NEAR(r.baseline_mm(), 120, 1e-6);
-	for (const Eigen::Vector3d& p : {Eigen::Vector3d(100, -50, 900), Eigen::Vector3d(-300, 200, 2000)})
+	for (const Eigen::Vector3d& p :
+	     {Eigen::Vector3d(100, -50, 900), Eigen::Vector3d(-300, 200, 2000)})
 	{
 		const StereoEdgel e = project(r, p);
 		EXPECT_LT((r.pointInLeftCamera(e.xy_px.x, e.xy_px.y, e.d_px) - p).norm(), 1e-9);
 	}
 	cv::Mat a, b;
-	EXPECT_THROW(r.rectify(cv::Mat(10, 10, CV_8U), cv::Mat(10, 10, CV_8U), a, b), std::runtime_error);
+	EXPECT_THROW(r.rectify(cv::Mat(10, 10, CV_8U), cv::Mat(10, 10, CV_8U), a, b),
+	             std::runtime_error);
 }
 
 TEST(EdgeStrings, SubPixelPositionOfAStepEdge)
@@ -104,7 +109,8 @@ TEST(Fit3, LineFromNoisyDisparitiesKeepsItsEndpoints)
 {
 	const Rectifier r(testRig());
 	const Eigen::Vector3d a(-80, 40, 900), b(60, -70, 1050);
-	const auto e = alongCurve(r, [&](double s) { return Eigen::Vector3d(a + s * (b - a)); }, 120, 0.1);
+	const auto e = alongCurve(
+	    r, [&](double s) { return Eigen::Vector3d(a + s * (b - a)); }, 120, 0.1);
 	const auto l = fitLine3(e, r, FitOptions());
 	ASSERT_TRUE(l.has_value());
 	EXPECT_LT((l->p1 - a).norm(), 2.0);
@@ -115,11 +121,16 @@ TEST(Fit3, LineFromNoisyDisparitiesKeepsItsEndpoints)
 TEST(Fit3, CircleArcGivesCentreRadiusAndNormal)
 {
 	const Rectifier r(testRig());
-	const Eigen::Vector3d c(20, 60, 950), u(1, 0, 0), v = Eigen::Vector3d(0, 0.6, -0.8), n = u.cross(v);
-	const auto e = alongCurve(r, [&](double s) {
-		const double t = -2.0 + 3.5 * s;
-		return Eigen::Vector3d(c + 50 * (std::cos(t) * u + std::sin(t) * v));
-	}, 200, 0.1);
+	const Eigen::Vector3d c(20, 60, 950), u(1, 0, 0), v = Eigen::Vector3d(0, 0.6, -0.8),
+	                                                  n = u.cross(v);
+	const auto e = alongCurve(
+	    r,
+	    [&](double s)
+	    {
+		    const double t = -2.0 + 3.5 * s;
+		    return Eigen::Vector3d(c + 50 * (std::cos(t) * u + std::sin(t) * v));
+	    },
+	    200, 0.1);
 	const auto k = fitConic3(e, r, FitOptions());
 	ASSERT_TRUE(k.has_value());
 	EXPECT_LT((k->centre - c).norm(), 1.5);
@@ -134,9 +145,11 @@ TEST(Fit3, CornerStringSplitsIntoTwoLines)
 {
 	const Rectifier r(testRig());
 	const Eigen::Vector3d a(-80, 40, 900), b(0, -60, 950), c(90, 30, 1000);
-	const auto e = alongCurve(r, [&](double s) {
-		return Eigen::Vector3d(s < 0.5 ? a + 2 * s * (b - a) : b + (2 * s - 1) * (c - b));
-	}, 201, 0.05);
+	const auto e = alongCurve(
+	    r,
+	    [&](double s)
+	    { return Eigen::Vector3d(s < 0.5 ? a + 2 * s * (b - a) : b + (2 * s - 1) * (c - b)); },
+	    201, 0.05);
 	std::vector<LineFit3> lines;
 	std::vector<ConicFit3> conics;
 	segmentString(e, r, FitOptions(), lines, conics);

@@ -22,8 +22,7 @@ std::vector<Info> featureInfo(const WireFrame& wf, double conic_weight)
 {
 	std::vector<Info> out;
 	for (const auto& l : wf.lines) out.push_back({l.id, (l.p1 + l.p2) / 2, l.length()});
-	for (const auto& c : wf.conics)
-		out.push_back({c.id, c.centre, conic_weight * arcLength(c)});
+	for (const auto& c : wf.conics) out.push_back({c.id, c.centre, conic_weight * arcLength(c)});
 	return out;
 }
 
@@ -40,11 +39,11 @@ bool faces(const Info& f, const Eigen::Vector3d& c, const Eigen::Vector3d& v, do
 }
 
 /** Does direction v see every member of clique @p k? */
-bool sees(
-	const Clique& k, const std::map<int, Info>& by_id, const Eigen::Vector3d& c,
-	const Eigen::Vector3d& v, double margin)
+bool sees(const Clique& k, const std::map<int, Info>& by_id, const Eigen::Vector3d& c,
+          const Eigen::Vector3d& v, double margin)
 {
-	auto ok = [&](int id) {
+	auto ok = [&](int id)
+	{
 		const auto it = by_id.find(id);
 		return it != by_id.end() && faces(it->second, c, v, margin);
 	};
@@ -54,24 +53,26 @@ bool sees(
 /** Focus plus its nearest visible neighbours, focus last. */
 Clique cliqueAround(const Info& focus, std::vector<Info> visible, int size)
 {
-	std::sort(visible.begin(), visible.end(), [&](const Info& a, const Info& b) {
-		return (a.mid - focus.mid).squaredNorm() < (b.mid - focus.mid).squaredNorm();
-	});
+	std::sort(visible.begin(), visible.end(),
+	          [&](const Info& a, const Info& b)
+	          { return (a.mid - focus.mid).squaredNorm() < (b.mid - focus.mid).squaredNorm(); });
 	Clique k{focus.id, {}};
 	for (const auto& f : visible)
-		if (f.id != focus.id && static_cast<int>(k.members.size()) < size - 1) k.members.push_back(f.id);
+		if (f.id != focus.id && static_cast<int>(k.members.size()) < size - 1)
+			k.members.push_back(f.id);
 	k.members.push_back(focus.id);
 	return k;
 }
 }  // namespace
 
-void CliqueOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void CliqueOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                       const std::string& section)
 {
 	clique_size = static_cast<int>(util::readInt(cfg, section, "clique_size", clique_size));
 	max_cliques = static_cast<int>(util::readInt(cfg, section, "max_cliques", max_cliques));
 	azimuths = static_cast<int>(util::readInt(cfg, section, "azimuths", azimuths));
-	if (util::hasKey(cfg, section, "elevations_deg")) elevations_deg = util::readDoubles(cfg, section, "elevations_deg");
+	if (util::hasKey(cfg, section, "elevations_deg"))
+		elevations_deg = util::readDoubles(cfg, section, "elevations_deg");
 	conic_weight = util::readDouble(cfg, section, "conic_weight", conic_weight);
 	facing_margin_mm = util::readDouble(cfg, section, "facing_margin_mm", facing_margin_mm);
 	util::requireInRange(cfg, section, "clique_size", clique_size, 2, 100);
@@ -100,7 +101,8 @@ std::vector<size_t> uncoveredDirections(const WireFrame& wf, const CliqueOptions
 	std::vector<size_t> out;
 	for (size_t d = 0; d < dirs.size(); ++d)
 		if (std::none_of(wf.cliques.begin(), wf.cliques.end(),
-				[&](const Clique& k) { return sees(k, by_id, c, dirs[d], o.facing_margin_mm); }))
+		                 [&](const Clique& k)
+		                 { return sees(k, by_id, c, dirs[d], o.facing_margin_mm); }))
 			out.push_back(d);
 	return out;
 }
@@ -112,8 +114,9 @@ int addAutomaticCliques(WireFrame& wf, const CliqueOptions& o)
 	const Eigen::Vector3d c = centroid(info);
 	const auto dirs = viewingDirections(o);
 	int added = 0;
-	for (auto todo = uncoveredDirections(wf, o); !todo.empty() && static_cast<int>(wf.cliques.size()) < o.max_cliques;
-		 todo = uncoveredDirections(wf, o))
+	for (auto todo = uncoveredDirections(wf, o);
+	     !todo.empty() && static_cast<int>(wf.cliques.size()) < o.max_cliques;
+	     todo = uncoveredDirections(wf, o))
 	{
 		const Eigen::Vector3d v = dirs[todo.front()];
 		std::vector<Info> visible;

@@ -17,7 +17,8 @@ double distanceToInfiniteLine(const Eigen::Vector3d& p, const Line3& l)
  * nearly touching along it. */
 bool sameLine(const Line3& a, const Line3& b, const MergeOptions& o)
 {
-	if (std::abs(a.direction().dot(b.direction())) < std::cos(o.max_angle_deg * M_PI / 180)) return false;
+	if (std::abs(a.direction().dot(b.direction())) < std::cos(o.max_angle_deg * M_PI / 180))
+		return false;
 	for (const auto* p : {&b.p1, &b.p2})
 		if (distanceToInfiniteLine(*p, a) > o.max_distance_mm) return false;
 	for (const auto* p : {&a.p1, &a.p2})
@@ -34,8 +35,8 @@ Line3 joinLines(const Line3& a, const Line3& b)
 	Eigen::Vector3d db = b.direction();
 	if (db.dot(a.direction()) < 0) db = -db;
 	const Eigen::Vector3d d = (a.length() * a.direction() + b.length() * db).normalized();
-	const Eigen::Vector3d m =
-		(a.length() * (a.p1 + a.p2) / 2 + b.length() * (b.p1 + b.p2) / 2) / (a.length() + b.length());
+	const Eigen::Vector3d m = (a.length() * (a.p1 + a.p2) / 2 + b.length() * (b.p1 + b.p2) / 2) /
+	                          (a.length() + b.length());
 	double lo = 1e300, hi = -1e300;
 	for (const auto* p : {&a.p1, &a.p2, &b.p1, &b.p2})
 	{
@@ -48,8 +49,9 @@ Line3 joinLines(const Line3& a, const Line3& b)
 bool sameConic(const Conic3& a, const Conic3& b, const MergeOptions& o)
 {
 	return std::abs(a.normal.dot(b.normal)) >= std::cos(o.max_angle_deg * M_PI / 180) &&
-		   (a.centre - b.centre).norm() <= o.max_centre_mm &&
-		   std::abs(a.a - b.a) <= o.max_radius_diff_mm && std::abs(a.b - b.b) <= o.max_radius_diff_mm;
+	       (a.centre - b.centre).norm() <= o.max_centre_mm &&
+	       std::abs(a.a - b.a) <= o.max_radius_diff_mm &&
+	       std::abs(a.b - b.b) <= o.max_radius_diff_mm;
 }
 
 double parameterOn(const Conic3& c, const Eigen::Vector3d& p)
@@ -113,16 +115,24 @@ bool mergeOnce(std::vector<T>& v, Same same, Join join)
 }
 }  // namespace
 
-bool isDuplicate(const Line3& a, const Line3& b, const MergeOptions& o) { return sameLine(a, b, o); }
-bool isDuplicate(const Conic3& a, const Conic3& b, const MergeOptions& o) { return sameConic(a, b, o); }
+bool isDuplicate(const Line3& a, const Line3& b, const MergeOptions& o)
+{
+	return sameLine(a, b, o);
+}
+bool isDuplicate(const Conic3& a, const Conic3& b, const MergeOptions& o)
+{
+	return sameConic(a, b, o);
+}
 
 size_t mergeDuplicates(WireFrame& wf, const MergeOptions& o)
 {
 	const size_t before = featureCount(wf);
-	while (mergeOnce(wf.lines, [&](auto& a, auto& b) { return sameLine(a, b, o); }, joinLines))
+	while (mergeOnce(
+	    wf.lines, [&](auto& a, auto& b) { return sameLine(a, b, o); }, joinLines))
 	{
 	}
-	while (mergeOnce(wf.conics, [&](auto& a, auto& b) { return sameConic(a, b, o); }, joinConics))
+	while (mergeOnce(
+	    wf.conics, [&](auto& a, auto& b) { return sameConic(a, b, o); }, joinConics))
 	{
 	}
 	pruneCliques(wf);

@@ -24,10 +24,12 @@ View viewOf(WireFrameFrame frame, const DrawOptions& o)
 {
 	const bool obj = frame == WireFrameFrame::Object;
 	const Eigen::Vector3d up = obj ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
-	const Eigen::Vector3d h1 = obj ? Eigen::Vector3d::UnitX() : Eigen::Vector3d(-Eigen::Vector3d::UnitZ());
+	const Eigen::Vector3d h1 =
+	    obj ? Eigen::Vector3d::UnitX() : Eigen::Vector3d(-Eigen::Vector3d::UnitZ());
 	const Eigen::Vector3d h2 = up.cross(h1);
 	const double a = o.azimuth_deg * M_PI / 180, e = o.elevation_deg * M_PI / 180;
-	const Eigen::Vector3d d = std::cos(e) * (std::cos(a) * h1 + std::sin(a) * h2) + std::sin(e) * up;
+	const Eigen::Vector3d d =
+	    std::cos(e) * (std::cos(a) * h1 + std::sin(a) * h2) + std::sin(e) * up;
 	const Eigen::Vector3d right = up.cross(d).normalized();
 	return {right, -d.cross(right).normalized()};
 }
@@ -52,7 +54,8 @@ Fit fitTo(const std::vector<cv::Point2d>& pts, const DrawOptions& o)
 	{
 		double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
 		for (const auto& p : pts)
-			x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+			x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x),
+			y1 = std::max(y1, p.y);
 		box = cv::Rect2d(x0, y0, x1 - x0, y1 - y0);
 	}
 	box.width = std::max(box.width, 1e-6);
@@ -94,14 +97,17 @@ cv::Mat drawWireFrame(const WireFrame& wf, const DrawOptions& o)
 		drawPolyline(img, poly, cv::Scalar(0, 0, 200));
 	}
 	if (wf.has_grasp)
-		cv::drawMarker(img, fit(v.project(wf.grasp.p_mm)) / 16, cv::Scalar(0, 160, 0), cv::MARKER_CROSS, 20, 2);
+		cv::drawMarker(img, fit(v.project(wf.grasp.p_mm)) / 16, cv::Scalar(0, 160, 0),
+		               cv::MARKER_CROSS, 20, 2);
 	if (!o.show_ids) return img;
 	for (size_t i = 0; i < featureCount(wf); ++i)
 	{
-		const Eigen::Vector3d m = i < wf.lines.size() ? Eigen::Vector3d((wf.lines[i].p1 + wf.lines[i].p2) / 2)
-													  : wf.conics[i - wf.lines.size()].pointAt(wf.conics[i - wf.lines.size()].t1);
-		cv::putText(img, std::to_string(featureId(wf, i)), fit(v.project(m)) / 16, cv::FONT_HERSHEY_SIMPLEX,
-			0.4, cv::Scalar(90, 90, 90), 1, cv::LINE_AA);
+		const Eigen::Vector3d m =
+		    i < wf.lines.size()
+		        ? Eigen::Vector3d((wf.lines[i].p1 + wf.lines[i].p2) / 2)
+		        : wf.conics[i - wf.lines.size()].pointAt(wf.conics[i - wf.lines.size()].t1);
+		cv::putText(img, std::to_string(featureId(wf, i)), fit(v.project(m)) / 16,
+		            cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(90, 90, 90), 1, cv::LINE_AA);
 	}
 	return img;
 }
@@ -128,7 +134,7 @@ mrpt::opengl::CSetOfObjects::Ptr wireFrameObject(const WireFrame& wf)
 	lines->setLineWidth(2);
 	for (const auto& l : wf.lines)
 		lines->appendLine(l.p1.x() / 1000, l.p1.y() / 1000, l.p1.z() / 1000, l.p2.x() / 1000,
-			l.p2.y() / 1000, l.p2.z() / 1000);
+		                  l.p2.y() / 1000, l.p2.z() / 1000);
 	auto arcs = mrpt::opengl::CSetOfLines::Create();
 	arcs->setColor_u8(200, 0, 0);
 	arcs->setLineWidth(2);
@@ -137,7 +143,7 @@ mrpt::opengl::CSetOfObjects::Ptr wireFrameObject(const WireFrame& wf)
 		const auto s = sampleConic(c, 2.0, 0);
 		for (size_t i = 1; i < s.size(); ++i)
 			arcs->appendLine(s[i - 1].p.x() / 1000, s[i - 1].p.y() / 1000, s[i - 1].p.z() / 1000,
-				s[i].p.x() / 1000, s[i].p.y() / 1000, s[i].p.z() / 1000);
+			                 s[i].p.x() / 1000, s[i].p.y() / 1000, s[i].p.z() / 1000);
 	}
 	obj->insert(lines);
 	obj->insert(arcs);

@@ -12,8 +12,8 @@ namespace mrolr::model
 namespace
 {
 /** Is sample @p s within tol of some sample of @p others with a compatible tangent? */
-bool covered(
-	const FeatureSample& s, const std::vector<FeatureSample>& others, double tol, double min_cos)
+bool covered(const FeatureSample& s, const std::vector<FeatureSample>& others, double tol,
+             double min_cos)
 {
 	for (const auto& o : others)
 		if ((o.p - s.p).squaredNorm() <= tol * tol && std::abs(o.tangent.dot(s.tangent)) >= min_cos)
@@ -22,9 +22,9 @@ bool covered(
 }
 
 /** Per model feature: the fraction of its length near the truth. */
-std::vector<double> supportedFraction(
-	const std::vector<FeatureSample>& model, size_t n_features, const std::vector<FeatureSample>& truth,
-	double tol, double min_cos)
+std::vector<double> supportedFraction(const std::vector<FeatureSample>& model, size_t n_features,
+                                      const std::vector<FeatureSample>& truth, double tol,
+                                      double min_cos)
 {
 	std::vector<double> near(n_features, 0), all(n_features, 0);
 	for (const auto& s : model)
@@ -49,9 +49,8 @@ double conicRadiusError(const Conic3& c, const WireFrame& truth)
 }
 
 /** Endpoint and radius errors of the model features that are not false. */
-void featureErrors(
-	const WireFrame& model, const WireFrame& truth, const std::vector<double>& support,
-	ModelQuality& q)
+void featureErrors(const WireFrame& model, const WireFrame& truth,
+                   const std::vector<double>& support, ModelQuality& q)
 {
 	for (size_t i = 0; i < model.lines.size(); ++i)
 	{
@@ -68,8 +67,8 @@ void featureErrors(
 }
 }  // namespace
 
-void QualityOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void QualityOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                        const std::string& section)
 {
 	tol_mm = util::readDouble(cfg, section, "tol_mm", tol_mm);
 	max_angle_deg = util::readDouble(cfg, section, "max_angle_deg", max_angle_deg);
@@ -102,10 +101,12 @@ ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth, cons
 	const size_t n = model.lines.size() + model.conics.size();
 	const auto support = supportedFraction(ms, n, ts, o.tol_mm, min_cos);
 	q.model_features = static_cast<int>(n);
-	q.false_features = static_cast<int>(std::count_if(support.begin(), support.end(), [](double f) { return f < 0.5; }));
+	q.false_features = static_cast<int>(
+	    std::count_if(support.begin(), support.end(), [](double f) { return f < 0.5; }));
 	featureErrors(model, truth, support, q);
 	q.median_endpoint_error_mm = median(q.endpoint_errors_mm);
-	for (double e : q.endpoint_errors_mm) q.max_endpoint_error_mm = std::max(q.max_endpoint_error_mm, e);
+	for (double e : q.endpoint_errors_mm)
+		q.max_endpoint_error_mm = std::max(q.max_endpoint_error_mm, e);
 	q.conics_compared = static_cast<int>(q.conic_radius_errors_mm.size());
 	q.median_conic_radius_error_mm = median(q.conic_radius_errors_mm);
 	return q;
@@ -113,12 +114,12 @@ ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth, cons
 
 void printQuality(const ModelQuality& q, std::ostream& out)
 {
-	out << "true_length_mm " << q.true_length_mm << "\nrecovered_length_mm " << q.recovered_length_mm
-		<< "\nrecovered_fraction " << q.recovered_fraction << "\nmodel_features " << q.model_features
-		<< "\nfalse_features " << q.false_features << "\nmedian_endpoint_error_mm "
-		<< q.median_endpoint_error_mm << "\nmax_endpoint_error_mm " << q.max_endpoint_error_mm
-		<< "\nconics_compared " << q.conics_compared << "\nmedian_conic_radius_error_mm "
-		<< q.median_conic_radius_error_mm << "\n";
+	out << "true_length_mm " << q.true_length_mm << "\nrecovered_length_mm "
+	    << q.recovered_length_mm << "\nrecovered_fraction " << q.recovered_fraction
+	    << "\nmodel_features " << q.model_features << "\nfalse_features " << q.false_features
+	    << "\nmedian_endpoint_error_mm " << q.median_endpoint_error_mm << "\nmax_endpoint_error_mm "
+	    << q.max_endpoint_error_mm << "\nconics_compared " << q.conics_compared
+	    << "\nmedian_conic_radius_error_mm " << q.median_conic_radius_error_mm << "\n";
 }
 
 }  // namespace mrolr::model

@@ -46,8 +46,8 @@ WireFrame transformWireFrame(const WireFrame& wf, const Eigen::Isometry3d& T, Wi
 	return out;
 }
 
-WireFrame leftCameraToC0(
-	const WireFrame& wf_L, const geometry::BiSightHead& head, const geometry::HeadAngles& angles)
+WireFrame leftCameraToC0(const WireFrame& wf_L, const geometry::BiSightHead& head,
+                         const geometry::HeadAngles& angles)
 {
 	if (wf_L.frame != WireFrameFrame::LeftCamera)
 		throw std::invalid_argument("leftCameraToC0 needs a wire-frame in frame left_camera");

@@ -26,7 +26,8 @@ Eigen::Isometry3d readPose(const mrpt::config::CConfigFileBase& cfg, const std::
 	Eigen::Matrix3d R;
 	R << r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7], r[8];
 	if ((R * R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
-		throw util::ConfigError(util::describeKey(cfg, sec, "R_TfromL") + ": not a rotation matrix");
+		throw util::ConfigError(util::describeKey(cfg, sec, "R_TfromL") +
+		                        ": not a rotation matrix");
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.linear() = R;
 	T.translation() = Eigen::Vector3d(t[0], t[1], t[2]);
@@ -42,19 +43,22 @@ cv::Mat readImage(const std::string& path)
 
 bool insideObject(const Eigen::Vector3d& p, const TurntableOptions& o)
 {
-	return p.head<2>().norm() <= o.keep_radius_mm && p.z() >= o.min_height_mm && p.z() <= o.max_height_mm;
+	return p.head<2>().norm() <= o.keep_radius_mm && p.z() >= o.min_height_mm &&
+	       p.z() <= o.max_height_mm;
 }
 }  // namespace
 
 TurntableSet loadTurntableSet(const std::string& dir)
 {
 	const std::string ini = inDir(dir, "turntable.ini");
-	if (!std::filesystem::exists(ini)) throw std::runtime_error("no turntable.ini in '" + dir + "'");
+	if (!std::filesystem::exists(ini))
+		throw std::runtime_error("no turntable.ini in '" + dir + "'");
 	mrpt::config::CConfigFile cfg(ini);
 	TurntableSet s;
 	s.object = util::readString(cfg, "turntable", "object");
 	s.calib_path = inDir(dir, util::readString(cfg, "turntable", "calib"));
-	if (util::hasKey(cfg, "turntable", "truth")) s.truth_path = inDir(dir, util::readString(cfg, "turntable", "truth"));
+	if (util::hasKey(cfg, "turntable", "truth"))
+		s.truth_path = inDir(dir, util::readString(cfg, "turntable", "truth"));
 	s.T_LinT_mm = readPose(cfg, "turntable");
 	const long n = util::readInt(cfg, "turntable", "views");
 	util::requireInRange(cfg, "turntable", "views", static_cast<double>(n), 1, 1000);
@@ -62,46 +66,51 @@ TurntableSet loadTurntableSet(const std::string& dir)
 	{
 		const std::string sec = "view_" + std::to_string(i);
 		s.views.push_back({inDir(dir, util::readString(cfg, sec, "left")),
-			inDir(dir, util::readString(cfg, sec, "right")), util::readDouble(cfg, sec, "angle_deg")});
+		                   inDir(dir, util::readString(cfg, sec, "right")),
+		                   util::readDouble(cfg, sec, "angle_deg")});
 	}
 	return s;
 }
 
-void TurntableOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                          const std::string& section)
 {
 	keep_radius_mm = util::readDouble(cfg, section, "keep_radius_mm", keep_radius_mm);
 	min_height_mm = util::readDouble(cfg, section, "min_height_mm", min_height_mm);
 	max_height_mm = util::readDouble(cfg, section, "max_height_mm", max_height_mm);
 	min_views = static_cast<int>(util::readInt(cfg, section, "min_views", min_views));
-	merge.max_distance_mm = util::readDouble(cfg, section, "merge_max_distance_mm", merge.max_distance_mm);
-	merge.max_angle_deg = util::readDouble(cfg, section, "merge_max_angle_deg", merge.max_angle_deg);
+	merge.max_distance_mm =
+	    util::readDouble(cfg, section, "merge_max_distance_mm", merge.max_distance_mm);
+	merge.max_angle_deg =
+	    util::readDouble(cfg, section, "merge_max_angle_deg", merge.max_angle_deg);
 	merge.max_gap_mm = util::readDouble(cfg, section, "merge_max_gap_mm", merge.max_gap_mm);
-	merge.max_centre_mm = util::readDouble(cfg, section, "merge_max_centre_mm", merge.max_centre_mm);
+	merge.max_centre_mm =
+	    util::readDouble(cfg, section, "merge_max_centre_mm", merge.max_centre_mm);
 	merge.max_radius_diff_mm =
-		util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
+	    util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
 	util::requireInRange(cfg, section, "keep_radius_mm", keep_radius_mm, 1, 1e5);
 }
 
 void cropToObject(WireFrame& wf, const TurntableOptions& o)
 {
-	auto outside = [&](const std::vector<FeatureSample>& s) {
-		return std::any_of(s.begin(), s.end(), [&](auto& q) { return !insideObject(q.p, o); });
-	};
+	auto outside = [&](const std::vector<FeatureSample>& s)
+	{ return std::any_of(s.begin(), s.end(), [&](auto& q) { return !insideObject(q.p, o); }); };
 	wf.lines.erase(std::remove_if(wf.lines.begin(), wf.lines.end(),
-					   [&](const Line3& l) { return outside(sampleLine(l, 5.0, 0)); }),
-		wf.lines.end());
-	wf.conics.erase(std::remove_if(wf.conics.begin(), wf.conics.end(),
-						[&](const Conic3& c) { return outside(sampleConic(c, 5.0, 0)); }),
-		wf.conics.end());
+	                              [&](const Line3& l) { return outside(sampleLine(l, 5.0, 0)); }),
+	               wf.lines.end());
+	wf.conics.erase(
+	    std::remove_if(wf.conics.begin(), wf.conics.end(),
+	                   [&](const Conic3& c) { return outside(sampleConic(c, 5.0, 0)); }),
+	    wf.conics.end());
 }
 
-WireFrame viewInObjectFrame(
-	const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm, double angle_deg,
-	const TurntableOptions& o)
+WireFrame viewInObjectFrame(const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm,
+                            double angle_deg, const TurntableOptions& o)
 {
-	const Eigen::Isometry3d T_TinO(Eigen::AngleAxisd(-angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
-	WireFrame wf = transformWireFrame(sceneToWireFrame(scene), T_TinO * T_LinT_mm, WireFrameFrame::Object);
+	const Eigen::Isometry3d T_TinO(
+	    Eigen::AngleAxisd(-angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+	WireFrame wf =
+	    transformWireFrame(sceneToWireFrame(scene), T_TinO * T_LinT_mm, WireFrameFrame::Object);
 	cropToObject(wf, o);
 	return wf;
 }
@@ -110,30 +119,42 @@ namespace
 {
 template <typename T>
 int viewsSupporting(const T& f, const std::vector<WireFrame>& views, const MergeOptions& o,
-	const std::vector<T>& (*features)(const WireFrame&))
+                    const std::vector<T>& (*features)(const WireFrame&))
 {
 	int n = 0;
 	for (const auto& v : views)
 	{
 		const auto& list = features(v);
-		n += std::any_of(list.begin(), list.end(), [&](const T& g) { return isDuplicate(f, g, o); });
+		n +=
+		    std::any_of(list.begin(), list.end(), [&](const T& g) { return isDuplicate(f, g, o); });
 	}
 	return n;
 }
 
-const std::vector<Line3>& linesOf(const WireFrame& w) { return w.lines; }
-const std::vector<Conic3>& conicsOf(const WireFrame& w) { return w.conics; }
+const std::vector<Line3>& linesOf(const WireFrame& w)
+{
+	return w.lines;
+}
+const std::vector<Conic3>& conicsOf(const WireFrame& w)
+{
+	return w.conics;
+}
 }  // namespace
 
-size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views, const MergeOptions& o)
+size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views,
+                       const MergeOptions& o)
 {
 	const size_t before = featureCount(merged);
 	merged.lines.erase(std::remove_if(merged.lines.begin(), merged.lines.end(),
-						   [&](const Line3& l) { return viewsSupporting(l, views, o, linesOf) < min_views; }),
-		merged.lines.end());
-	merged.conics.erase(std::remove_if(merged.conics.begin(), merged.conics.end(),
-							[&](const Conic3& c) { return viewsSupporting(c, views, o, conicsOf) < min_views; }),
-		merged.conics.end());
+	                                  [&](const Line3& l) {
+		                                  return viewsSupporting(l, views, o, linesOf) < min_views;
+	                                  }),
+	                   merged.lines.end());
+	merged.conics.erase(
+	    std::remove_if(merged.conics.begin(), merged.conics.end(),
+	                   [&](const Conic3& c)
+	                   { return viewsSupporting(c, views, o, conicsOf) < min_views; }),
+	    merged.conics.end());
 	return before - featureCount(merged);
 }
 
@@ -145,8 +166,8 @@ void renumber(WireFrame& wf)
 	wf.cliques.clear();
 }
 
-WireFrame buildFromTurntable(
-	const TurntableSet& set, const stereo::SceneOptions& so, const TurntableOptions& o)
+WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& so,
+                             const TurntableOptions& o)
 {
 	const stereo::StereoCalibration calib = stereo::loadStereoCalibration(set.calib_path);
 	WireFrame all;
@@ -155,7 +176,8 @@ WireFrame buildFromTurntable(
 	std::vector<WireFrame> views;
 	for (const auto& v : set.views)
 	{
-		const auto scene = stereo::reconstructScene(readImage(v.left_png), readImage(v.right_png), calib, so);
+		const auto scene =
+		    stereo::reconstructScene(readImage(v.left_png), readImage(v.right_png), calib, so);
 		views.push_back(viewInObjectFrame(scene, set.T_LinT_mm, v.angle_deg, o));
 		all.lines.insert(all.lines.end(), views.back().lines.begin(), views.back().lines.end());
 		all.conics.insert(all.conics.end(), views.back().conics.begin(), views.back().conics.end());

@@ -40,7 +40,8 @@ std::vector<std::string> tokens(const std::string& line)
 double number(const Parser& p, const std::string& t, const char* what)
 {
 	double v = 0;
-	if (!util::parseDouble(t, v)) p.fail(std::string(what) + ": '" + t + "' is not a finite number");
+	if (!util::parseDouble(t, v))
+		p.fail(std::string(what) + ": '" + t + "' is not a finite number");
 	return v;
 }
 
@@ -55,9 +56,8 @@ int positiveId(const Parser& p, const std::string& t, const char* what)
 void expectCount(const Parser& p, const std::vector<std::string>& tk, size_t n)
 {
 	if (tk.size() != n)
-		p.fail(
-			"'" + tk[0] + "' needs " + std::to_string(n - 1) + " fields, got " +
-			std::to_string(tk.size() - 1));
+		p.fail("'" + tk[0] + "' needs " + std::to_string(n - 1) + " fields, got " +
+		       std::to_string(tk.size() - 1));
 }
 
 Eigen::Vector3d vec3(const Parser& p, const std::vector<std::string>& tk, size_t i, const char* w)
@@ -182,9 +182,9 @@ void checkCliqueIds(const Parser& p)
 }
 }  // namespace
 
-WireFrameFormatError::WireFrameFormatError(
-	const std::string& source, int line_no, const std::string& reason)
-	: std::runtime_error(source + ":" + std::to_string(line_no) + ": " + reason), line_no_(line_no)
+WireFrameFormatError::WireFrameFormatError(const std::string& source, int line_no,
+                                           const std::string& reason)
+    : std::runtime_error(source + ":" + std::to_string(line_no) + ": " + reason), line_no_(line_no)
 {
 }
 
@@ -199,9 +199,12 @@ WireFrame readWireFrame(std::istream& in, const std::string& source)
 		++p.line_no;
 		if (!line.empty() && line.back() == '\r') line.pop_back();
 		if (!header && tokens(line).empty() && line.rfind(kHeader, 0) != 0) continue;
-		if (!header && line.rfind(kHeader, 0) != 0) p.fail(std::string("expected '") + kHeader + "'");
-		if (!header) header = true;
-		else if (const auto tk = tokens(line); !tk.empty()) parseRecord(p, tk);
+		if (!header && line.rfind(kHeader, 0) != 0)
+			p.fail(std::string("expected '") + kHeader + "'");
+		if (!header)
+			header = true;
+		else if (const auto tk = tokens(line); !tk.empty())
+			parseRecord(p, tk);
 	}
 	if (!header) p.fail(std::string("empty file: no '") + kHeader + "' header");
 	if (!p.seen_units) p.fail("missing 'units mm' line");
@@ -278,9 +281,12 @@ std::string frameName(WireFrameFrame f)
 {
 	switch (f)
 	{
-		case WireFrameFrame::Object: return "object";
-		case WireFrameFrame::LeftCamera: return "left_camera";
-		case WireFrameFrame::C0: return "c0";
+		case WireFrameFrame::Object:
+			return "object";
+		case WireFrameFrame::LeftCamera:
+			return "left_camera";
+		case WireFrameFrame::C0:
+			return "c0";
 	}
 	return "object";
 }
@@ -290,8 +296,8 @@ WireFrameFrame frameFromName(const std::string& name)
 	if (name == "object") return WireFrameFrame::Object;
 	if (name == "left_camera") return WireFrameFrame::LeftCamera;
 	if (name == "c0") return WireFrameFrame::C0;
-	throw std::invalid_argument(
-		"unknown frame '" + name + "' (expected object, left_camera or c0)");
+	throw std::invalid_argument("unknown frame '" + name +
+	                            "' (expected object, left_camera or c0)");
 }
 
 }  // namespace mrolr::model

@@ -41,7 +41,7 @@ std::vector<FeatureSample> sampleConic(const Conic3& c, double step_mm, int feat
 	{
 		const double t = c.t1 + (c.t2 - c.t1) * (i + 0.5) / n;
 		const Eigen::Vector3d d =
-			-c.a * std::sin(t) * c.major + c.b * std::cos(t) * c.normal.cross(c.major);
+		    -c.a * std::sin(t) * c.major + c.b * std::cos(t) * c.normal.cross(c.major);
 		out.push_back({c.pointAt(t), d.normalized(), feature, len / n});
 	}
 	return out;
@@ -78,7 +78,8 @@ double distanceToWireFrame(const Eigen::Vector3d& p, const WireFrame& wf)
 	for (const auto& l : wf.lines)
 	{
 		const Eigen::Vector3d ab = l.p2 - l.p1;
-		const double t = std::clamp((p - l.p1).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+		const double t =
+		    std::clamp((p - l.p1).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
 		best = std::min(best, (l.p1 + t * ab - p).norm());
 	}
 	for (const auto& c : wf.conics)

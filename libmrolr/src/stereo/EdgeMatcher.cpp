@@ -55,9 +55,9 @@ bool compatible(const Sample& l, const Sample& r, double min_cos)
 }
 
 /** Candidate matches grouped by left sample. */
-std::vector<std::vector<Candidate>> candidates(
-	const std::vector<Sample>& L, const std::vector<Sample>& R, double dmin, double dmax,
-	const MatchOptions& o)
+std::vector<std::vector<Candidate>> candidates(const std::vector<Sample>& L,
+                                               const std::vector<Sample>& R, double dmin,
+                                               double dmax, const MatchOptions& o)
 {
 	const auto right_rows = byRow(R);
 	const double min_cos = std::cos(o.max_orientation_diff_deg * M_PI / 180);
@@ -79,21 +79,25 @@ std::vector<std::vector<Candidate>> candidates(
 /** Grid of left samples with cell size = support radius. */
 using Grid = std::unordered_map<long long, std::vector<int>>;
 
-long long cellKey(int cx, int cy) { return (static_cast<long long>(cy) << 32) ^ (cx & 0xffffffffLL); }
+long long cellKey(int cx, int cy)
+{
+	return (static_cast<long long>(cy) << 32) ^ (cx & 0xffffffffLL);
+}
 
 Grid gridOf(const std::vector<Sample>& L, double cell)
 {
 	Grid g;
 	for (size_t i = 0; i < L.size(); ++i)
-		g[cellKey(static_cast<int>(std::floor(L[i].x / cell)), static_cast<int>(std::floor(L[i].row / cell)))]
-			.push_back(static_cast<int>(i));
+		g[cellKey(static_cast<int>(std::floor(L[i].x / cell)),
+		          static_cast<int>(std::floor(L[i].row / cell)))]
+		    .push_back(static_cast<int>(i));
 	return g;
 }
 
 /** Strongest support one neighbouring left sample gives to candidate @p c. */
-double supportFrom(
-	const Candidate& c, const std::vector<Candidate>& nb, const std::vector<Sample>& L,
-	const std::vector<Sample>& R, const MatchOptions& o)
+double supportFrom(const Candidate& c, const std::vector<Candidate>& nb,
+                   const std::vector<Sample>& L, const std::vector<Sample>& R,
+                   const MatchOptions& o)
 {
 	const cv::Point2d cyc((L[c.left].x + R[c.right].x) / 2, L[c.left].row);
 	double best = 0;
@@ -107,9 +111,8 @@ double supportFrom(
 	return best;
 }
 
-void computeSupport(
-	std::vector<std::vector<Candidate>>& cand, const std::vector<Sample>& L,
-	const std::vector<Sample>& R, const MatchOptions& o)
+void computeSupport(std::vector<std::vector<Candidate>>& cand, const std::vector<Sample>& L,
+                    const std::vector<Sample>& R, const MatchOptions& o)
 {
 	const double cell = o.support_radius_px;
 	const Grid grid = gridOf(L, cell);
@@ -130,8 +133,8 @@ void computeSupport(
 }
 }  // namespace
 
-void MatchOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void MatchOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                      const std::string& section)
 {
 	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
 	rd("disparity_gradient_limit", disparity_gradient_limit);
@@ -139,7 +142,8 @@ void MatchOptions::loadFromConfigFile(
 	rd("max_orientation_diff_deg", max_orientation_diff_deg);
 	rd("min_edge_angle_deg", min_edge_angle_deg);
 	rd("min_support", min_support);
-	util::requireInRange(cfg, section, "disparity_gradient_limit", disparity_gradient_limit, 0.05, 2);
+	util::requireInRange(cfg, section, "disparity_gradient_limit", disparity_gradient_limit, 0.05,
+	                     2);
 	util::requireInRange(cfg, section, "support_radius_px", support_radius_px, 1, 200);
 	util::requireInRange(cfg, section, "min_edge_angle_deg", min_edge_angle_deg, 0, 80);
 }
@@ -147,15 +151,15 @@ void MatchOptions::loadFromConfigFile(
 void MatchOptions::dump(std::ostream& out) const
 {
 	out << "disparity_gradient_limit = " << disparity_gradient_limit
-		<< "\nsupport_radius_px = " << support_radius_px
-		<< "\nmax_orientation_diff_deg = " << max_orientation_diff_deg
-		<< "\nmin_edge_angle_deg = " << min_edge_angle_deg << "\nmin_support = " << min_support
-		<< "\n";
+	    << "\nsupport_radius_px = " << support_radius_px
+	    << "\nmax_orientation_diff_deg = " << max_orientation_diff_deg
+	    << "\nmin_edge_angle_deg = " << min_edge_angle_deg << "\nmin_support = " << min_support
+	    << "\n";
 }
 
-std::vector<EdgeMatch> matchEdgeStrings(
-	const std::vector<EdgeString>& left, const std::vector<EdgeString>& right, double d_min_px,
-	double d_max_px, const MatchOptions& o)
+std::vector<EdgeMatch> matchEdgeStrings(const std::vector<EdgeString>& left,
+                                        const std::vector<EdgeString>& right, double d_min_px,
+                                        double d_max_px, const MatchOptions& o)
 {
 	const double min_sin = std::sin(o.min_edge_angle_deg * M_PI / 180);
 	const auto L = scanlineSamples(left, min_sin), R = scanlineSamples(right, min_sin);
@@ -163,7 +167,8 @@ std::vector<EdgeMatch> matchEdgeStrings(
 	computeSupport(cand, L, R, o);
 	std::vector<Candidate> all;
 	for (const auto& list : cand) all.insert(all.end(), list.begin(), list.end());
-	std::stable_sort(all.begin(), all.end(), [](auto& a, auto& b) { return a.support > b.support; });
+	std::stable_sort(all.begin(), all.end(),
+	                 [](auto& a, auto& b) { return a.support > b.support; });
 	std::vector<char> used_l(L.size(), 0), used_r(R.size(), 0);
 	std::vector<EdgeMatch> out;
 	for (const auto& c : all)
@@ -173,9 +178,9 @@ std::vector<EdgeMatch> matchEdgeStrings(
 		const Sample& s = L[c.left];
 		out.push_back({s.string, s.edgel, s.x, static_cast<double>(s.row), c.d, c.support});
 	}
-	std::sort(out.begin(), out.end(), [](auto& a, auto& b) {
-		return a.string != b.string ? a.string < b.string : a.edgel < b.edgel;
-	});
+	std::sort(out.begin(), out.end(),
+	          [](auto& a, auto& b)
+	          { return a.string != b.string ? a.string < b.string : a.edgel < b.edgel; });
 	return out;
 }
 

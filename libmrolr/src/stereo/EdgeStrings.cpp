@@ -21,7 +21,7 @@ double sample(const cv::Mat& img, double x, double y)
 	const float* r0 = img.ptr<float>(y0);
 	const float* r1 = img.ptr<float>(y0 + 1);
 	return (1 - fy) * ((1 - fx) * r0[x0] + fx * r0[x0 + 1]) +
-		   fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
+	       fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
 }
 
 /** Gradient images of the smoothed image. */
@@ -79,16 +79,16 @@ cv::Point2d Edgel::tangent() const
 	return n > 0 ? cv::Point2d(-grad.y / n, grad.x / n) : cv::Point2d(1, 0);
 }
 
-void EdgeOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void EdgeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                     const std::string& section)
 {
 	blur_sigma_px = util::readDouble(cfg, section, "blur_sigma_px", blur_sigma_px);
 	gradient_threshold =
-		static_cast<int>(util::readInt(cfg, section, "gradient_threshold", gradient_threshold));
+	    static_cast<int>(util::readInt(cfg, section, "gradient_threshold", gradient_threshold));
 	anchor_threshold =
-		static_cast<int>(util::readInt(cfg, section, "anchor_threshold", anchor_threshold));
+	    static_cast<int>(util::readInt(cfg, section, "anchor_threshold", anchor_threshold));
 	min_string_edgels =
-		static_cast<int>(util::readInt(cfg, section, "min_string_edgels", min_string_edgels));
+	    static_cast<int>(util::readInt(cfg, section, "min_string_edgels", min_string_edgels));
 	util::requireInRange(cfg, section, "blur_sigma_px", blur_sigma_px, 0, 10);
 	util::requireInRange(cfg, section, "min_string_edgels", min_string_edgels, 2, 1e6);
 }
@@ -96,8 +96,8 @@ void EdgeOptions::loadFromConfigFile(
 void EdgeOptions::dump(std::ostream& out) const
 {
 	out << "blur_sigma_px = " << blur_sigma_px << "\ngradient_threshold = " << gradient_threshold
-		<< "\nanchor_threshold = " << anchor_threshold
-		<< "\nmin_string_edgels = " << min_string_edgels << "\n";
+	    << "\nanchor_threshold = " << anchor_threshold
+	    << "\nmin_string_edgels = " << min_string_edgels << "\n";
 }
 
 std::vector<EdgeString> detectEdgeStrings(const cv::Mat& grey, const EdgeOptions& o)

@@ -20,7 +20,8 @@ Eigen::VectorXd robustSolve(const Eigen::MatrixXd& A, const Eigen::VectorXd& d)
 	std::vector<int> keep;
 	for (int i = 0; i < r.size(); ++i)
 		if (std::abs(r[i]) <= 3 * sigma) keep.push_back(i);
-	if (keep.size() < static_cast<size_t>(A.cols()) + 2 || keep.size() == static_cast<size_t>(r.size()))
+	if (keep.size() < static_cast<size_t>(A.cols()) + 2 ||
+	    keep.size() == static_cast<size_t>(r.size()))
 		return x;
 	Eigen::MatrixXd A2(keep.size(), A.cols());
 	Eigen::VectorXd d2(keep.size());
@@ -35,11 +36,13 @@ Eigen::VectorXd robustSolve(const Eigen::MatrixXd& A, const Eigen::VectorXd& d)
 std::vector<cv::Point2f> imagePoints(const std::vector<StereoEdgel>& e)
 {
 	std::vector<cv::Point2f> p;
-	for (const auto& x : e) p.emplace_back(static_cast<float>(x.xy_px.x), static_cast<float>(x.xy_px.y));
+	for (const auto& x : e)
+		p.emplace_back(static_cast<float>(x.xy_px.x), static_cast<float>(x.xy_px.y));
 	return p;
 }
 
-double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                         const Eigen::Vector3d& b)
 {
 	const Eigen::Vector3d ab = b - a;
 	const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
@@ -60,7 +63,7 @@ cv::Point2d ellipsePoint(const cv::RotatedRect& el, double phi)
 	const double th = el.angle * M_PI / 180;
 	const cv::Point2d u(std::cos(th), std::sin(th)), v(-std::sin(th), std::cos(th));
 	return cv::Point2d(el.center) + el.size.width / 2 * std::cos(phi) * u +
-		   el.size.height / 2 * std::sin(phi) * v;
+	       el.size.height / 2 * std::sin(phi) * v;
 }
 
 /** Approximate distance (px) of p from the ellipse. */
@@ -101,10 +104,12 @@ ConicFit3 ellipseIn3D(const std::vector<Eigen::Vector3d>& Q)
 	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
 	for (const auto& q : Q) C += (q - mean) * (q - mean).transpose();
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
-	const Eigen::Vector3d n = es.eigenvectors().col(0), e1 = es.eigenvectors().col(2), e2 = n.cross(e1);
+	const Eigen::Vector3d n = es.eigenvectors().col(0), e1 = es.eigenvectors().col(2),
+	                      e2 = n.cross(e1);
 	std::vector<cv::Point2f> uv;
 	for (const auto& q : Q)
-		uv.emplace_back(static_cast<float>((q - mean).dot(e1)), static_cast<float>((q - mean).dot(e2)));
+		uv.emplace_back(static_cast<float>((q - mean).dot(e1)),
+		                static_cast<float>((q - mean).dot(e2)));
 	const cv::RotatedRect el = cv::fitEllipseDirect(uv);
 	const double th = el.angle * M_PI / 180;
 	ConicFit3 c;
@@ -161,8 +166,8 @@ Eigen::Vector3d ConicFit3::pointAt(double t) const
 	return centre + a * std::cos(t) * major + b * std::sin(t) * normal.cross(major);
 }
 
-std::optional<LineFit3> fitLine3(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o)
+std::optional<LineFit3> fitLine3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
+                                 const FitOptions& o)
 {
 	if (static_cast<int>(e.size()) < o.min_line_edgels) return std::nullopt;
 	cv::Vec4f l;
@@ -184,7 +189,8 @@ std::optional<LineFit3> fitLine3(
 		d[static_cast<int>(i)] = e[i].d_px;
 	}
 	const Eigen::VectorXd k = robustSolve(A, d);
-	auto end = [&](double s) {
+	auto end = [&](double s)
+	{
 		const cv::Point2d q = p0 + s * v;
 		return rect.pointInLeftCamera(q.x, q.y, k[0] * s + k[1]);
 	};
@@ -195,8 +201,8 @@ std::optional<LineFit3> fitLine3(
 	return f;
 }
 
-std::optional<ConicFit3> fitConic3(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o)
+std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
+                                   const FitOptions& o)
 {
 	if (static_cast<int>(e.size()) < o.min_conic_edgels) return std::nullopt;
 	const cv::RotatedRect el = cv::fitEllipseDirect(imagePoints(e));

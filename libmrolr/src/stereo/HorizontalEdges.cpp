@@ -30,7 +30,8 @@ double chordDistance(const EdgeString& s, size_t lo, size_t hi, size_t& worst)
 	return best;
 }
 
-void straightPieces(const EdgeString& s, int id, size_t lo, size_t hi, const FitOptions& o, std::vector<Piece>& out)
+void straightPieces(const EdgeString& s, int id, size_t lo, size_t hi, const FitOptions& o,
+                    std::vector<Piece>& out)
 {
 	if (hi - lo < static_cast<size_t>(o.min_line_edgels)) return;
 	size_t worst = (lo + hi) / 2;
@@ -92,29 +93,35 @@ std::set<std::pair<int, int>> matchedEdgels(const std::vector<EdgeMatch>& m)
 }
 }  // namespace
 
-std::vector<LineFit3> recoverHorizontalLines(
-	const std::vector<EdgeString>& left, const std::vector<EdgeString>& right,
-	const std::vector<EdgeMatch>& matches, const Rectifier& rect, cv::Size right_size,
-	const FitOptions& fit, const HorizontalOptions& o)
+std::vector<LineFit3> recoverHorizontalLines(const std::vector<EdgeString>& left,
+                                             const std::vector<EdgeString>& right,
+                                             const std::vector<EdgeMatch>& matches,
+                                             const Rectifier& rect, cv::Size right_size,
+                                             const FitOptions& fit, const HorizontalOptions& o)
 {
 	std::vector<LineFit3> out;
 	if (!o.enabled) return out;
 	const cv::Mat dist = rightDistance(right, right_size);
 	const auto matched = matchedEdgels(matches);
 	std::vector<Piece> pieces;
-	for (size_t s = 0; s < left.size(); ++s) straightPieces(left[s], static_cast<int>(s), 0, left[s].size(), fit, pieces);
+	for (size_t s = 0; s < left.size(); ++s)
+		straightPieces(left[s], static_cast<int>(s), 0, left[s].size(), fit, pieces);
 	for (const auto& p : pieces)
 	{
 		const EdgeString& s = left[p.string];
 		size_t n_matched = 0;
-		for (size_t i = p.lo; i < p.hi; ++i) n_matched += matched.count({p.string, static_cast<int>(i)});
+		for (size_t i = p.lo; i < p.hi; ++i)
+			n_matched += matched.count({p.string, static_cast<int>(i)});
 		if (!nearHorizontal(s, p, o.max_angle_deg) || n_matched > (p.hi - p.lo) / 3) continue;
 		const cv::Point2d a = s[p.lo].p, b = s[p.hi - 1].p;
-		const double da = disparityNear(a, matches, o.corner_radius_px), db = disparityNear(b, matches, o.corner_radius_px);
+		const double da = disparityNear(a, matches, o.corner_radius_px),
+		             db = disparityNear(b, matches, o.corner_radius_px);
 		if (!(da > 0) || !(db > 0)) continue;
-		if (rightSupport(dist, a - cv::Point2d(da, 0), b - cv::Point2d(db, 0)) < o.min_right_support) continue;
-		out.push_back({rect.pointInLeftCamera(a.x, a.y, da), rect.pointInLeftCamera(b.x, b.y, db), 0,
-			static_cast<int>(p.hi - p.lo)});
+		if (rightSupport(dist, a - cv::Point2d(da, 0), b - cv::Point2d(db, 0)) <
+		    o.min_right_support)
+			continue;
+		out.push_back({rect.pointInLeftCamera(a.x, a.y, da), rect.pointInLeftCamera(b.x, b.y, db),
+		               0, static_cast<int>(p.hi - p.lo)});
 	}
 	return out;
 }

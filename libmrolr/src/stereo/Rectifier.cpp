@@ -10,23 +10,25 @@ namespace mrolr::stereo
 Rectifier::Rectifier(const StereoCalibration& c) : size_(c.image_size)
 {
 	if (size_.width <= 0 || size_.height <= 0 || c.baseline_mm() <= 0)
-		throw std::runtime_error("rectification needs a calibration with an image size and baseline");
+		throw std::runtime_error(
+		    "rectification needs a calibration with an image size and baseline");
 	cv::Mat R1, R2, P1, P2, Q;
-	cv::stereoRectify(
-		cv::Mat(c.K_left), cv::Mat(c.D_left), cv::Mat(c.K_right), cv::Mat(c.D_right), size_,
-		cv::Mat(c.R_RfromL), cv::Mat(c.t_LinR_mm), R1, R2, P1, P2, Q, cv::CALIB_ZERO_DISPARITY, 0);
-	cv::initUndistortRectifyMap(
-		cv::Mat(c.K_left), cv::Mat(c.D_left), R1, P1, size_, CV_32FC1, map_lx_, map_ly_);
-	cv::initUndistortRectifyMap(
-		cv::Mat(c.K_right), cv::Mat(c.D_right), R2, P2, size_, CV_32FC1, map_rx_, map_ry_);
+	cv::stereoRectify(cv::Mat(c.K_left), cv::Mat(c.D_left), cv::Mat(c.K_right), cv::Mat(c.D_right),
+	                  size_, cv::Mat(c.R_RfromL), cv::Mat(c.t_LinR_mm), R1, R2, P1, P2, Q,
+	                  cv::CALIB_ZERO_DISPARITY, 0);
+	cv::initUndistortRectifyMap(cv::Mat(c.K_left), cv::Mat(c.D_left), R1, P1, size_, CV_32FC1,
+	                            map_lx_, map_ly_);
+	cv::initUndistortRectifyMap(cv::Mat(c.K_right), cv::Mat(c.D_right), R2, P2, size_, CV_32FC1,
+	                            map_rx_, map_ry_);
 	R1_ = R1;
 	f_px_ = P1.at<double>(0, 0);
 	cx_px_ = P1.at<double>(0, 2);
 	cy_px_ = P1.at<double>(1, 2);
 	baseline_mm_ = -P2.at<double>(0, 3) / P2.at<double>(0, 0);
 	if (std::abs(P2.at<double>(1, 3)) > 1e-9 || baseline_mm_ <= 0)
-		throw std::runtime_error("rectification expects a horizontal baseline with the right camera "
-								 "to the right of the left one");
+		throw std::runtime_error(
+		    "rectification expects a horizontal baseline with the right camera "
+		    "to the right of the left one");
 	// p_L(thesis) = diag(-1,-1,1) · R1ᵀ · p_rect
 	Eigen::Matrix3d R1t;
 	for (int i = 0; i < 3; ++i)
@@ -34,15 +36,14 @@ Rectifier::Rectifier(const StereoCalibration& c) : size_(c.image_size)
 	R_LthesisFromRect_ = Eigen::Vector3d(-1, -1, 1).asDiagonal() * R1t;
 }
 
-void Rectifier::rectify(
-	const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect, cv::Mat& right_rect) const
+void Rectifier::rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect,
+                        cv::Mat& right_rect) const
 {
 	if (left.size() != size_ || right.size() != size_)
-		throw std::runtime_error(
-			"stereo images are " + std::to_string(left.cols) + "x" + std::to_string(left.rows) +
-			" and " + std::to_string(right.cols) + "x" + std::to_string(right.rows) +
-			" but the calibration is for " + std::to_string(size_.width) + "x" +
-			std::to_string(size_.height));
+		throw std::runtime_error("stereo images are " + std::to_string(left.cols) + "x" +
+		                         std::to_string(left.rows) + " and " + std::to_string(right.cols) +
+		                         "x" + std::to_string(right.rows) + " but the calibration is for " +
+		                         std::to_string(size_.width) + "x" + std::to_string(size_.height));
 	cv::remap(left, left_rect, map_lx_, map_ly_, cv::INTER_LINEAR);
 	cv::remap(right, right_rect, map_rx_, map_ry_, cv::INTER_LINEAR);
 }

@@ -23,12 +23,12 @@ cv::Mat toGrey8(const cv::Mat& img)
 bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
 {
 	return m.string == prev.string && m.edgel - prev.edgel <= o.max_gap_edgels + 1 &&
-		   std::abs(m.disparity_px - prev.disparity_px) <= o.max_disparity_jump_px;
+	       std::abs(m.disparity_px - prev.disparity_px) <= o.max_disparity_jump_px;
 }
 }  // namespace
 
-void SceneOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                      const std::string& section)
 {
 	min_depth_mm = util::readDouble(cfg, section, "min_depth_mm", min_depth_mm);
 	max_depth_mm = util::readDouble(cfg, section, "max_depth_mm", max_depth_mm);
@@ -38,10 +38,12 @@ void SceneOptions::loadFromConfigFile(
 	match.loadFromConfigFile(cfg, section);
 	fit.loadFromConfigFile(cfg, section);
 	horizontal.enabled = util::readBool(cfg, section, "horizontal_enabled", horizontal.enabled);
-	horizontal.max_angle_deg = util::readDouble(cfg, section, "horizontal_max_angle_deg", horizontal.max_angle_deg);
-	horizontal.corner_radius_px = util::readDouble(cfg, section, "horizontal_corner_radius_px", horizontal.corner_radius_px);
-	horizontal.min_right_support =
-		util::readDouble(cfg, section, "horizontal_min_right_support", horizontal.min_right_support);
+	horizontal.max_angle_deg =
+	    util::readDouble(cfg, section, "horizontal_max_angle_deg", horizontal.max_angle_deg);
+	horizontal.corner_radius_px =
+	    util::readDouble(cfg, section, "horizontal_corner_radius_px", horizontal.corner_radius_px);
+	horizontal.min_right_support = util::readDouble(cfg, section, "horizontal_min_right_support",
+	                                                horizontal.min_right_support);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -50,13 +52,14 @@ void SceneOptions::dump(std::ostream& out) const
 	edges.dump(out);
 	match.dump(out);
 	fit.dump(out);
-	out << "horizontal_enabled = " << horizontal.enabled << "\nhorizontal_max_angle_deg = " << horizontal.max_angle_deg
-		<< "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
-		<< "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
+	out << "horizontal_enabled = " << horizontal.enabled
+	    << "\nhorizontal_max_angle_deg = " << horizontal.max_angle_deg
+	    << "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
+	    << "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
 }
 
-std::vector<std::vector<StereoEdgel>> stereoStrings(
-	const std::vector<EdgeMatch>& matches, const Rectifier& rect, const FitOptions& o)
+std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
+                                                    const Rectifier& rect, const FitOptions& o)
 {
 	std::vector<std::vector<StereoEdgel>> out;
 	for (size_t i = 0; i < matches.size(); ++i)
@@ -64,21 +67,21 @@ std::vector<std::vector<StereoEdgel>> stereoStrings(
 		const EdgeMatch& m = matches[i];
 		if (i == 0 || !continues(matches[i - 1], m, o)) out.emplace_back();
 		const cv::Point2d xy(m.x_left_px, m.y_px);
-		out.back().push_back({xy, m.disparity_px, rect.pointInLeftCamera(xy.x, xy.y, m.disparity_px)});
+		out.back().push_back(
+		    {xy, m.disparity_px, rect.pointInLeftCamera(xy.x, xy.y, m.disparity_px)});
 	}
 	return out;
 }
 
-StereoScene reconstructScene(
-	const cv::Mat& left, const cv::Mat& right, const StereoCalibration& calib,
-	const SceneOptions& o)
+StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
+                             const StereoCalibration& calib, const SceneOptions& o)
 {
 	const Rectifier rect(calib);
 	cv::Mat lr, rr;
 	rect.rectify(toGrey8(left), toGrey8(right), lr, rr);
 	const auto ls = detectEdgeStrings(lr, o.edges), rs = detectEdgeStrings(rr, o.edges);
-	const auto matches = matchEdgeStrings(
-		ls, rs, rect.disparityAtDepth(o.max_depth_mm), rect.disparityAtDepth(o.min_depth_mm), o.match);
+	const auto matches = matchEdgeStrings(ls, rs, rect.disparityAtDepth(o.max_depth_mm),
+	                                      rect.disparityAtDepth(o.min_depth_mm), o.match);
 	StereoScene scene;
 	scene.left_strings = ls.size();
 	scene.right_strings = rs.size();

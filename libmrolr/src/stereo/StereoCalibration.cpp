@@ -15,8 +15,8 @@ namespace mrolr::stereo
 namespace
 {
 template <typename M>
-void readInto(
-	M& m, const mrpt::config::CConfigFileBase& cfg, const std::string& sec, const std::string& key)
+void readInto(M& m, const mrpt::config::CConfigFileBase& cfg, const std::string& sec,
+              const std::string& key)
 {
 	const auto v = util::readDoubles(cfg, sec, key, static_cast<size_t>(M::rows * M::cols));
 	for (int i = 0; i < M::rows * M::cols; ++i) m.val[i] = v[static_cast<size_t>(i)];
@@ -31,19 +31,19 @@ std::string joined(const M& m)
 	return ss.str();
 }
 
-void checkRotation(
-	const cv::Matx33d& R, const mrpt::config::CConfigFileBase& cfg, const std::string& sec)
+void checkRotation(const cv::Matx33d& R, const mrpt::config::CConfigFileBase& cfg,
+                   const std::string& sec)
 {
 	const double err = cv::norm(R * R.t() - cv::Matx33d::eye());
 	if (err > 1e-6 || cv::determinant(R) < 0)
-		throw util::ConfigError(
-			util::describeKey(cfg, sec, "R_RfromL") + ": not a rotation matrix (|R Rt - I| = " +
-			std::to_string(err) + ")");
+		throw util::ConfigError(util::describeKey(cfg, sec, "R_RfromL") +
+		                        ": not a rotation matrix (|R Rt - I| = " + std::to_string(err) +
+		                        ")");
 }
 }  // namespace
 
-void StereoCalibration::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void StereoCalibration::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                           const std::string& section)
 {
 	const long w = util::readInt(cfg, section, "image_width_px");
 	const long h = util::readInt(cfg, section, "image_height_px");
@@ -63,8 +63,8 @@ void StereoCalibration::loadFromConfigFile(
 	pairs_used = static_cast<int>(util::readInt(cfg, section, "pairs_used", 0));
 }
 
-void StereoCalibration::saveToConfigFile(
-	mrpt::config::CConfigFileBase& cfg, const std::string& section) const
+void StereoCalibration::saveToConfigFile(mrpt::config::CConfigFileBase& cfg,
+                                         const std::string& section) const
 {
 	cfg.write(section, "image_width_px", image_size.width);
 	cfg.write(section, "image_height_px", image_size.height);
@@ -81,8 +81,8 @@ void StereoCalibration::saveToConfigFile(
 void StereoCalibration::dump(std::ostream& out) const
 {
 	out << "image " << image_size.width << "x" << image_size.height << " px, fx " << K_left(0, 0)
-		<< " px, fy " << K_left(1, 1) << " px, baseline " << baseline_mm() << " mm, RMS " << rms_px
-		<< " px over " << pairs_used << " pairs\n";
+	    << " px, fy " << K_left(1, 1) << " px, baseline " << baseline_mm() << " mm, RMS " << rms_px
+	    << " px over " << pairs_used << " pairs\n";
 }
 
 StereoCalibration loadStereoCalibration(const std::string& ini_path)

@@ -24,12 +24,12 @@ size_t farthest(const std::vector<StereoEdgel>& e, size_t lo, size_t hi)
 	return best;
 }
 
-void split(
-	const std::vector<StereoEdgel>& e, size_t lo, size_t hi, const Rectifier& rect,
-	const FitOptions& o, std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics)
+void split(const std::vector<StereoEdgel>& e, size_t lo, size_t hi, const Rectifier& rect,
+           const FitOptions& o, std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics)
 {
 	if (hi - lo < static_cast<size_t>(std::max(3, o.min_line_edgels))) return;
-	const std::vector<StereoEdgel> piece(e.begin() + static_cast<long>(lo), e.begin() + static_cast<long>(hi));
+	const std::vector<StereoEdgel> piece(e.begin() + static_cast<long>(lo),
+	                                     e.begin() + static_cast<long>(hi));
 	if (auto l = fitLine3(piece, rect, o)) return lines.push_back(*l);
 	if (auto c = fitConic3(piece, rect, o)) return conics.push_back(*c);
 	const size_t k = farthest(e, lo, hi);
@@ -38,18 +38,18 @@ void split(
 }
 }  // namespace
 
-void segmentString(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o,
-	std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics)
+void segmentString(const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o,
+                   std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics)
 {
 	split(e, 0, e.size(), rect, o, lines, conics);
 }
 
-void FitOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void FitOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                    const std::string& section)
 {
 	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	auto ri = [&](const char* k, int& v) { v = static_cast<int>(util::readInt(cfg, section, k, v)); };
+	auto ri = [&](const char* k, int& v)
+	{ v = static_cast<int>(util::readInt(cfg, section, k, v)); };
 	rd("line_tol_px", line_tol_px);
 	rd("conic_tol_px", conic_tol_px);
 	rd("min_arc_deg", min_arc_deg);
@@ -67,10 +67,10 @@ void FitOptions::loadFromConfigFile(
 void FitOptions::dump(std::ostream& out) const
 {
 	out << "line_tol_px = " << line_tol_px << "\nconic_tol_px = " << conic_tol_px
-		<< "\nmin_arc_deg = " << min_arc_deg << "\nmax_conic_radius_px = " << max_conic_radius_px
-		<< "\nmin_line_edgels = " << min_line_edgels << "\nmin_conic_edgels = " << min_conic_edgels
-		<< "\nmax_rms_mm = " << max_rms_mm << "\nmax_gap_edgels = " << max_gap_edgels
-		<< "\nmax_disparity_jump_px = " << max_disparity_jump_px << "\n";
+	    << "\nmin_arc_deg = " << min_arc_deg << "\nmax_conic_radius_px = " << max_conic_radius_px
+	    << "\nmin_line_edgels = " << min_line_edgels << "\nmin_conic_edgels = " << min_conic_edgels
+	    << "\nmax_rms_mm = " << max_rms_mm << "\nmax_gap_edgels = " << max_gap_edgels
+	    << "\nmax_disparity_jump_px = " << max_disparity_jump_px << "\n";
 }
 
 }  // namespace mrolr::stereo

@@ -15,7 +15,7 @@ namespace mrolr::apps
 {
 class CalibApp
 {
-   public:
+ public:
 	/** Parses the command line; throws util::UsageError for bad arguments. */
 	void initialize(const std::vector<std::string>& args);
 

@@ -26,7 +26,7 @@ namespace mrolr::apps
 {
 class ModelApp
 {
-   public:
+ public:
 	/** Parses the subcommand and its arguments; throws util::UsageError for bad arguments. */
 	void initialize(const std::vector<std::string>& args);
 
@@ -50,7 +50,7 @@ class ModelApp
 	std::optional<model::ModelQuality> quality;
 	nlohmann::json report;
 
-   private:
+ private:
 	void parseBuild(const std::vector<std::string>& a);
 	void parseScene(const std::vector<std::string>& a);
 	void parseEdit(const std::vector<std::string>& a);

@@ -3,8 +3,8 @@
  * Distinctive features are long lines and conics (a conic's arc length counts conic_weight times);
  * a clique is a focus feature and its nearest neighbours (by midpoint distance) among the features
  * facing the same viewing direction. Viewing directions are sampled around the object (azimuths ×
- * elevations in the object frame, z up); a feature faces a direction v when its midpoint lies on the
- * camera side of the model's centroid, (m − centroid)·v >= −facing_margin_mm. Cliques are added
+ * elevations in the object frame, z up); a feature faces a direction v when its midpoint lies on
+ * the camera side of the model's centroid, (m − centroid)·v >= −facing_margin_mm. Cliques are added
  * until every direction sees at least one whole clique. Manual cliques already in the model count
  * towards the coverage and are kept. */
 

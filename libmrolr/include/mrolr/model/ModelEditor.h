@@ -15,10 +15,10 @@ namespace mrolr::model
 /** Tolerances deciding that two features are the same edge seen twice (turntable views, 6.1). */
 struct MergeOptions
 {
-	double max_distance_mm = 4;  ///< lines: each overlap point within this of the other line
-	double max_angle_deg = 6;  ///< lines: directions; conics: plane normals
-	double max_gap_mm = 2;  ///< collinear lines closer than this end to end are joined too
-	double max_centre_mm = 5;  ///< conics: centre distance
+	double max_distance_mm = 4;     ///< lines: each overlap point within this of the other line
+	double max_angle_deg = 6;       ///< lines: directions; conics: plane normals
+	double max_gap_mm = 2;          ///< collinear lines closer than this end to end are joined too
+	double max_centre_mm = 5;       ///< conics: centre distance
 	double max_radius_diff_mm = 4;  ///< conics: semi-axis difference
 };
 
@@ -40,7 +40,8 @@ int addLine(WireFrame& wf, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2)
 int addConic(WireFrame& wf, Conic3 conic);
 
 /** Sets the grasp point (mm) and orientation (degrees). */
-void setGrasp(WireFrame& wf, const Eigen::Vector3d& p_mm, double yaw_deg, double pitch_deg, double roll_deg);
+void setGrasp(WireFrame& wf, const Eigen::Vector3d& p_mm, double yaw_deg, double pitch_deg,
+              double roll_deg);
 
 /** Merges duplicated features: collinear overlapping (or nearly touching) lines become one line
  * spanning both; concentric coplanar conics of equal size become one conic whose arc covers both.

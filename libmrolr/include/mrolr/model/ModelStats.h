@@ -1,10 +1,10 @@
 #pragma once
 /** Quality of a reconstructed wire-frame against the exact one (issue 6 "Quality"): the fraction of
- * the true edge length recovered, false segments, endpoint error and conic radius error. Both models
- * must be in the same frame and in mm.
+ * the true edge length recovered, false segments, endpoint error and conic radius error. Both
+ * models must be in the same frame and in mm.
  *
- * - A true edge point (sampled every sample_step_mm) is recovered when a model feature passes within
- *   tol_mm of it with a tangent within max_angle_deg.
+ * - A true edge point (sampled every sample_step_mm) is recovered when a model feature passes
+ * within tol_mm of it with a tangent within max_angle_deg.
  * - A model feature is false when less than half of its length lies within tol_mm of the truth.
  * - Endpoint error: distance (mm) of each endpoint of a non-false model line from the nearest true
  *   feature (a partial segment is not penalised for being short, only for being off the edge).
@@ -42,8 +42,8 @@ struct ModelQuality
 };
 
 /** Compares @p model with @p truth. */
-ModelQuality compareToTruth(
-	const WireFrame& model, const WireFrame& truth, const QualityOptions& options = {});
+ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth,
+                            const QualityOptions& options = {});
 
 /** Text table of the figures (one "key value" per line). */
 void printQuality(const ModelQuality& q, std::ostream& out);

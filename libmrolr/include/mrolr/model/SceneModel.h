@@ -20,7 +20,7 @@ WireFrame transformWireFrame(const WireFrame& wf, const Eigen::Isometry3d& T_mm,
 
 /** A left-camera wire-frame moved into C0 with the head at @p angles (T_LinC0, metres in the
  * geometry library, converted to mm). Throws std::invalid_argument unless wf is in left_camera. */
-WireFrame leftCameraToC0(
-	const WireFrame& wf_L, const geometry::BiSightHead& head, const geometry::HeadAngles& angles);
+WireFrame leftCameraToC0(const WireFrame& wf_L, const geometry::BiSightHead& head,
+                         const geometry::HeadAngles& angles);
 
 }  // namespace mrolr::model

@@ -55,7 +55,8 @@ TurntableSet loadTurntableSet(const std::string& dir);
 struct TurntableOptions
 {
 	double keep_radius_mm = 150;  ///< features farther from T's z axis are background
-	double min_height_mm = -4;  ///< features lower than this are below the table (z = 0 is the table top)
+	double min_height_mm =
+	    -4;  ///< features lower than this are below the table (z = 0 is the table top)
 	double max_height_mm = 400;
 	int min_views = 2;  ///< a merged feature must be seen (as a duplicate) in this many views
 	MergeOptions merge;
@@ -67,17 +68,16 @@ struct TurntableOptions
 void cropToObject(WireFrame& wf, const TurntableOptions& options);
 
 /** One reconstructed view in frame O (cropped, not merged). */
-WireFrame viewInObjectFrame(
-	const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm, double angle_deg,
-	const TurntableOptions& options);
+WireFrame viewInObjectFrame(const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm,
+                            double angle_deg, const TurntableOptions& options);
 
 /** Builds the object model from all views, merged; ids renumbered 1, 2, … */
-WireFrame buildFromTurntable(
-	const TurntableSet& set, const stereo::SceneOptions& scene_options,
-	const TurntableOptions& options);
+WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& scene_options,
+                             const TurntableOptions& options);
 
 /** Drops features of @p merged that fewer than @p min_views of the single views duplicate. */
-size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views, const MergeOptions& o);
+size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views,
+                       const MergeOptions& o);
 
 /** Renumbers ids 1, 2, … (lines first) and drops cliques (they named old ids). */
 void renumber(WireFrame& wf);

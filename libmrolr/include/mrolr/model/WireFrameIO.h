@@ -23,11 +23,11 @@ namespace mrolr::model
 /** A malformed `.wf` file; what() reads "SOURCE:LINE: reason". */
 class WireFrameFormatError : public std::runtime_error
 {
-   public:
+ public:
 	WireFrameFormatError(const std::string& source, int line_no, const std::string& reason);
 	int lineNumber() const { return line_no_; }
 
-   private:
+ private:
 	int line_no_ = 0;
 };
 

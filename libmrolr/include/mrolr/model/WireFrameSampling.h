@@ -13,7 +13,7 @@ struct FeatureSample
 {
 	Eigen::Vector3d p = Eigen::Vector3d::Zero();
 	Eigen::Vector3d tangent = Eigen::Vector3d::UnitX();
-	int feature = 0;  ///< index into lines, then conics (lines.size() + conic index)
+	int feature = 0;       ///< index into lines, then conics (lines.size() + conic index)
 	double weight_mm = 0;  ///< length of curve this sample stands for
 };
 
@@ -37,7 +37,10 @@ double arcLength(const Conic3& c);
 double totalLength(const WireFrame& wf);
 
 /** Number of features (lines + conics). */
-inline size_t featureCount(const WireFrame& wf) { return wf.lines.size() + wf.conics.size(); }
+inline size_t featureCount(const WireFrame& wf)
+{
+	return wf.lines.size() + wf.conics.size();
+}
 
 /** Id of feature index @p i (line or conic). */
 int featureId(const WireFrame& wf, size_t i);

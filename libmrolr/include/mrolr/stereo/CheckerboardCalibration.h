@@ -32,12 +32,12 @@ std::vector<cv::Point3f> boardObjectPoints(const BoardSpec& board);
 /** Calibrates from paired image files (same count, paired by position). Pairs in which either
  * image lacks the full board are skipped; throws std::runtime_error when an image cannot be read,
  * sizes differ, or fewer than 2 pairs remain. */
-StereoCalibration calibrateStereo(
-	const std::vector<std::string>& left_files, const std::vector<std::string>& right_files,
-	const BoardSpec& board);
+StereoCalibration calibrateStereo(const std::vector<std::string>& left_files,
+                                  const std::vector<std::string>& right_files,
+                                  const BoardSpec& board);
 
 /** As above from images already in memory (grey or colour). */
-StereoCalibration calibrateStereo(
-	const std::vector<cv::Mat>& left, const std::vector<cv::Mat>& right, const BoardSpec& board);
+StereoCalibration calibrateStereo(const std::vector<cv::Mat>& left,
+                                  const std::vector<cv::Mat>& right, const BoardSpec& board);
 
 }  // namespace mrolr::stereo

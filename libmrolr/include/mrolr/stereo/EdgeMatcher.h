@@ -20,10 +20,10 @@ namespace mrolr::stereo
 struct MatchOptions
 {
 	double disparity_gradient_limit = 1.0;  ///< PMF limit (< 2; 0.5–1 typical)
-	double support_radius_px = 12;  ///< neighbourhood searched for support
-	double max_orientation_diff_deg = 30;  ///< gradient directions of a match
+	double support_radius_px = 12;          ///< neighbourhood searched for support
+	double max_orientation_diff_deg = 30;   ///< gradient directions of a match
 	double min_edge_angle_deg = 12;  ///< edges closer than this to the scanline are not matched
-	double min_support = 0.3;  ///< matches with less support are rejected
+	double min_support = 0.3;        ///< matches with less support are rejected
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -42,8 +42,8 @@ struct EdgeMatch
 
 /** Matches rectified left and right edge strings for disparities in [d_min_px, d_max_px]. Result
  * sorted by (string, edgel). */
-std::vector<EdgeMatch> matchEdgeStrings(
-	const std::vector<EdgeString>& left, const std::vector<EdgeString>& right, double d_min_px,
-	double d_max_px, const MatchOptions& options);
+std::vector<EdgeMatch> matchEdgeStrings(const std::vector<EdgeString>& left,
+                                        const std::vector<EdgeString>& right, double d_min_px,
+                                        double d_max_px, const MatchOptions& options);
 
 }  // namespace mrolr::stereo

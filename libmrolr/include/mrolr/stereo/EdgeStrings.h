@@ -29,10 +29,10 @@ using EdgeString = std::vector<Edgel>;
 /** Edge detection options ([section] keys as named). */
 struct EdgeOptions
 {
-	double blur_sigma_px = 1.0;  ///< Gaussian smoothing before gradients
+	double blur_sigma_px = 1.0;   ///< Gaussian smoothing before gradients
 	int gradient_threshold = 24;  ///< EdgeDrawing gradient threshold (Sobel units / 4)
-	int anchor_threshold = 8;  ///< EdgeDrawing anchor threshold
-	int min_string_edgels = 12;  ///< shorter strings are dropped
+	int anchor_threshold = 8;     ///< EdgeDrawing anchor threshold
+	int min_string_edgels = 12;   ///< shorter strings are dropped
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;

@@ -1,10 +1,11 @@
 #pragma once
 /** 3D straight-line and conic segments fitted to stereo-matched edge strings (TINA's Geom3, thesis
- * 4.3.2.3). The image position of an edgel is precise while its depth is noisy, so each fit uses the
- * rectified left image geometry and the fact that disparity is an affine function of image position
- * on a plane (and of arc length along a straight line): a line is a 2D line plus a linear disparity
- * profile, a conic is a 2D ellipse plus a disparity plane, both back-projected exactly. Coordinates
- * are millimetres in the thesis left camera frame L (x left, y up, z along the optic axis). */
+ * 4.3.2.3). The image position of an edgel is precise while its depth is noisy, so each fit uses
+ * the rectified left image geometry and the fact that disparity is an affine function of image
+ * position on a plane (and of arc length along a straight line): a line is a 2D line plus a linear
+ * disparity profile, a conic is a 2D ellipse plus a disparity plane, both back-projected exactly.
+ * Coordinates are millimetres in the thesis left camera frame L (x left, y up, z along the optic
+ * axis). */
 
 #include <mrolr/stereo/Rectifier.h>
 
@@ -36,12 +37,13 @@ struct LineFit3
 	int edgels = 0;
 };
 
-/** A fitted 3D conic arc with model::Conic3's parametrisation (centre, unit normal, unit major axis,
- * semi-axes a >= b, arc t1 < t2 of x(t) = c + a cos t · major + b sin t · (normal × major)). */
+/** A fitted 3D conic arc with model::Conic3's parametrisation (centre, unit normal, unit major
+ * axis, semi-axes a >= b, arc t1 < t2 of x(t) = c + a cos t · major + b sin t · (normal × major)).
+ */
 struct ConicFit3
 {
 	Eigen::Vector3d centre = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ(),
-					major = Eigen::Vector3d::UnitX();
+	                major = Eigen::Vector3d::UnitX();
 	double a = 0, b = 0, t1 = 0, t2 = 0;
 	double rms_mm = 0;
 	int edgels = 0;
@@ -51,14 +53,15 @@ struct ConicFit3
 /** Options of string segmentation and fitting. */
 struct FitOptions
 {
-	double line_tol_px = 1.0;  ///< max 2D distance of edgels from a line
-	double conic_tol_px = 1.0;  ///< max 2D distance of edgels from an ellipse
-	double min_arc_deg = 60;  ///< a conic must span at least this angle
+	double line_tol_px = 1.0;          ///< max 2D distance of edgels from a line
+	double conic_tol_px = 1.0;         ///< max 2D distance of edgels from an ellipse
+	double min_arc_deg = 60;           ///< a conic must span at least this angle
 	double max_conic_radius_px = 400;  ///< larger ellipses are treated as lines
 	int min_line_edgels = 10;
 	int min_conic_edgels = 16;
 	double max_rms_mm = 4;  ///< 3D fits worse than this are dropped
-	int max_gap_edgels = 40;  ///< unmatched edgels bridged inside a 3D string (edge parts along the scanlines)
+	int max_gap_edgels =
+	    40;  ///< unmatched edgels bridged inside a 3D string (edge parts along the scanlines)
 	double max_disparity_jump_px = 1.5;  ///< between consecutive edgels of a 3D string
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
@@ -66,18 +69,17 @@ struct FitOptions
 };
 
 /** Straight line through the edgels, or nothing if too few or too poor (tolerances in options). */
-std::optional<LineFit3> fitLine3(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o);
+std::optional<LineFit3> fitLine3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
+                                 const FitOptions& o);
 
 /** Conic through the edgels (in string order), or nothing if too few, too short an arc or poor. */
-std::optional<ConicFit3> fitConic3(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o);
+std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
+                                   const FitOptions& o);
 
 /** Line and conic segments of one 3D edge string: top-down splitting in the image (a piece that is
  * straight within line_tol_px is a line, one that is elliptical within conic_tol_px over
  * min_arc_deg is a conic, anything else splits at the farthest edgel from its chord). */
-void segmentString(
-	const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o,
-	std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics);
+void segmentString(const std::vector<StereoEdgel>& e, const Rectifier& rect, const FitOptions& o,
+                   std::vector<LineFit3>& lines, std::vector<ConicFit3>& conics);
 
 }  // namespace mrolr::stereo

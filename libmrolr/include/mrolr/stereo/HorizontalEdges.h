@@ -17,16 +17,18 @@ namespace mrolr::stereo
 struct HorizontalOptions
 {
 	bool enabled = true;
-	double max_angle_deg = 20;  ///< pieces closer than this to the scanline direction
+	double max_angle_deg = 20;    ///< pieces closer than this to the scanline direction
 	double corner_radius_px = 5;  ///< matched edgels this near an end give its disparity
 	double min_right_support = 0.6;
 };
 
 /** 3D lines for the near-horizontal straight pieces of the left strings that the matcher left
  * mostly unmatched. @p right_size is the rectified image size. */
-std::vector<LineFit3> recoverHorizontalLines(
-	const std::vector<EdgeString>& left, const std::vector<EdgeString>& right,
-	const std::vector<EdgeMatch>& matches, const Rectifier& rect, cv::Size right_size,
-	const FitOptions& fit, const HorizontalOptions& options);
+std::vector<LineFit3> recoverHorizontalLines(const std::vector<EdgeString>& left,
+                                             const std::vector<EdgeString>& right,
+                                             const std::vector<EdgeMatch>& matches,
+                                             const Rectifier& rect, cv::Size right_size,
+                                             const FitOptions& fit,
+                                             const HorizontalOptions& options);
 
 }  // namespace mrolr::stereo

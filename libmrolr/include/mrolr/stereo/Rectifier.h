@@ -15,15 +15,15 @@ namespace mrolr::stereo
 {
 class Rectifier
 {
-   public:
+ public:
 	/** Computes the rectifying rotations and the remap tables (full-resolution, alpha = 0: only
 	 * valid pixels). Throws std::runtime_error for a degenerate calibration. */
 	explicit Rectifier(const StereoCalibration& calib);
 
 	/** Rectified left and right images (same type as the input). Throws std::runtime_error if a
 	 * size differs from the calibration's image size. */
-	void rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect, cv::Mat& right_rect)
-		const;
+	void rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect,
+	             cv::Mat& right_rect) const;
 
 	/** 3D point (mm, thesis frame L of the original left camera) of rectified left pixel (x, y) px
 	 * at disparity d px (d > 0). */
@@ -38,7 +38,7 @@ class Rectifier
 	/** Rotation from the original left camera to the rectified left camera (OpenCV axes). */
 	const cv::Matx33d& R_RectFromL() const { return R1_; }
 
-   private:
+ private:
 	cv::Size size_;
 	cv::Mat map_lx_, map_ly_, map_rx_, map_ry_;
 	cv::Matx33d R1_;

@@ -20,7 +20,7 @@ namespace mrolr::stereo
 /** All options of scene reconstruction, read from one .ini section (config/model.ini [scene]). */
 struct SceneOptions
 {
-	double min_depth_mm = 300;  ///< nearest depth searched (sets the largest disparity)
+	double min_depth_mm = 300;   ///< nearest depth searched (sets the largest disparity)
 	double max_depth_mm = 3000;  ///< farthest depth searched (sets the smallest disparity)
 	EdgeOptions edges;
 	MatchOptions match;
@@ -42,13 +42,12 @@ struct StereoScene
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
  * more than max_gap_edgels unmatched edgels or a disparity jump beyond max_disparity_jump_px. */
-std::vector<std::vector<StereoEdgel>> stereoStrings(
-	const std::vector<EdgeMatch>& matches, const Rectifier& rect, const FitOptions& o);
+std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
+                                                    const Rectifier& rect, const FitOptions& o);
 
 /** Reconstructs a scene from an unrectified stereo pair (grey or colour, the calibration's size).
  * Throws std::runtime_error for images that do not fit the calibration. */
-StereoScene reconstructScene(
-	const cv::Mat& left, const cv::Mat& right, const StereoCalibration& calib,
-	const SceneOptions& options);
+StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
+                             const StereoCalibration& calib, const SceneOptions& options);
 
 }  // namespace mrolr::stereo

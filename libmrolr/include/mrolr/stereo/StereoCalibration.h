@@ -17,12 +17,12 @@ namespace mrolr::stereo
 /** Intrinsics, distortion and extrinsics of a stereo pair, plus the quality of the fit. */
 struct StereoCalibration
 {
-	cv::Size image_size;  ///< px
+	cv::Size image_size;                                                    ///< px
 	cv::Matx33d K_left = cv::Matx33d::eye(), K_right = cv::Matx33d::eye();  ///< px
-	cv::Vec<double, 5> D_left = {}, D_right = {};  ///< k1 k2 p1 p2 k3
+	cv::Vec<double, 5> D_left = {}, D_right = {};                           ///< k1 k2 p1 p2 k3
 	cv::Matx33d R_RfromL = cv::Matx33d::eye();
 	cv::Vec3d t_LinR_mm = {};  ///< position of the left centre seen from the right camera, mm
-	double rms_px = 0;  ///< stereoCalibrate's RMS reprojection error, px
+	double rms_px = 0;         ///< stereoCalibrate's RMS reprojection error, px
 	int pairs_used = 0;
 
 	/** Distance between the optical centres, mm. */

@@ -36,9 +36,12 @@ std::vector<std::string> expandGlob(const std::string& pattern, const char* what
 void CalibApp::initialize(const std::vector<std::string>& args)
 {
 	TCLAP::CmdLine cmd("mrolr-calib: stereo calibration from checkerboard image pairs", ' ', "1");
-	TCLAP::ValueArg<std::string> left("", "left", "left images (glob, quoted)", true, "", "GLOB", cmd);
-	TCLAP::ValueArg<std::string> right("", "right", "right images (glob, quoted)", true, "", "GLOB", cmd);
-	TCLAP::ValueArg<std::string> board("", "board", "inner corners COLSxROWS", true, "9x6", "CxR", cmd);
+	TCLAP::ValueArg<std::string> left("", "left", "left images (glob, quoted)", true, "", "GLOB",
+	                                  cmd);
+	TCLAP::ValueArg<std::string> right("", "right", "right images (glob, quoted)", true, "", "GLOB",
+	                                   cmd);
+	TCLAP::ValueArg<std::string> board("", "board", "inner corners COLSxROWS", true, "9x6", "CxR",
+	                                   cmd);
 	TCLAP::ValueArg<std::string> square("", "square-mm", "square side (mm)", true, "", "S", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "output .ini", true, "", "FILE", cmd);
 	TCLAP::SwitchArg js("", "json", "print the result as JSON", cmd);
@@ -52,7 +55,7 @@ void CalibApp::initialize(const std::vector<std::string>& args)
 	right_files = expandGlob(right.getValue(), "--right");
 	if (left_files.size() != right_files.size())
 		throw util::UsageError("--left matches " + std::to_string(left_files.size()) +
-							   " files but --right matches " + std::to_string(right_files.size()));
+		                       " files but --right matches " + std::to_string(right_files.size()));
 }
 
 int CalibApp::run(std::ostream& out)
@@ -75,10 +78,15 @@ int CalibApp::run(std::ostream& out)
 		out << "written to " << out_path << "\n";
 		return util::kExitOk;
 	}
-	const nlohmann::json j = {{"rms_px", result.rms_px}, {"pairs_used", result.pairs_used},
-		{"pairs_given", left_files.size()}, {"baseline_mm", result.baseline_mm()},
-		{"fx_px", result.K_left(0, 0)}, {"fy_px", result.K_left(1, 1)},
-		{"cx_px", result.K_left(0, 2)}, {"cy_px", result.K_left(1, 2)}, {"out", out_path}};
+	const nlohmann::json j = {{"rms_px", result.rms_px},
+	                          {"pairs_used", result.pairs_used},
+	                          {"pairs_given", left_files.size()},
+	                          {"baseline_mm", result.baseline_mm()},
+	                          {"fx_px", result.K_left(0, 0)},
+	                          {"fy_px", result.K_left(1, 1)},
+	                          {"cx_px", result.K_left(0, 2)},
+	                          {"cy_px", result.K_left(1, 2)},
+	                          {"out", out_path}};
 	out << j.dump(2) << "\n";
 	return util::kExitOk;
 }

@@ -11,15 +11,16 @@ namespace
 using Str = TCLAP::ValueArg<std::string>;
 
 const char* kUsage =
-	"mrolr-model: 3D wire-frame models from stereo (docs/model.md)\n"
-	"  build   --turntable DIR --out M.wf [--truth T.wf] [--json]\n"
-	"  scene   --left L.png --right R.png --calib C.ini [--head pan,tilt,vl,vr] --out S.wf\n"
-	"  edit    M.wf [--out M2.wf] [--remove IDS] [--remove-box BOX] [--add-line L] [--add-conic C]\n"
-	"          [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]\n"
-	"  cliques M.wf [--out M2.wf] [--replace] [--json]\n"
-	"  show    M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]\n"
-	"  stats   M.wf [--truth T.wf] [--json]\n"
-	"'mrolr-model COMMAND --help' lists a command's options.\n";
+    "mrolr-model: 3D wire-frame models from stereo (docs/model.md)\n"
+    "  build   --turntable DIR --out M.wf [--truth T.wf] [--json]\n"
+    "  scene   --left L.png --right R.png --calib C.ini [--head pan,tilt,vl,vr] --out S.wf\n"
+    "  edit    M.wf [--out M2.wf] [--remove IDS] [--remove-box BOX] [--add-line L] [--add-conic "
+    "C]\n"
+    "          [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]\n"
+    "  cliques M.wf [--out M2.wf] [--replace] [--json]\n"
+    "  show    M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]\n"
+    "  stats   M.wf [--truth T.wf] [--json]\n"
+    "'mrolr-model COMMAND --help' lists a command's options.\n";
 
 /** The subcommand's own arguments with "mrolr-model COMMAND" as argv[0]. */
 std::vector<std::string> subArgs(const std::vector<std::string>& args)
@@ -37,9 +38,11 @@ std::vector<double> numbers(const std::string& text, size_t n, const std::string
 std::vector<int> ids(const std::string& text)
 {
 	std::vector<int> out;
-	for (double v : util::parseNumberList(text, std::count(text.begin(), text.end(), ',') + 1, "--remove"))
+	for (double v :
+	     util::parseNumberList(text, std::count(text.begin(), text.end(), ',') + 1, "--remove"))
 	{
-		if (v < 1 || v != std::floor(v)) throw util::UsageError("--remove: ids are positive integers");
+		if (v < 1 || v != std::floor(v))
+			throw util::UsageError("--remove: ids are positive integers");
 		out.push_back(static_cast<int>(v));
 	}
 	return out;
@@ -56,13 +59,21 @@ void ModelApp::initialize(const std::vector<std::string>& args)
 	}
 	command = args[1];
 	const auto a = subArgs(args);
-	if (command == "build") parseBuild(a);
-	else if (command == "scene") parseScene(a);
-	else if (command == "edit") parseEdit(a);
-	else if (command == "cliques") parseCliques(a);
-	else if (command == "show") parseShow(a);
-	else if (command == "stats") parseStats(a);
-	else throw util::UsageError("unknown command '" + command + "' (build, scene, edit, cliques, show, stats)");
+	if (command == "build")
+		parseBuild(a);
+	else if (command == "scene")
+		parseScene(a);
+	else if (command == "edit")
+		parseEdit(a);
+	else if (command == "cliques")
+		parseCliques(a);
+	else if (command == "show")
+		parseShow(a);
+	else if (command == "stats")
+		parseStats(a);
+	else
+		throw util::UsageError("unknown command '" + command +
+		                       "' (build, scene, edit, cliques, show, stats)");
 }
 
 void ModelApp::parseBuild(const std::vector<std::string>& a)
@@ -70,7 +81,8 @@ void ModelApp::parseBuild(const std::vector<std::string>& a)
 	TCLAP::CmdLine cmd("mrolr-model build: object model from a turntable directory", ' ', "1");
 	Str dir("", "turntable", "turntable directory (turntable.ini)", true, "", "DIR", cmd);
 	Str out("", "out", "output .wf", true, "", "M.wf", cmd);
-	Str truth("", "truth", "exact model for statistics (default: the directory's)", false, "", "T.wf", cmd);
+	Str truth("", "truth", "exact model for statistics (default: the directory's)", false, "",
+	          "T.wf", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON summary", cmd);
 	if (!(help_shown = !parseTclap(cmd, a)))
@@ -81,9 +93,11 @@ void ModelApp::parseBuild(const std::vector<std::string>& a)
 void ModelApp::parseScene(const std::vector<std::string>& a)
 {
 	TCLAP::CmdLine cmd("mrolr-model scene: scene wire-frame from one stereo pair", ' ', "1");
-	Str l("", "left", "left image", true, "", "L.png", cmd), r("", "right", "right image", true, "", "R.png", cmd);
+	Str l("", "left", "left image", true, "", "L.png", cmd),
+	    r("", "right", "right image", true, "", "R.png", cmd);
 	Str calib("", "calib", "stereo calibration .ini", true, "", "C.ini", cmd);
-	Str head("", "head", "head angles pan,tilt,vl,vr (deg): output in C0", false, "", "ANGLES", cmd);
+	Str head("", "head", "head angles pan,tilt,vl,vr (deg): output in C0", false, "", "ANGLES",
+	         cmd);
 	Str bis("", "bisight", "head configuration for --head", false, bisight_path, "INI", cmd);
 	Str out("", "out", "output .wf", true, "", "S.wf", cmd);
 	Str truth("", "truth", "exact scene model for statistics", false, "", "T.wf", cmd);
@@ -102,10 +116,14 @@ void ModelApp::parseEdit(const std::vector<std::string>& a)
 	TCLAP::UnlabeledValueArg<std::string> model("model", "model .wf", true, "", "M.wf", cmd);
 	Str out("", "out", "output (default: overwrite the model)", false, "", "M2.wf", cmd);
 	Str rm("", "remove", "remove ids (comma-separated)", false, "", "IDS", cmd);
-	TCLAP::MultiArg<std::string> box("", "remove-box", "remove features inside x0,y0,z0,x1,y1,z1 (mm)", false, "BOX", cmd);
-	TCLAP::MultiArg<std::string> line("", "add-line", "add x1,y1,z1,x2,y2,z2 (mm)", false, "LINE", cmd);
-	TCLAP::MultiArg<std::string> conic("", "add-conic", "add cx,cy,cz,nx,ny,nz,ax,ay,az,a,b,t1,t2", false, "CONIC", cmd);
-	TCLAP::SwitchArg mg("", "merge", "merge duplicated segments", cmd), ls("", "list", "list features", cmd);
+	TCLAP::MultiArg<std::string> box(
+	    "", "remove-box", "remove features inside x0,y0,z0,x1,y1,z1 (mm)", false, "BOX", cmd);
+	TCLAP::MultiArg<std::string> line("", "add-line", "add x1,y1,z1,x2,y2,z2 (mm)", false, "LINE",
+	                                  cmd);
+	TCLAP::MultiArg<std::string> conic("", "add-conic", "add cx,cy,cz,nx,ny,nz,ax,ay,az,a,b,t1,t2",
+	                                   false, "CONIC", cmd);
+	TCLAP::SwitchArg mg("", "merge", "merge duplicated segments", cmd),
+	    ls("", "list", "list features", cmd);
 	Str gr("", "grasp", "grasp x,y,z (mm),yaw,pitch,roll (deg)", false, "", "GRASP", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON summary", cmd);
@@ -136,20 +154,24 @@ void ModelApp::parseShow(const std::vector<std::string>& a)
 {
 	TCLAP::CmdLine cmd("mrolr-model show: draw a model", ' ', "1");
 	TCLAP::UnlabeledValueArg<std::string> model("model", "model .wf", true, "", "M.wf", cmd);
-	Str png("", "png", "PNG drawing", false, "", "P.png", cmd), s3("", "scene3d", ".3Dscene", false, "", "S.3Dscene", cmd);
-	Str az("", "azimuth", "view azimuth (deg)", false, "", "A", cmd), el("", "elevation", "view elevation (deg)", false, "", "E", cmd);
+	Str png("", "png", "PNG drawing", false, "", "P.png", cmd),
+	    s3("", "scene3d", ".3Dscene", false, "", "S.3Dscene", cmd);
+	Str az("", "azimuth", "view azimuth (deg)", false, "", "A", cmd),
+	    el("", "elevation", "view elevation (deg)", false, "", "E", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON summary", cmd);
 	if ((help_shown = !parseTclap(cmd, a))) return;
 	model_path = model.getValue(), png_path = png.getValue(), scene3d_path = s3.getValue();
 	json = js.getValue();
-	if (png_path.empty() && scene3d_path.empty()) throw util::UsageError("show needs --png and/or --scene3d");
+	if (png_path.empty() && scene3d_path.empty())
+		throw util::UsageError("show needs --png and/or --scene3d");
 	if (!az.getValue().empty()) azimuth_deg = util::parseNumberArg(az.getValue(), "--azimuth");
 	if (!el.getValue().empty()) elevation_deg = util::parseNumberArg(el.getValue(), "--elevation");
 }
 
 void ModelApp::parseStats(const std::vector<std::string>& a)
 {
-	TCLAP::CmdLine cmd("mrolr-model stats: model statistics, optionally against the truth", ' ', "1");
+	TCLAP::CmdLine cmd("mrolr-model stats: model statistics, optionally against the truth", ' ',
+	                   "1");
 	TCLAP::UnlabeledValueArg<std::string> model("model", "model .wf", true, "", "M.wf", cmd);
 	Str truth("", "truth", "exact model", false, "", "T.wf", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);

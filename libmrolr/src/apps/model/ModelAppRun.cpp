@@ -25,7 +25,8 @@ std::string projectFile(const std::string& path)
 {
 	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
 	if (!std::filesystem::exists(path) && std::filesystem::exists(in_source)) return in_source;
-	if (!std::filesystem::exists(path)) throw std::runtime_error("configuration file '" + path + "' does not exist");
+	if (!std::filesystem::exists(path))
+		throw std::runtime_error("configuration file '" + path + "' does not exist");
 	return path;
 }
 
@@ -51,14 +52,21 @@ cv::Mat readImage(const std::string& path)
 
 nlohmann::json qualityJson(const model::ModelQuality& q)
 {
-	return {{"true_length_mm", q.true_length_mm}, {"recovered_length_mm", q.recovered_length_mm},
-		{"recovered_fraction", q.recovered_fraction}, {"model_features", q.model_features},
-		{"false_segments", q.false_features}, {"median_endpoint_error_mm", q.median_endpoint_error_mm},
-		{"max_endpoint_error_mm", q.max_endpoint_error_mm}, {"conics_compared", q.conics_compared},
-		{"median_conic_radius_error_mm", q.median_conic_radius_error_mm}};
+	return {{"true_length_mm", q.true_length_mm},
+	        {"recovered_length_mm", q.recovered_length_mm},
+	        {"recovered_fraction", q.recovered_fraction},
+	        {"model_features", q.model_features},
+	        {"false_segments", q.false_features},
+	        {"median_endpoint_error_mm", q.median_endpoint_error_mm},
+	        {"max_endpoint_error_mm", q.max_endpoint_error_mm},
+	        {"conics_compared", q.conics_compared},
+	        {"median_conic_radius_error_mm", q.median_conic_radius_error_mm}};
 }
 
-Eigen::Vector3d v3(const std::vector<double>& v, size_t i) { return {v[i], v[i + 1], v[i + 2]}; }
+Eigen::Vector3d v3(const std::vector<double>& v, size_t i)
+{
+	return {v[i], v[i + 1], v[i + 2]};
+}
 
 geometry::HeadAngles anglesFromDeg(const std::vector<double>& d)
 {
@@ -72,17 +80,24 @@ int ModelApp::run(std::ostream& out)
 	if (help_shown) return util::kExitOk;
 	report = {{"command", command}};
 	int rc = util::kExitOk;
-	if (command == "build") rc = runBuild();
-	else if (command == "scene") rc = runScene();
-	else if (command == "edit") rc = runEdit(out);
-	else if (command == "cliques") rc = runCliques();
-	else if (command == "show") rc = runShow();
-	else rc = runStats();
+	if (command == "build")
+		rc = runBuild();
+	else if (command == "scene")
+		rc = runScene();
+	else if (command == "edit")
+		rc = runEdit(out);
+	else if (command == "cliques")
+		rc = runCliques();
+	else if (command == "show")
+		rc = runShow();
+	else
+		rc = runStats();
 	report["lines"] = result.lines.size();
 	report["conics"] = result.conics.size();
 	report["cliques"] = result.cliques.size();
 	report["total_length_mm"] = model::totalLength(result);
-	if (json) out << report.dump(2) << "\n";
+	if (json)
+		out << report.dump(2) << "\n";
 	else
 		for (const auto& [k, v] : report.items()) out << k << " " << v.dump() << "\n";
 	return rc;
@@ -90,7 +105,8 @@ int ModelApp::run(std::ostream& out)
 
 void ModelApp::addStatsToReport(const model::WireFrame& truth)
 {
-	quality = model::compareToTruth(result, truth, loadOptions<model::QualityOptions>(config_path, "quality"));
+	quality = model::compareToTruth(result, truth,
+	                                loadOptions<model::QualityOptions>(config_path, "quality"));
 	report["quality"] = qualityJson(*quality);
 }
 
@@ -113,11 +129,13 @@ int ModelApp::runScene()
 {
 	const auto calib = stereo::loadStereoCalibration(calib_path);
 	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
-	const auto scene = stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
+	const auto scene =
+	    stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
 	result = model::sceneToWireFrame(scene);
 	if (head_deg)
 	{
-		const geometry::BiSightHead head(geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
+		const geometry::BiSightHead head(
+		    geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
 		result = model::leftCameraToC0(result, head, anglesFromDeg(*head_deg));
 	}
 	model::saveWireFrame(result, out_path);
@@ -138,7 +156,10 @@ int ModelApp::runEdit(std::ostream& out)
 	for (const auto& c : add_conics)
 		model::addConic(result, {0, v3(c, 0), v3(c, 3), v3(c, 6), c[9], c[10], c[11], c[12]});
 	if (grasp) model::setGrasp(result, v3(*grasp, 0), (*grasp)[3], (*grasp)[4], (*grasp)[5]);
-	const size_t merged = merge ? model::mergeDuplicates(result, loadOptions<model::TurntableOptions>(config_path, "turntable").merge) : 0;
+	const size_t merged =
+	    merge ? model::mergeDuplicates(
+	                result, loadOptions<model::TurntableOptions>(config_path, "turntable").merge)
+	          : 0;
 	if (list) model::listFeatures(result, out);
 	model::saveWireFrame(result, out_path);
 	report["removed"] = removed;
@@ -168,7 +189,8 @@ int ModelApp::runShow()
 	if (azimuth_deg) o.azimuth_deg = *azimuth_deg;
 	if (elevation_deg) o.elevation_deg = *elevation_deg;
 	if (!png_path.empty()) model::saveWireFramePng(result, o, png_path), report["png"] = png_path;
-	if (!scene3d_path.empty()) model::saveWireFrameScene(result, scene3d_path), report["scene3d"] = scene3d_path;
+	if (!scene3d_path.empty())
+		model::saveWireFrameScene(result, scene3d_path), report["scene3d"] = scene3d_path;
 	return util::kExitOk;
 }
 
