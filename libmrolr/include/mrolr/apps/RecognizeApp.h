@@ -10,7 +10,8 @@
  * Several --scene files are the scene models of a pan sweep, searched in order (the first scene
  * that recognises a model ends that model's search). With --left/--right/--calib the scene is built
  * from the stereo pair by stereo::reconstructScene ([scene] of --scene-config). --overlay draws the
- * recognised models on the left image (needs --left and --calib, also with --scene).
+ * scene and the recognised models on the left image projected with the calibration's left camera
+ * (needs --calib; without --left it draws on a blank canvas of the calibration's image size).
  *
  *     mrolr-recognize --make-demo DIR
  *

@@ -16,8 +16,8 @@ void requireInputs(const RecognizeApp& a)
 	if (stereo && a.scene_paths.empty() &&
 		(a.left_png.empty() || a.right_png.empty() || a.calib_path.empty()))
 		throw util::UsageError("building the scene from stereo needs --left, --right and --calib");
-	if (!a.overlay_png.empty() && (a.left_png.empty() || a.calib_path.empty()))
-		throw util::UsageError("--overlay draws on the left image: it needs --left and --calib");
+	if (!a.overlay_png.empty() && a.calib_path.empty())
+		throw util::UsageError("--overlay projects with the left camera: it needs --calib");
 }
 }  // namespace
 

@@ -77,9 +77,13 @@ int RecognizeApp::run(std::ostream& out)
 	for (const auto& m : models) results.push_back(recog::Recognizer(m, options).searchSweep(scenes));
 	json ? printJson(out) : printText(out);
 	if (!overlay_png.empty())
-		writeOverlay(
-			readImage(left_png, cv::IMREAD_COLOR), stereo::loadStereoCalibration(calib_path),
-			scenes, models, results, overlay_png);
+	{
+		const auto calib = stereo::loadStereoCalibration(calib_path);
+		const cv::Mat canvas = left_png.empty()
+			? cv::Mat(calib.image_size, CV_8UC3, cv::Scalar(30, 30, 30))
+			: readImage(left_png, cv::IMREAD_COLOR);
+		writeOverlay(canvas, calib, scenes, models, results, overlay_png);
+	}
 	if (!scene3d_path.empty()) writeScene3D(scenes, models, results, scene3d_path);
 	return util::kExitOk;
 }

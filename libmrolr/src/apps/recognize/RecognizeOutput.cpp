@@ -23,7 +23,10 @@ std::vector<cv::Point2d> project(
 {
 	std::vector<cv::Point3d> p_cv;
 	for (const auto& p : p_L)
-		if (p.z() > 1) p_cv.emplace_back(-p.x(), -p.y(), p.z());  // thesis L -> OpenCV camera
+		// thesis L -> OpenCV camera; points far outside the view are dropped because the
+		// distortion polynomial folds them back into the image
+		if (p.z() > 1 && std::abs(p.x()) < p.z() && std::abs(p.y()) < p.z())
+			p_cv.emplace_back(-p.x(), -p.y(), p.z());
 	std::vector<cv::Point2d> px;
 	if (p_cv.empty()) return px;
 	cv::projectPoints(p_cv, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), calib.K_left, calib.D_left, px);
