@@ -2,6 +2,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 
+#include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
@@ -85,6 +86,17 @@ void saveDepthPng(const mrpt::math::CMatrixFloat& depth_m, const std::string& pa
 			m.at<uint16_t>(r, c) =
 			    uint16_t(std::clamp(std::lround(depth_m(r, c) * 1000.0), 0L, 65535L));
 	if (!cv::imwrite(path, m)) throw std::runtime_error("cannot write " + path);
+}
+
+void savePair(const mrpt::img::CImage& left, const mrpt::img::CImage& right,
+              const std::string& path)
+{
+	const cv::Mat l = left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	const cv::Mat r = right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	cv::Mat pair;
+	cv::hconcat(std::vector<cv::Mat>{l, cv::Mat(l.rows, 8, l.type(), cv::Scalar::all(255)), r},
+	            pair);
+	if (!cv::imwrite(path, pair)) throw std::runtime_error("cannot write " + path);
 }
 
 void saveImage(const mrpt::img::CImage& img, const std::string& path)

@@ -26,6 +26,10 @@ nlohmann::json truthJson(const world::World& w, const geometry::BiSightHead& hea
 /** Depth (m) as a 16-bit PNG in millimetres (0 = nothing rendered). */
 void saveDepthPng(const mrpt::math::CMatrixFloat& depth_m, const std::string& path);
 
+/** Left and right side by side with an 8-pixel white gap (for viewing). */
+void savePair(const mrpt::img::CImage& left, const mrpt::img::CImage& right,
+              const std::string& path);
+
 /** Saves an image, throwing std::runtime_error naming the path on failure. */
 void saveImage(const mrpt::img::CImage& img, const std::string& path);
 

@@ -32,8 +32,10 @@ int SimApp::runSnapshot(std::ostream&)
 	saveImage(f.left, p("left.png"));
 	saveImage(f.right, p("right.png"));
 	saveDepthPng(f.depth_left_m, p("depth_left_mm.png"));
+	savePair(f.left, f.right, p("pair.png"));
 	std::ofstream(p("truth.json")) << truthJson(w, head, xv, a, f).dump(2) << "\n";
-	files_written = {p("left.png"), p("right.png"), p("depth_left_mm.png"), p("truth.json")};
+	files_written = {p("left.png"), p("right.png"), p("pair.png"), p("depth_left_mm.png"),
+	                 p("truth.json")};
 	frames_written = 1;
 	render_s = f.render_s;
 	return 0;
