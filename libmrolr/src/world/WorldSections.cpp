@@ -72,20 +72,32 @@ Patch parsePatch(const IniDocument& doc, const IniSection& s, const std::string&
 	return p;
 }
 
+namespace
+{
+/** The keys shared by tables and obstacles: centre_m = x z, yaw_deg, size_m (3 positive sizes). */
+struct Footprint
+{
+	double x_m, z_m, yaw_deg;
+	Eigen::Vector3d size;
+};
+
+Footprint readFootprint(const IniDocument& doc, const IniSection& s)
+{
+	const auto c = requireNumbers(doc, s, "centre_m", 2);
+	const auto size = requireNumbers(doc, s, "size_m", 3);
+	requirePositive(doc, s, "size_m", size);
+	return {c[0], c[1], optionalNumbers(doc, s, "yaw_deg", {0.0})[0], vec3(size)};
+}
+}  // namespace
+
 Table parseTable(const IniDocument& doc, const IniSection& s, const std::string& name)
 {
 	rejectUnknownKeys(doc, s, {"centre_m", "yaw_deg", "size_m", "top_colour"});
+	const Footprint f = readFootprint(doc, s);
 	Table t;
 	t.name = name;
-	const auto c = requireNumbers(doc, s, "centre_m", 2);
-	t.x_m = c[0];
-	t.z_m = c[1];
-	t.yaw_deg = optionalNumbers(doc, s, "yaw_deg", {0.0})[0];
-	const auto size = requireNumbers(doc, s, "size_m", 3);
-	requirePositive(doc, s, "size_m", size);
-	t.length_m = size[0];
-	t.depth_m = size[1];
-	t.top_height_m = size[2];
+	t.x_m = f.x_m, t.z_m = f.z_m, t.yaw_deg = f.yaw_deg;
+	t.length_m = f.size[0], t.depth_m = f.size[1], t.top_height_m = f.size[2];
 	t.top_colour = colour(doc, s, "top_colour", t.top_colour);
 	return t;
 }
@@ -93,15 +105,11 @@ Table parseTable(const IniDocument& doc, const IniSection& s, const std::string&
 Obstacle parseObstacle(const IniDocument& doc, const IniSection& s, const std::string& name)
 {
 	rejectUnknownKeys(doc, s, {"centre_m", "yaw_deg", "size_m", "colour"});
+	const Footprint f = readFootprint(doc, s);
 	Obstacle o;
 	o.name = name;
-	const auto c = requireNumbers(doc, s, "centre_m", 2);
-	o.x_m = c[0];
-	o.z_m = c[1];
-	o.yaw_deg = optionalNumbers(doc, s, "yaw_deg", {0.0})[0];
-	const auto size = requireNumbers(doc, s, "size_m", 3);
-	requirePositive(doc, s, "size_m", size);
-	o.size_m = vec3(size);
+	o.x_m = f.x_m, o.z_m = f.z_m, o.yaw_deg = f.yaw_deg;
+	o.size_m = f.size;
 	o.colour = colour(doc, s, "colour", o.colour);
 	return o;
 }
