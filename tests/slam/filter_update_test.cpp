@@ -116,3 +116,20 @@ TEST(FilterUpdate, PostponedReadsVehicleWithoutCatchUp)
 	EXPECT_THROW(f.update({Observation{9, v}}), std::out_of_range);
 	EXPECT_THROW(f.update({Observation{0, v}, Observation{0, v}}), std::invalid_argument);
 }
+
+TEST(FilterUpdate, ProcessNoiseFloorAddsPerSecond)
+{
+	SlamOptions o = slamtest::defaultOptions();
+	ActiveSlamFilter plain(o, kModel);
+	o.process_noise_floor_m = 0.01;
+	o.process_noise_floor_rad = 0.002;
+	ActiveSlamFilter floored(o, kModel);
+	const mrolr::base::WheelControl u{0.1, 0.1, 2.0};
+	plain.predict(u);
+	floored.predict(u);
+	const Eigen::Matrix3d d = floored.vehicleCovariance() - plain.vehicleCovariance();
+	EXPECT_NEAR(d(0, 0), 2.0 * 1e-4, 1e-15);
+	EXPECT_NEAR(d(1, 1), 2.0 * 1e-4, 1e-15);
+	EXPECT_NEAR(d(2, 2), 2.0 * 4e-6, 1e-15);
+	EXPECT_NEAR(d(0, 1), 0, 1e-18);
+}

@@ -76,7 +76,17 @@ void ActiveSlamFilter::OnTransitionJacobian(KFMatrix_VxV& F) const
 
 void ActiveSlamFilter::OnTransitionNoise(KFMatrix_VxV& Q) const
 {
-	Q.asEigen() = m_model.processNoise(vehicleRaw(), m_u);
+	Q.asEigen() = processNoise(vehicleRaw());
+}
+
+Eigen::Matrix3d ActiveSlamFilter::processNoise(const Eigen::Vector3d& x_v) const
+{
+	// Q of the model (eq 5.12) has rank 2 (two wheels drive three states); the floor stands for
+	// what its first-order propagation leaves out, scaled by the time the step takes.
+	const double t = std::abs(m_u.dt_s);
+	const Eigen::Vector3d floor(m_options.process_noise_floor_m, m_options.process_noise_floor_m,
+	                            m_options.process_noise_floor_rad);
+	return m_model.processNoise(x_v, m_u) + (t * floor.cwiseAbs2()).asDiagonal().toDenseMatrix();
 }
 
 void ActiveSlamFilter::OnPreComputingPredictions(const vector_KFArray_OBS&,

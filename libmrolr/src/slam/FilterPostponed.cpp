@@ -27,8 +27,7 @@ void ActiveSlamFilter::synchronise()
 void ActiveSlamFilter::predictPostponed()
 {
 	const Eigen::Vector3d xv = m_tracker.vehicle();
-	m_tracker.predict(
-		m_model.move(xv, m_u), m_model.jacobianState(xv, m_u), m_model.processNoise(xv, m_u));
+	m_tracker.predict(m_model.move(xv, m_u), m_model.jacobianState(xv, m_u), processNoise(xv));
 }
 
 UpdateReport ActiveSlamFilter::updatePostponed(const Observation& z)

@@ -75,6 +75,8 @@ void SlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, c
 		throw util::ConfigError(util::describeKey(cfg, s, "update_method") + ": " + e.what());
 	}
 	gate_probability = readIn(cfg, s, "gate_probability", 0.5, 1 - 1e-12);
+	process_noise_floor_m = readIn(cfg, s, "process_noise_floor_m", 0, 1);
+	process_noise_floor_rad = readIn(cfg, s, "process_noise_floor_rad", 0, 1);
 	min_visible_features = static_cast<int>(readIn(cfg, s, "min_visible_features", 0, 100));
 	attempt_window = static_cast<int>(readIn(cfg, s, "attempt_window", 1, 1000));
 	visibility_ratio_min = readIn(cfg, s, "visibility_ratio_min", 0, 1);
@@ -92,6 +94,8 @@ void SlamOptions::dumpToTextStream(std::ostream& out) const
 	    << "\nstd_vergence_rad = " << std_vergence_rad
 	    << "\nupdate_method = " << toString(update_method)
 	    << "\ngate_probability = " << gate_probability
+	    << "\nprocess_noise_floor_m = " << process_noise_floor_m
+	    << "\nprocess_noise_floor_rad = " << process_noise_floor_rad
 	    << "\nmin_visible_features = " << min_visible_features
 	    << "\nattempt_window = " << attempt_window
 	    << "\nvisibility_ratio_min = " << visibility_ratio_min

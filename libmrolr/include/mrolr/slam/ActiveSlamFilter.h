@@ -127,6 +127,7 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 
  private:
 	Eigen::Vector3d vehicleRaw() const;
+	Eigen::Matrix3d processNoise(const Eigen::Vector3d& x_v) const;
 	Eigen::Vector3d featureRaw(size_t i) const;
 	void appendFeature(const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info);
 	bool postponedApplies(const std::vector<Observation>& z) const;

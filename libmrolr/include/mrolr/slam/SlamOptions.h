@@ -47,6 +47,9 @@ struct SlamOptions
 	double std_elevation_rad = 0.01;
 	double std_vergence_rad = 0.002;
 	UpdateMethod update_method = UpdateMethod::Sequential;
+	/** Added to the model's Q per second of motion: σ² = floor² · Δt for z, x (m) and φ (rad). */
+	double process_noise_floor_m = 0;
+	double process_noise_floor_rad = 0;
 	/** A measurement whose NIS exceeds the χ²₃ quantile of this probability is rejected. */
 	double gate_probability = 0.99;
 	/** Feature management (5.7). */
