@@ -2,12 +2,14 @@
 /** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (issue 5, thesis 5.2–5.7, 7.2).
  *
  *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--out DIR] [--json]
+ *     mrolr-slam --world maps/lab/world.ini --acquire-known
  *
  * The robot drives the world's waypoints (rotate–translate–rotate legs planned from the estimate),
  * its true wheels slipping as configured; at every step the head saccades to the selected feature,
  * finds its saved patch by NSSD in the predicted ellipses and the filter is updated with the
- * triangulated angles. Known landmarks of the world are acquired at the start pose (fixate, lock
- * on, store the patch) and enter the map with zero covariance. */
+ * triangulated angles. Known features come from <world dir>/known_features.ini when it exists
+ * (written by --acquire-known: fixate each known landmark from the first waypoint, lock on, store
+ * the patch), otherwise they are acquired the same way at the start of the run. */
 
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/base/TrajectoryPlanner.h>
@@ -71,7 +73,7 @@ class SlamApp
 
 	// Inputs (set by initialize)
 	std::string world_path, config_path, rawlog_path, out_dir;
-	bool live = false, json = false, help_shown = false;
+	bool live = false, acquire_known = false, json = false, help_shown = false;
 
 	// Results (set by run)
 	std::vector<SlamStepLog> steps;
@@ -80,6 +82,7 @@ class SlamApp
 
  private:
 	void runLive();
+	void runAcquireKnown(std::ostream& out);
 	void writeOutputs() const;
 	void printSummary(std::ostream& out) const;
 };

@@ -19,6 +19,10 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	                                    cmd);
 	TCLAP::SwitchArg liveArg(
 	    "", "live", "run on the simulator: drive the waypoints, measure with the head", cmd);
+	TCLAP::SwitchArg acquireArg("", "acquire-known",
+	                            "fixate the world's known landmarks from the first waypoint and "
+	                            "write <world dir>/known_features.ini",
+	                            cmd);
 	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "replay a rawlog recorded by mrolr-sim",
 	                                    false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> out(
@@ -31,9 +35,11 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	}
 	world_path = world.getValue(), config_path = config.getValue(), rawlog_path = rawlog.getValue();
 	out_dir = out.getValue(), live = liveArg.getValue(), json = js.getValue();
-	if (live == !rawlog_path.empty())
-		throw util::UsageError("give exactly one of --live and --rawlog FILE");
-	if (live && world_path.empty()) throw util::UsageError("--live needs --world FILE");
+	acquire_known = acquireArg.getValue();
+	if (int(live) + int(acquire_known) + int(!rawlog_path.empty()) != 1)
+		throw util::UsageError("give exactly one of --live, --acquire-known and --rawlog FILE");
+	if (rawlog_path.empty() && world_path.empty())
+		throw util::UsageError("--live and --acquire-known need --world FILE");
 }
 
 namespace
@@ -101,6 +107,16 @@ nlohmann::json toJson(const SlamSummary& s)
 int SlamApp::run(std::ostream& out)
 {
 	if (help_shown) return util::kExitOk;
+	if (acquire_known)
+	{
+		runAcquireKnown(out);
+		return util::kExitOk;
+	}
+	if (acquire_known)
+	{
+		runAcquireKnown(out);
+		return util::kExitOk;
+	}
 	if (!live)
 		throw std::runtime_error(
 		    "--rawlog replay is not implemented yet (needs the mrolr-sim rawlog reader); use "

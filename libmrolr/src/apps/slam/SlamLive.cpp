@@ -4,6 +4,7 @@
 #include <mrolr/geometry/IdealHead.h>
 #include <mrolr/util/Config.h>
 #include <mrolr/vision/Fixation.h>
+#include <mrolr/vision/KnownFeatures.h>
 #include <mrolr/vision/SyntheticWorld.h>
 #include <mrolr/world/World.h>
 
@@ -103,30 +104,77 @@ cv::Mat acquireKnownPatch(vision::SyntheticWorld& device, const geometry::BiSigh
 	if (!r.locked) throw std::runtime_error("known feature '" + name + "': " + r.failure);
 	return patch;
 }
+
+Eigen::Vector3d startPose(const world::World& w)
+{
+	if (w.waypoints.size() < 2)
+		throw std::runtime_error(w.path + ": the route needs at least 2 waypoints");
+	return {w.waypoints[0].z_m, w.waypoints[0].x_m, w.waypoints[0].phi_rad};
+}
+
+std::string knownFeaturesPath(const world::World& w)
+{
+	return (std::filesystem::path(w.directory()) / "known_features.ini").string();
+}
+
+/** The world's known landmarks, fixated from @p x0 with the head of @p device (5.6.2). */
+std::vector<vision::KnownFeature> acquireKnown(const world::World& w,
+                                               vision::SyntheticWorld& device,
+                                               const geometry::BiSightHead& head,
+                                               const LiveSetup& s, const Eigen::Vector3d& x0)
+{
+	std::vector<vision::KnownFeature> out;
+	for (const auto& l : w.landmarks)
+		if (l.known)
+			out.push_back({l.name, l.p_LinW,
+			               acquireKnownPatch(device, head,
+			                                 slam::pointInHead(x0, l.p_LinW, s.slam.head.constants),
+			                                 s.vision, l.name)});
+	return out;
+}
+}  // namespace
+
+void SlamApp::runAcquireKnown(std::ostream& out)
+{
+	const LiveSetup s = loadSetup(config_path);
+	const world::World w = world::World::load(world_path);
+	const geometry::BiSightHead head(s.bisight);
+	vision::SyntheticWorld device(head, texturedLandmarks(w, s.run.texture_size_px),
+	                              s.run.image_noise_grey, s.run.seed);
+	const Eigen::Vector3d x0 = startPose(w);
+	device.setVehicle(x0);
+	const auto known = acquireKnown(w, device, head, s, x0);
+	vision::saveKnownFeatures(knownFeaturesPath(w), known);
+	out << "acquired " << known.size() << " known feature(s) into " << knownFeaturesPath(w) << "\n";
+}
+
+namespace
+{
+void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w,
+                      vision::SyntheticWorld& device, const geometry::BiSightHead& head,
+                      const LiveSetup& s, const Eigen::Vector3d& x0)
+{
+	const std::string path = knownFeaturesPath(w);
+	const auto known = std::filesystem::exists(path) ? vision::loadKnownFeatures(path)
+	                                                 : acquireKnown(w, device, head, s, x0);
+	for (const auto& f : known) vslam.addKnownFeature(f.id, f.p_FinW, f.patch);
+}
 }  // namespace
 
 void SlamApp::runLive()
 {
 	const LiveSetup s = loadSetup(config_path);
 	const world::World w = world::World::load(world_path);
-	if (w.waypoints.size() < 2)
-		throw std::runtime_error(world_path + ": the route needs at least 2 waypoints");
 	const geometry::BiSightHead head(s.bisight);
 	const base::LabmateModel model(s.labmate);
 	vision::SyntheticWorld device(head, texturedLandmarks(w, s.run.texture_size_px),
 	                              s.run.image_noise_grey, s.run.seed);
-	const Eigen::Vector3d x0(w.waypoints[0].z_m, w.waypoints[0].x_m, w.waypoints[0].phi_rad);
+	const Eigen::Vector3d x0 = startPose(w);
 	slam::ActiveSlamFilter filter(s.slam, model);
 	filter.reset(x0);
 	device.setVehicle(x0);
 	vision::VisualSlam vslam(filter, head, s.vision);
-	for (const auto& l : w.landmarks)
-		if (l.known)
-			vslam.addKnownFeature(
-			    l.name, l.p_LinW,
-			    acquireKnownPatch(device, head,
-			                      slam::pointInHead(x0, l.p_LinW, s.slam.head.constants), s.vision,
-			                      l.name));
+	addKnownFeatures(vslam, w, device, head, s, x0);
 	TrueWheels wheels(s.run);
 	Eigen::Vector3d x_true = x0, x_dr = x0;
 	auto log = [&](vision::CycleRecord rec)

@@ -1,0 +1,62 @@
+// Known features (thesis 5.6.2): the shipped maps/lab file loads, save/load round-trips, and
+// malformed entries are reported with file, section and key.
+#include <mrolr/util/Config.h>
+#include <mrolr/vision/KnownFeatures.h>
+#include <mrolr/vision/SyntheticStereoHead.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace mrolr::vision;
+
+TEST(KnownFeatures, ShippedLabFileHasTheFireSign)
+{
+	const auto known =
+	    loadKnownFeatures(std::string(MROLR_SOURCE_DIR) + "/maps/lab/known_features.ini");
+	ASSERT_EQ(known.size(), 1u);
+	EXPECT_EQ(known[0].id, "fire_sign");
+	EXPECT_NEAR(known[0].p_FinW.z(), 5.99, 1e-9);
+	EXPECT_EQ(known[0].patch.size(), cv::Size(13, 13));
+}
+
+TEST(KnownFeatures, SaveLoadRoundTrip)
+{
+	const auto dir = std::filesystem::temp_directory_path() / "mrolr_known_test";
+	const std::string path = (dir / "known_features.ini").string();
+	const std::vector<KnownFeature> in{{"a", {1, 2, 3}, makeTexture(13, 1)},
+	                                   {"b", {-0.5, 1.5, 4.25}, makeTexture(13, 2)}};
+	saveKnownFeatures(path, in);
+	auto out = loadKnownFeatures(path);
+	ASSERT_EQ(out.size(), 2u);
+	std::sort(out.begin(), out.end(), [](auto& x, auto& y) { return x.id < y.id; });
+	for (size_t i = 0; i < 2; ++i)
+	{
+		EXPECT_EQ(out[i].id, in[i].id);
+		EXPECT_LT((out[i].p_FinW - in[i].p_FinW).norm(), 1e-9);
+		EXPECT_EQ(cv::norm(out[i].patch, in[i].patch, cv::NORM_INF), 0.0);
+	}
+}
+
+TEST(KnownFeatures, MalformedEntriesNameTheKey)
+{
+	const auto dir = std::filesystem::temp_directory_path() / "mrolr_known_bad";
+	std::filesystem::create_directories(dir);
+	const std::string path = (dir / "known_features.ini").string();
+	for (const std::string line : {"x = 1 2 three p.png", "x = 1 2 3", "x = 1 2 3 missing.png"})
+	{
+		std::ofstream(path) << "[known_features]\n" << line << "\n";
+		try
+		{
+			loadKnownFeatures(path);
+			FAIL() << "accepted: " << line;
+		}
+		catch (const mrolr::util::ConfigError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("[known_features] x"), std::string::npos)
+			    << e.what();
+		}
+	}
+	EXPECT_THROW(loadKnownFeatures((dir / "none.ini").string()), mrolr::util::ConfigError);
+}
