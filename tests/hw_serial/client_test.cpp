@@ -54,7 +54,7 @@ TEST(SerialClient, BaseDriverSendsExactBytesAndReadsOdometry)
 	base.step({0.2, -0.1, 0.5});
 	const Odometry o = base.odometry();
 	ASSERT_EQ(peer.requests().size(), 3u);
-	EXPECT_EQ(peer.requests()[0], "1 ID?*23\n");
+	EXPECT_EQ(peer.requests()[0], "1 ID?*614B2F7B\n");
 	EXPECT_EQ(peer.requests()[1], f("2 STEP 0.2 -0.1 0.5"));
 	EXPECT_EQ(peer.requests()[2], f("3 ODO?"));
 	EXPECT_EQ(o.xv_zxphi, Eigen::Vector3d(0.5, -0.25, 0.125));

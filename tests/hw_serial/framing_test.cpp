@@ -20,13 +20,13 @@ std::vector<AssembledLine> drain(LineAssembler& a)
 }
 }  // namespace
 
-TEST(Framing, ChecksumIsTheXorOfTheBodyInUpperCaseHex)
+TEST(Framing, ChecksumIsMrptsCrc32InUpperCaseHex)
 {
-	// 0x31 ^ 0x20 ^ 0x4F ^ 0x4B = 0x15
-	EXPECT_EQ(lineChecksum("1 OK"), 0x15);
-	EXPECT_EQ(frameLine("1 OK"), "1 OK*15\n");
-	EXPECT_EQ(frameLine(""), "*00\n");
-	EXPECT_EQ(frameLine("7 ODO?"), "7 ODO?*" + std::string("6C") + "\n");
+	// the check value of this CRC-32 variant (reflected 0xEDB88320, init 0, no final XOR)
+	EXPECT_EQ(lineChecksum("123456789"), 0x2DFD2D88u);
+	EXPECT_EQ(frameLine("1 OK"), "1 OK*E63512F6\n");
+	EXPECT_EQ(frameLine(""), "*00000000\n");
+	EXPECT_EQ(frameLine("7 ODO?"), "7 ODO?*ADDD0B91\n");
 }
 
 TEST(Framing, UnframeAcceptsItsOwnFramesAndATrailingCarriageReturn)
@@ -44,16 +44,17 @@ TEST(Framing, UnframeAcceptsItsOwnFramesAndATrailingCarriageReturn)
 
 TEST(Framing, UnframeRejectsDamagedLines)
 {
-	EXPECT_FALSE(unframeLine("1 OK*54").ok);   // wrong checksum
-	EXPECT_FALSE(unframeLine("1 OK*15 ").ok);  // trailing byte
-	EXPECT_FALSE(unframeLine("1 OK*1").ok);    // one hex digit
-	EXPECT_FALSE(unframeLine("1 OK*1g").ok);   // not hex
-	EXPECT_FALSE(unframeLine("1 OK*15x").ok);
+	EXPECT_FALSE(unframeLine("1 OK*E63512F7").ok);   // wrong checksum
+	EXPECT_FALSE(unframeLine("1 OK*E63512F6 ").ok);  // trailing byte
+	EXPECT_FALSE(unframeLine("1 OK*E63512F").ok);    // seven hex digits
+	EXPECT_FALSE(unframeLine("1 OK*E63512Fg").ok);   // not hex
+	EXPECT_FALSE(unframeLine("1 OK*E63512F6x").ok);
+	EXPECT_FALSE(unframeLine("1 OK*e63512f6").ok);  // lower-case hex
 	EXPECT_FALSE(unframeLine("1 OK").ok);      // no checksum
 	EXPECT_FALSE(unframeLine("").ok);
-	EXPECT_EQ(unframeLine("1 OK*54").error, "checksum mismatch");
-	EXPECT_FALSE(unframeLine(std::string("1 O\0K*15", 8)).ok);  // NUL inside
-	EXPECT_FALSE(unframeLine("1 \xffOK*15").ok);
+	EXPECT_EQ(unframeLine("1 OK*E63512F7").error, "checksum mismatch");
+	EXPECT_FALSE(unframeLine(std::string("1 O\0K*E63512F6", 14)).ok);  // NUL inside
+	EXPECT_FALSE(unframeLine("1 \xffOK*E63512F6").ok);
 	// a dropped byte anywhere in a real reply is caught
 	std::string framed = frameLine("3 OK 0.25 -1.5 0.125 5000 4990 2.5");
 	framed.pop_back();
@@ -63,6 +64,16 @@ TEST(Framing, UnframeRejectsDamagedLines)
 		damaged.erase(i, 1);
 		EXPECT_FALSE(unframeLine(damaged).ok) << "byte " << i << " dropped: " << damaged;
 	}
+	// two equal bytes dropped: an XOR checksum cannot see it, the CRC must
+	for (size_t i = 0; i < framed.size(); ++i)
+		for (size_t j = i + 1; j < framed.size(); ++j)
+			if (framed[i] == framed[j] && framed[i] != '*')
+			{
+				std::string damaged = framed;
+				damaged.erase(j, 1);
+				damaged.erase(i, 1);
+				EXPECT_FALSE(unframeLine(damaged).ok) << "bytes " << i << "," << j << ": " << damaged;
+			}
 }
 
 TEST(Framing, AssemblerJoinsLinesSplitAtEveryByte)
@@ -74,7 +85,7 @@ TEST(Framing, AssemblerJoinsLinesSplitAtEveryByte)
 		for (size_t i = 0; i < stream.size(); i += chunk) a.feed(stream.substr(i, chunk));
 		const auto lines = drain(a);
 		ASSERT_EQ(lines.size(), 3u) << "chunk " << chunk;
-		EXPECT_EQ(lines[0].text, "1 OK*15");
+		EXPECT_EQ(lines[0].text, "1 OK*E63512F6");
 		EXPECT_EQ(unframeLine(lines[1].text).body, "2 OK 1 2 3");
 		EXPECT_EQ(unframeLine(lines[2].text).body, "3 ERR X y");
 		EXPECT_EQ(a.pendingBytes(), 0u);
@@ -87,10 +98,10 @@ TEST(Framing, AssemblerHoldsAnIncompleteLine)
 	a.feed("1 O");
 	EXPECT_TRUE(drain(a).empty());
 	EXPECT_EQ(a.pendingBytes(), 3u);
-	a.feed("K*15\n2");
+	a.feed("K*E63512F6\n2");
 	const auto lines = drain(a);
 	ASSERT_EQ(lines.size(), 1u);
-	EXPECT_EQ(lines[0].text, "1 OK*15");
+	EXPECT_EQ(lines[0].text, "1 OK*E63512F6");
 	EXPECT_EQ(a.pendingBytes(), 1u);
 	a.clear();
 	EXPECT_EQ(a.pendingBytes(), 0u);
@@ -108,7 +119,7 @@ TEST(Framing, AssemblerReportsOverlongLinesOnceAndResynchronises)
 	EXPECT_TRUE(lines[0].overlong);
 	EXPECT_EQ(lines[0].text, std::string(16, 'x'));
 	EXPECT_FALSE(lines[1].overlong);
-	EXPECT_EQ(lines[1].text, "1 OK*15");
+	EXPECT_EQ(lines[1].text, "1 OK*E63512F6");
 }
 
 TEST(Framing, AssemblerPassesGarbageAsLinesForTheCheckerToReject)

@@ -42,9 +42,9 @@ TEST(ProtocolServer, ExactReplyBytes)
 	fake::Base base;
 	BaseHandler handler(base);
 	ProtocolServer server(handler);
-	EXPECT_EQ(server.handleLine({"5 STEP 0 0 0.5*" + std::string("0C"), false}),
+	EXPECT_EQ(server.handleLine({"5 STEP 0 0 0.5*" + std::string("3B3D37F1"), false}),
 	          frameLine("5 OK"));
-	EXPECT_EQ(frameLine("5 OK"), "5 OK*11\n");
+	EXPECT_EQ(frameLine("5 OK"), "5 OK*695785A1\n");
 }
 
 TEST(ProtocolServer, ARepeatedRequestIsAnsweredFromTheCacheNotExecutedTwice)
@@ -99,7 +99,7 @@ TEST(ProtocolServer, DamagedLinesGetBadLineWithoutSequenceNumber)
 		r.pop_back();
 		return unframeLine(r).body;
 	};
-	EXPECT_EQ(reply("1 STEP 0 0 0.5*00"), "- ERR BADLINE checksum mismatch");
+	EXPECT_EQ(reply("1 STEP 0 0 0.5*00000000"), "- ERR BADLINE checksum mismatch");
 	EXPECT_EQ(reply("garbage"), "- ERR BADLINE no checksum at the end of the line");
 	EXPECT_EQ(reply(std::string("\x01\x02", 2)), "- ERR BADLINE non-printable byte in line");
 	EXPECT_EQ(reply("xxxx", true), "- ERR BADLINE line too long");

@@ -1,5 +1,7 @@
 #include <mrolr/hw_serial/Framing.h>
 
+#include <mrpt/system/crc.h>
+
 #include <cstdio>
 
 namespace mrolr::hw
@@ -16,17 +18,18 @@ int hexValue(char c)
 }
 }  // namespace
 
-uint8_t lineChecksum(std::string_view body)
+constexpr size_t kCrcDigits = 8;
+
+uint32_t lineChecksum(std::string_view body)
 {
-	uint8_t x = 0;
-	for (char c : body) x ^= uint8_t(c);
-	return x;
+	if (body.empty()) return 0;
+	return mrpt::system::compute_CRC32(reinterpret_cast<const uint8_t*>(body.data()), body.size());
 }
 
 std::string frameLine(std::string_view body)
 {
-	char tail[5];
-	std::snprintf(tail, sizeof(tail), "*%02X", unsigned(lineChecksum(body)));
+	char tail[kCrcDigits + 2];
+	std::snprintf(tail, sizeof(tail), "*%08X", unsigned(lineChecksum(body)));
 	return std::string(body) + tail + "\n";
 }
 
@@ -41,14 +44,24 @@ Unframed unframeLine(std::string_view line)
 			return u;
 		}
 	const size_t star = line.rfind('*');
-	if (star == std::string_view::npos || star + 3 != line.size())
+	if (star == std::string_view::npos || star + 1 + kCrcDigits != line.size())
 	{
 		u.error = "no checksum at the end of the line";
 		return u;
 	}
-	const int hi = hexValue(line[star + 1]), lo = hexValue(line[star + 2]);
+	uint32_t crc = 0;
+	for (size_t i = star + 1; i < line.size(); ++i)
+	{
+		const int h = hexValue(line[i]);
+		if (h < 0)
+		{
+			u.error = "checksum is not upper-case hex";
+			return u;
+		}
+		crc = crc * 16 + uint32_t(h);
+	}
 	const auto body = line.substr(0, star);
-	if (hi < 0 || lo < 0 || lineChecksum(body) != uint8_t(hi * 16 + lo))
+	if (lineChecksum(body) != crc)
 	{
 		u.error = "checksum mismatch";
 		return u;

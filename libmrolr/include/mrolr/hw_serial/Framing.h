@@ -1,8 +1,10 @@
 #pragma once
 /** Line framing of the MROLR serial protocols (docs/serial.md): every line is printable ASCII,
- * `BODY*HH\n`, where HH is the XOR of the bytes of BODY as two upper-case hex digits (as in NMEA
- * 0183). A dropped or damaged byte therefore shows up as a bad checksum instead of a wrong number.
- * Pure functions, no I/O. */
+ * `BODY*CCCCCCCC\n`, where CCCCCCCC is the CRC-32 of the bytes of BODY as eight upper-case hex
+ * digits (mrpt::system::compute_CRC32: reflected polynomial 0xEDB88320, initial value 0, no final
+ * XOR; "123456789" gives 2DFD2D88). Dropped or damaged bytes therefore show up as a bad checksum
+ * instead of a wrong number (an NMEA-style XOR misses two equal dropped bytes, which the pty test
+ * with random byte loss did hit). Pure functions, no I/O. */
 
 #include <cstdint>
 #include <deque>
@@ -11,10 +13,10 @@
 
 namespace mrolr::hw
 {
-/** XOR of all bytes of @p body. */
-uint8_t lineChecksum(std::string_view body);
+/** CRC-32 of the bytes of @p body (0 for an empty body). */
+uint32_t lineChecksum(std::string_view body);
 
-/** `body*HH\n`. */
+/** `body*CCCCCCCC\n`. */
 std::string frameLine(std::string_view body);
 
 /** Result of checking one received line (without its '\n'). */
@@ -25,7 +27,8 @@ struct Unframed
 	std::string error;  ///< why the line was rejected, when !ok
 };
 
-/** Checks printable ASCII, the `*HH` suffix and the checksum; a trailing '\r' is tolerated. */
+/** Checks printable ASCII, the `*CCCCCCCC` suffix and the checksum; a trailing '\r' is
+ * tolerated. */
 Unframed unframeLine(std::string_view line);
 
 /** @p bytes with non-printable bytes as \xHH, cut to @p max_chars (for error messages). */
