@@ -214,3 +214,16 @@ TEST(SerialDrivers, HeadGrabStampsTheInjectedImagesWithTheHeadAngles)
 	EXPECT_EQ(s.angles.pan, 0.2);
 	EXPECT_EQ(s.angles.verg_right, -0.03);
 }
+
+TEST(SerialDrivers, AStepWaitsForItsDurationOnTopOfTheTimeout)
+{
+	auto [host, dev] = makeMemoryPipe();
+	// the device answers a 0.5 s step after 250 ms + 250 ms: beyond the 300 ms timeout, within
+	// 300 + 500
+	ScriptedPeer peer(std::move(dev), {{f("1 OK LABMATE 1")}, {"", f("2 OK")}}, 250);
+	LinkOptions link = fastLink(0);
+	link.timeout_ms = 300;  // the identification answers after 250 ms too
+	SerialBase base(std::make_unique<SerialClient>(std::move(host), link));
+	EXPECT_NO_THROW(base.step({0.1, 0.1, 0.5}));
+	EXPECT_EQ(peer.requests().size(), 2u);
+}

@@ -230,7 +230,7 @@ TEST(PtyFaults, PersistentGarbageIsReportedNamingDeviceAndPort)
 	EXPECT_NE(std::string(e.what()).find("garbage reply '\\x13\\xFF\\x00 garbage \\x80\\x7F'"),
 	          std::string::npos)
 	    << e.what();
-	EXPECT_NE(std::string(e.what()).find("after 3 attempts of 100 ms (command STEP)"),
+	EXPECT_NE(std::string(e.what()).find("after 3 attempts of 600 ms (command STEP)"),
 	          std::string::npos)
 	    << e.what();
 }

@@ -29,8 +29,9 @@ void SerialClient::fail(int kind, const std::string& what) const
 }
 
 std::vector<std::string> SerialClient::call(const std::string& verb,
-                                            const std::vector<std::string>& args)
+                                            const std::vector<std::string>& args, int timeout_ms)
 {
+	if (timeout_ms <= 0) timeout_ms = options_.timeout_ms;
 	const int seq = next_seq_;
 	next_seq_ = next_seq_ % kMaxSeq + 1;
 	const std::string request = frameLine(formatMessage({seq, verb, args}));
@@ -43,7 +44,7 @@ std::vector<std::string> SerialClient::call(const std::string& verb,
 		try
 		{
 			link_->write(request);
-			last = awaitReply(seq, reply, garbage);
+			last = awaitReply(seq, timeout_ms, reply, garbage);
 		}
 		catch (const TransportClosed& e)
 		{
@@ -55,15 +56,16 @@ std::vector<std::string> SerialClient::call(const std::string& verb,
 		fail(int(Kind::Refused), "command " + verb + " answered ERR " + joinText(reply.fields, 0));
 	}
 	const std::string tries = std::to_string(options_.retries + 1) + " attempts of " +
-	                          std::to_string(options_.timeout_ms) + " ms (command " + verb + ")";
+	                          std::to_string(timeout_ms) + " ms (command " + verb + ")";
 	if (last == Outcome::Garbage)
 		fail(int(Kind::Garbage), garbage + " after " + tries);
 	fail(int(Kind::Timeout), "no reply after " + tries);
 }
 
-SerialClient::Outcome SerialClient::awaitReply(int seq, Message& reply, std::string& garbage)
+SerialClient::Outcome SerialClient::awaitReply(int seq, int timeout_ms, Message& reply,
+                                               std::string& garbage)
 {
-	const auto deadline = Clock::now() + std::chrono::milliseconds(options_.timeout_ms);
+	const auto deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
 	for (;;)
 	{
 		AssembledLine line;

@@ -4,6 +4,7 @@
 #include <mrolr/hw_serial/SerialDrivers.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace mrolr::hw
 {
@@ -58,7 +59,9 @@ SerialBase::SerialBase(std::unique_ptr<SerialClient> client) : client_(std::move
 
 void SerialBase::step(const base::WheelControl& u)
 {
-	client_->call("STEP", numberFields({u.v1_mps, u.v2_mps, u.dt_s}));
+	// the device answers when the step is done: wait for dt on top of the usual timeout
+	const int wait_ms = client_->options().timeout_ms + int(std::ceil(u.dt_s * 1000));
+	client_->call("STEP", numberFields({u.v1_mps, u.v2_mps, u.dt_s}), wait_ms);
 }
 
 Odometry SerialBase::odometry() const
@@ -91,7 +94,8 @@ SerialHead::SerialHead(std::unique_ptr<SerialClient> client, ImageSource images)
 double SerialHead::moveTo(const geometry::HeadAngles& t)
 {
 	const auto f = mapLimit<geometry::FixationError>(*client_, [&] {
-		return client_->call("MOVE", numberFields({t.pan, t.tilt, t.verg_left, t.verg_right}));
+		return client_->call("MOVE", numberFields({t.pan, t.tilt, t.verg_left, t.verg_right}),
+		                     client_->options().motion_timeout_ms);
 	});
 	return replyNumbers(*client_, f, 1, "MOVE reply")[0];
 }
@@ -121,7 +125,8 @@ SerialArm::SerialArm(std::unique_ptr<SerialClient> client) : client_(std::move(c
 void SerialArm::moveTo(const ArmJoints& j)
 {
 	mapLimit<std::out_of_range>(*client_, [&] {
-		return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())));
+		return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())),
+		                     client_->options().motion_timeout_ms);
 	});
 }
 

@@ -16,6 +16,9 @@ void SerialLinkConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 	link.device = section;
 	link.timeout_ms = int(util::readInt(cfg, section, "timeout_ms", link.timeout_ms));
 	util::requireInRange(cfg, section, "timeout_ms", link.timeout_ms, 1, 60000);
+	link.motion_timeout_ms =
+	    int(util::readInt(cfg, section, "motion_timeout_ms", link.motion_timeout_ms));
+	util::requireInRange(cfg, section, "motion_timeout_ms", link.motion_timeout_ms, 1, 600000);
 	link.retries = int(util::readInt(cfg, section, "retries", link.retries));
 	util::requireInRange(cfg, section, "retries", link.retries, 0, 100);
 }
@@ -23,7 +26,8 @@ void SerialLinkConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 void SerialLinkConfig::dump(std::ostream& out) const
 {
 	out << "port = " << port << "\nbaud = " << baud << "\ntimeout_ms = " << link.timeout_ms
-	    << "\nretries = " << link.retries << "\n";
+	    << "\nmotion_timeout_ms = " << link.motion_timeout_ms << "\nretries = " << link.retries
+	    << "\n";
 }
 
 std::unique_ptr<SerialClient> openSerialClient(const SerialLinkConfig& config)

@@ -22,6 +22,7 @@ struct LinkOptions
 {
 	std::string device = "device";  ///< name used in error messages (the config section)
 	int timeout_ms = 500;           ///< wait for a reply, per attempt
+	int motion_timeout_ms = 5000;   ///< wait for the reply to a motion (head or arm MOVE)
 	int retries = 3;                ///< resends after the first attempt
 	size_t max_line_bytes = 256;    ///< longer lines are rejected as garbage
 };
@@ -33,8 +34,10 @@ class SerialClient
 
 	/** Sends `VERB ARGS...` and returns the fields of the `OK` reply. Throws SerialDeviceError:
 	 * Refused for an `ERR` other than BADLINE (what() has the code and the device's text),
-	 * Timeout or Garbage when every attempt failed, Disconnected at once when the link closes. */
-	std::vector<std::string> call(const std::string& verb, const std::vector<std::string>& args);
+	 * Timeout or Garbage when every attempt failed, Disconnected at once when the link closes.
+	 * @p timeout_ms overrides options().timeout_ms for this call (a motion that takes time). */
+	std::vector<std::string> call(const std::string& verb, const std::vector<std::string>& args,
+	                              int timeout_ms = 0);
 
 	/** The code of the last Refused error (e.g. "LIMIT"), for drivers that map it. */
 	const std::string& lastErrorCode() const { return last_code_; }
@@ -50,7 +53,7 @@ class SerialClient
 		Timeout,
 		Garbage
 	};
-	Outcome awaitReply(int seq, Message& reply, std::string& garbage);
+	Outcome awaitReply(int seq, int timeout_ms, Message& reply, std::string& garbage);
 	Outcome classifyLine(const AssembledLine& line, int seq, Message& reply, std::string& garbage);
 	[[noreturn]] void fail(int kind, const std::string& what) const;
 

@@ -7,6 +7,7 @@
  *     port = /dev/ttyUSB0
  *     baud = 9600
  *     timeout_ms = 500
+ *     motion_timeout_ms = 5000
  *     retries = 3
  *
  * The choice between `sim` and `serial` is the mission's factory; these functions do not read
@@ -22,7 +23,8 @@
 
 namespace mrolr::hw
 {
-/** Keys `port`, `baud` (required), `timeout_ms`, `retries` (optional) of a device section. */
+/** Keys `port`, `baud` (required), `timeout_ms`, `motion_timeout_ms`, `retries` (optional) of a
+ * device section. A STEP waits timeout_ms plus its dt; a head or arm MOVE waits motion_timeout_ms. */
 struct SerialLinkConfig
 {
 	std::string port;
