@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 
 using mrolr::world::World;
 using mrolr::world::WorldError;
@@ -114,4 +115,21 @@ TEST(WorldScenery, ErrorsNameFileSectionKeyAndValue)
 	EXPECT_NE(m.find("unknown section"), std::string::npos) << m;
 	m = errorOf("[table.u]\ncentre_m = 0 1.5\n");
 	EXPECT_NE(m.find("[table.u] size_m: missing key"), std::string::npos) << m;
+}
+
+TEST(WorldScenery, EveryShippedWorldLoads)
+{
+	// the point-landmark worlds of the EKF simulator and the full lab share one format
+	int count = 0;
+	for (const auto& e :
+		 std::filesystem::directory_iterator(std::string(MROLR_SOURCE_DIR) + "/maps"))
+	{
+		const auto file = e.path() / "world.ini";
+		if (!std::filesystem::exists(file)) continue;
+		const World w = World::load(file.string());
+		EXPECT_FALSE(w.landmarks.empty()) << file;
+		EXPECT_GE(w.waypoints.size(), 2u) << file;
+		++count;
+	}
+	EXPECT_GE(count, 1);
 }

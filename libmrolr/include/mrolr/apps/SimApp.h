@@ -36,8 +36,9 @@ class SimApp
 
 	// Results
 	int frames_written = 0;
-	double render_s = 0;  ///< total time spent rendering
-	double total_s = 0;   ///< total wall-clock time of run()
+	double render_s = 0;                ///< total time spent rendering
+	double total_s = 0;                 ///< total wall-clock time of run()
+	double odometry_final_error_m = 0;  ///< recording: |odometry − truth| (position, m) at the end
 	std::vector<std::string> files_written;
 
 	/** A path in the working directory if it exists, else in the source tree. */

@@ -108,12 +108,15 @@ void SimApp::printSummary(std::ostream& out) const
 		nlohmann::json j{{"frames", frames_written},
 		                 {"render_s", render_s},
 		                 {"total_s", total_s},
+		                 {"odometry_final_error_m", odometry_final_error_m},
 		                 {"files", files_written}};
 		out << j.dump(2) << "\n";
 		return;
 	}
 	out << "frames: " << frames_written << "\nrendering: " << render_s << " s\ntotal: " << total_s
 	    << " s\n";
+	if (odometry_final_error_m > 0)
+		out << "odometry final position error: " << odometry_final_error_m << " m\n";
 	for (const auto& f : files_written) out << "wrote " << f << "\n";
 }
 

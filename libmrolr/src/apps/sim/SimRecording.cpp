@@ -39,6 +39,24 @@ bool chooseFixation(const world::World& w, const geometry::BiSightHead& head,
 	return best < 1e9;
 }
 
+/** The open-loop route through the waypoints: rotate, translate in steps, rotate (5.6.3, 7.2.1). */
+std::vector<base::PlannedStep> planRoute(const world::World& w, const base::LabmateModel& labmate,
+                                         const mrpt::config::CConfigFileBase& cfg)
+{
+	base::TrajectoryOptions to;
+	to.loadFromConfigFile(cfg, "trajectory");
+	std::vector<base::PlannedStep> steps;
+	for (size_t i = 1; i < w.waypoints.size(); ++i)
+	{
+		const auto& a = w.waypoints[i - 1];
+		const auto& b = w.waypoints[i];
+		for (const auto& s :
+		     base::planLeg({a.z_m, a.x_m, a.phi_rad}, {b.z_m, b.x_m, b.phi_rad}, labmate, to))
+			steps.push_back(s);
+	}
+	return steps;
+}
+
 io::RawlogRecord recordOf(const sim::SimBase& base, const sim::SimHead& head,
                           const geometry::BiSightHead& model, bool has_stereo)
 {
@@ -73,14 +91,13 @@ int SimApp::runRecording(std::ostream& out)
 	const mrpt::config::CConfigFile labmateCfg(projectFile("config/labmate.ini"));
 	base::LabmateOptions lo;
 	lo.loadFromConfigFile(labmateCfg, "labmate");
-	base::TrajectoryOptions to;
-	to.loadFromConfigFile(labmateCfg, "trajectory");
+	const base::LabmateModel labmate(lo);
+	const auto steps = planRoute(w, labmate, labmateCfg);
 	const mrpt::config::CConfigFile simCfg(sim_config_path);
 	sim::SimBaseOptions bo;
 	bo.loadFromConfigFile(simCfg, "sim_base");
 	sim::SimHeadOptions ho;
 	ho.loadFromConfigFile(simCfg, "sim_head");
-	const base::LabmateModel labmate(lo);
 	const auto& wp0 = w.waypoints.front();
 	sim::SimBase base(labmate, bo, {wp0.z_m, wp0.x_m, wp0.phi_rad});
 	const auto lab = sim::buildLabScene(w, w.patches.empty());
@@ -89,15 +106,6 @@ int SimApp::runRecording(std::ostream& out)
 	sim::SimHead head(
 	    renderer, *lab.scene, [&] { return geometry::T_C0inW(base.truePose(), hh); }, ho);
 	io::RawlogWriter writer(out_path);
-	std::vector<base::PlannedStep> steps;
-	for (size_t i = 1; i < w.waypoints.size(); ++i)
-	{
-		const auto& a = w.waypoints[i - 1];
-		const auto& b = w.waypoints[i];
-		for (const auto& s :
-		     base::planLeg({a.z_m, a.x_m, a.phi_rad}, {b.z_m, b.x_m, b.phi_rad}, labmate, to))
-			steps.push_back(s);
-	}
 	const size_t n = max_steps > 0 ? std::min(steps.size(), size_t(max_steps)) : steps.size();
 	auto record = [&](bool grabbed) { writer.write(recordOf(base, head, model, grabbed)); };
 	for (size_t k = 0; k <= n; ++k)
@@ -117,6 +125,7 @@ int SimApp::runRecording(std::ostream& out)
 			out << "\rstep " << k << "/" << n << " (" << frames_written << " pairs)" << std::flush;
 	}
 	if (!json) out << "\n";
+	odometry_final_error_m = (base.odometry().xv_zxphi - base.truePose()).head<2>().norm();
 	files_written = {out_path, writer.imagesDir()};
 	return 0;
 }
