@@ -6,9 +6,12 @@
 
 int main(int argc, char** argv)
 {
-	return mrolr::util::runMain("mrolr-recognize", [&] {
-		mrolr::apps::RecognizeApp app;
-		app.initialize(mrolr::util::argsWithNegativeNumbersProtected(argc, argv));
-		return app.run(std::cout);
-	});
+	return mrolr::util::runMain(
+	    "mrolr-recognize",
+	    [&]
+	    {
+		    mrolr::apps::RecognizeApp app;
+		    app.initialize(mrolr::util::argsWithNegativeNumbersProtected(argc, argv));
+		    return app.run(std::cout);
+	    });
 }

@@ -50,7 +50,7 @@ struct Fixture
 		for (int i = 0; i < m.rows; ++i)
 			for (int j = 0; j < 3; ++j)
 				m.at<float>(i, j) = static_cast<float>(s[i].p[j]),
-							  m.at<float>(i, 3 + j) = static_cast<float>(s[i].tangent[j]);
+				               m.at<float>(i, 3 + j) = static_cast<float>(s[i].tangent[j]);
 		return m;
 	}
 };
@@ -65,7 +65,8 @@ void BM_RecogOneModel(benchmark::State& state)
 {
 	auto& f = fixture();
 	for (auto _ : state) benchmark::DoNotOptimize(f.recognizers[kTarget]->recognize(f.scene.scene));
-	state.counters["segments"] = static_cast<double>(f.scene.scene.lines.size() + f.scene.scene.conics.size());
+	state.counters["segments"] =
+	    static_cast<double>(f.scene.scene.lines.size() + f.scene.scene.conics.size());
 }
 BENCHMARK(BM_RecogOneModel)->Unit(benchmark::kMillisecond);
 
@@ -101,7 +102,7 @@ BENCHMARK(BM_PpfMatchOneModel)->Unit(benchmark::kMillisecond);
 /** Remembers each benchmark's CPU time (ms) for the summary. */
 class SummaryReporter : public benchmark::ConsoleReporter
 {
-   public:
+ public:
 	std::map<std::string, double> ms;
 	void ReportRuns(const std::vector<Run>& runs) override
 	{
@@ -116,16 +117,16 @@ void printAccuracy()
 	const auto r = f.recognizers[kTarget]->recognize(f.scene.scene);
 	std::vector<cv::ppf_match_3d::Pose3DPtr> results;
 	f.ppf->match(f.ppf_scene, results, 1.0 / 10.0, 0.05);
-	std::printf("MROLR cup: found %d, rotation error %.2f deg, translation error %.2f mm\n", r.found,
-				rotationDistanceDeg(r.T_OinS.linear(), f.scene.T_OinS.linear()),
-				(r.T_OinS.translation() - f.scene.T_OinS.translation()).norm());
+	std::printf("MROLR cup: found %d, rotation error %.2f deg, translation error %.2f mm\n",
+	            r.found, rotationDistanceDeg(r.T_OinS.linear(), f.scene.T_OinS.linear()),
+	            (r.T_OinS.translation() - f.scene.T_OinS.translation()).norm());
 	if (results.empty()) return void(std::printf("PPF: no pose\n"));
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	for (int i = 0; i < 3; ++i)
 		for (int j = 0; j < 4; ++j) T.matrix()(i, j) = results[0]->pose(i, j);
 	std::printf("PPF cup (best of %zu poses): rotation error %.2f deg, translation error %.2f mm\n",
-				results.size(), rotationDistanceDeg(T.linear(), f.scene.T_OinS.linear()),
-				(T.translation() - f.scene.T_OinS.translation()).norm());
+	            results.size(), rotationDistanceDeg(T.linear(), f.scene.T_OinS.linear()),
+	            (T.translation() - f.scene.T_OinS.translation()).norm());
 }
 }  // namespace
 
@@ -137,9 +138,11 @@ int main(int argc, char** argv)
 	benchmark::RunSpecifiedBenchmarks(&reporter);
 	auto get = [&](const char* n) { return reporter.ms.count(n) ? reporter.ms[n] : 0.0; };
 	const double one = get("BM_RecogOneModel"), db = get("BM_RecogDatabase10"),
-				 ppf = get("BM_PpfMatchOneModel");
-	std::printf("summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
-				"time ratio MROLR/PPF = %.3f\n", one, db, ppf, ppf > 0 ? one / ppf : 0.0);
+	             ppf = get("BM_PpfMatchOneModel");
+	std::printf(
+	    "summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
+	    "time ratio MROLR/PPF = %.3f\n",
+	    one, db, ppf, ppf > 0 ? one / ppf : 0.0);
 	printAccuracy();
 	benchmark::Shutdown();
 	return 0;

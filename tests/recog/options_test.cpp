@@ -70,16 +70,17 @@ std::string errorFor(const std::string& from, const std::string& to)
 TEST(recog_options, bad_values_name_the_key)
 {
 	EXPECT_NE(errorFor("pose_method = faugeras_hebert", "pose_method = magic").find("pose_method"),
-			  std::string::npos);
+	          std::string::npos);
 	EXPECT_NE(errorFor("clique_size = 5 5", "clique_size = 5 x").find("[recognition] clique_size"),
-			  std::string::npos);
+	          std::string::npos);
 	EXPECT_NE(errorFor("clique_size = 5 5", "clique_size = 5.5 5").find("clique_size"),
-			  std::string::npos);
+	          std::string::npos);
 	EXPECT_NE(errorFor("rotation_deg = 1.5 2", "rotation_deg = 1.5").find("rotation_deg"),
-			  std::string::npos);
+	          std::string::npos);
 	EXPECT_NE(errorFor("length_ratio = 0.7", "length_ratio = 1.7").find("length_ratio"),
-			  std::string::npos);
+	          std::string::npos);
 	EXPECT_NE(errorFor("levels = 12", "levels = 0").find("levels"), std::string::npos);
-	EXPECT_NE(errorFor("verify_rotation_deg = 3", "verify_rotation_degs = 3").find("verify_rotation_deg"),
-			  std::string::npos);
+	EXPECT_NE(
+	    errorFor("verify_rotation_deg = 3", "verify_rotation_degs = 3").find("verify_rotation_deg"),
+	    std::string::npos);
 }

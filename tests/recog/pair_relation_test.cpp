@@ -22,7 +22,7 @@ Eigen::Isometry3d randomPose(std::mt19937& rng)
 	std::uniform_real_distribution<> u(-1, 1);
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.linear() = Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
-					 .toRotationMatrix();
+	                 .toRotationMatrix();
 	T.translation() = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 500;
 	return T;
 }
@@ -36,9 +36,9 @@ TEST(pair_relation, skew_lines_by_hand)
 	const auto r = relateModel(a, b);
 	EXPECT_FALSE(r.parallel);
 	EXPECT_NEAR(r.alpha, M_PI / 2, 1e-12);
-	EXPECT_NEAR(r.h, 10, 1e-12);  // d = x × y = z, m2 - m1 has z = 10
+	EXPECT_NEAR(r.h, 10, 1e-12);        // d = x × y = z, m2 - m1 has z = 10
 	EXPECT_NEAR(r.q1, 30 - 50, 1e-12);  // closest point x = 30, midpoint x = 50
-	EXPECT_NEAR(r.q2, 0 - 10, 1e-12);  // closest point y = 0, midpoint y = 10
+	EXPECT_NEAR(r.q2, 0 - 10, 1e-12);   // closest point y = 0, midpoint y = 10
 	EXPECT_NEAR(r.lo1, -30, 1e-12);
 	EXPECT_NEAR(r.hi1, 70, 1e-12);
 	EXPECT_NEAR(r.lo2, -20, 1e-12);
@@ -60,8 +60,9 @@ TEST(pair_relation, invariant_under_rigid_motion)
 			{
 				if (i == j) continue;
 				const auto m = relateModel(fs[i], fs[j]);
-				EXPECT_TRUE(consistent(m, fs[i], fs[j], fs[i].transformed(T), fs[j].transformed(T), tiny))
-					<< wf.name << " " << i << " " << j;
+				EXPECT_TRUE(
+				    consistent(m, fs[i], fs[j], fs[i].transformed(T), fs[j].transformed(T), tiny))
+				    << wf.name << " " << i << " " << j;
 			}
 	}
 }

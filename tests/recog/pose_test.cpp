@@ -5,8 +5,8 @@
 #include <mrolr/recog/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <random>
@@ -15,8 +15,8 @@ using namespace mrolr::recog;
 
 namespace
 {
-std::vector<Correspondence> exactCorrespondences(
-	const mrolr::model::WireFrame& wf, const Eigen::Isometry3d& T)
+std::vector<Correspondence> exactCorrespondences(const mrolr::model::WireFrame& wf,
+                                                 const Eigen::Isometry3d& T)
 {
 	std::vector<Correspondence> cs;
 	for (const auto& f : featuresOf(wf)) cs.push_back({f, f.transformed(T)});
@@ -62,7 +62,8 @@ TEST(pose, quaternion_rotation_agrees_with_eigen_umeyama)
 	ASSERT_TRUE(q);
 	const Eigen::Matrix3d U = Eigen::umeyama(A, B, false).block<3, 3>(0, 0);
 	EXPECT_LT(rotationDistanceDeg(*q, U), 1e-6);
-	EXPECT_GT(rotationDistanceDeg(*q, R), 0.1);  // the noise moved it: the comparison is not trivial
+	EXPECT_GT(rotationDistanceDeg(*q, R),
+	          0.1);  // the noise moved it: the comparison is not trivial
 }
 
 // Parallel directions alone do not fix a rotation; that is reported, not guessed.
@@ -128,8 +129,9 @@ TEST(pose, arun_needs_three_points)
 	cs.resize(2);  // two parallel edges: no common perpendicular, no conic
 	EXPECT_FALSE(arunPose(cs, 2.0));
 	auto can = exactCorrespondences(makeCan(), poseFor(1));
-	can.erase(std::remove_if(can.begin(), can.end(), [](const auto& c) { return c.model.isLine(); }),
-			  can.end());
+	can.erase(
+	    std::remove_if(can.begin(), can.end(), [](const auto& c) { return c.model.isLine(); }),
+	    can.end());
 	ASSERT_EQ(can.size(), 5u);  // four coaxial circles and the ring-pull arc: nearly collinear
 	EXPECT_TRUE(arunPose(can, 2.0));  // the ring-pull centre is 18 mm off the axis
 	can.pop_back();

@@ -16,7 +16,8 @@ namespace
 {
 std::string demoDir()
 {
-	static const std::string dir = [] {
+	static const std::string dir = []
+	{
 		const auto d = (fs::temp_directory_path() / "mrolr_recognize_app_test").string();
 		fs::remove_all(d);
 		RecognizeApp app;
@@ -28,18 +29,23 @@ std::string demoDir()
 	return dir;
 }
 
-nlohmann::json truth() { return nlohmann::json::parse(std::ifstream(demoDir() + "/scenes/truth.json")); }
+nlohmann::json truth()
+{
+	return nlohmann::json::parse(std::ifstream(demoDir() + "/scenes/truth.json"));
+}
 
 int runApp(const std::vector<std::string>& args, std::string& output)
 {
-	return mrolr::util::runMain("mrolr-recognize", [&] {
-		RecognizeApp app;
-		app.initialize(args);
-		std::ostringstream out;
-		const int rc = app.run(out);
-		output = out.str();
-		return rc;
-	});
+	return mrolr::util::runMain("mrolr-recognize",
+	                            [&]
+	                            {
+		                            RecognizeApp app;
+		                            app.initialize(args);
+		                            std::ostringstream out;
+		                            const int rc = app.run(out);
+		                            output = out.str();
+		                            return rc;
+	                            });
 }
 }  // namespace
 
@@ -53,11 +59,11 @@ TEST(recognize_app, json_pose_matches_truth_and_files_written)
 	const auto png = d + "/overlay.png", s3d = d + "/out.3Dscene";
 	std::string out;
 	ASSERT_EQ(runApp({"mrolr-recognize", "--model", d + "/models/alphabet_cube.wf", "--model",
-					  d + "/models/book.wf", "--scene", d + "/scenes/table_0.wf", "--json", "--calib",
-					  std::string(MROLR_SOURCE_DIR) + "/config/calib_mrpt_bumblebee.ini",
-					  "--overlay", png, "--scene3d", s3d},
-					 out),
-			  0);
+	                  d + "/models/book.wf", "--scene", d + "/scenes/table_0.wf", "--json",
+	                  "--calib", std::string(MROLR_SOURCE_DIR) + "/config/calib_mrpt_bumblebee.ini",
+	                  "--overlay", png, "--scene3d", s3d},
+	                 out),
+	          0);
 	const auto j = nlohmann::json::parse(out);
 	ASSERT_EQ(j["results"].size(), 2u);
 	const auto& cube = j["results"][0];
@@ -81,14 +87,23 @@ TEST(recognize_app, bad_arguments_and_inputs)
 	EXPECT_EQ(runApp({"mrolr-recognize"}, out), 2);
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/models/cup.wf"}, out), 2);  // no scene
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", "m.wf", "--left", "l.png"}, out), 2);
-	EXPECT_EQ(runApp({"mrolr-recognize", "--model", "m.wf", "--scene", "s.wf", "--overlay", "o.png"}, out), 2);
+	EXPECT_EQ(
+	    runApp({"mrolr-recognize", "--model", "m.wf", "--scene", "s.wf", "--overlay", "o.png"},
+	           out),
+	    2);
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", "m.wf", "--scene", "s.wf", "--bogus"}, out), 2);
-	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/missing.wf", "--scene", d + "/scenes/table_0.wf"}, out), 1);
+	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/missing.wf", "--scene",
+	                  d + "/scenes/table_0.wf"},
+	                 out),
+	          1);
 	const auto bad = d + "/bad.wf";
 	std::ofstream(bad) << "# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 zero 1 0 0\n";
-	EXPECT_EQ(runApp({"mrolr-recognize", "--model", bad, "--scene", d + "/scenes/table_0.wf"}, out), 1);
+	EXPECT_EQ(runApp({"mrolr-recognize", "--model", bad, "--scene", d + "/scenes/table_0.wf"}, out),
+	          1);
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/models/cup.wf", "--scene",
-					  d + "/scenes/table_0.wf", "--config", d + "/scenes/truth.json"}, out), 1);
+	                  d + "/scenes/table_0.wf", "--config", d + "/scenes/truth.json"},
+	                 out),
+	          1);
 }
 
 // The stereo path is wired to stereo::reconstructScene: images that do not fit the calibration are
@@ -98,6 +113,8 @@ TEST(recognize_app, stereo_inputs_checked)
 	const auto d = demoDir();
 	std::string out;
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/models/cup.wf", "--left", d + "/none.png",
-					  "--right", d + "/none.png", "--calib",
-					  std::string(MROLR_SOURCE_DIR) + "/config/calib_mrpt_bumblebee.ini"}, out), 1);
+	                  "--right", d + "/none.png", "--calib",
+	                  std::string(MROLR_SOURCE_DIR) + "/config/calib_mrpt_bumblebee.ini"},
+	                 out),
+	          1);
 }

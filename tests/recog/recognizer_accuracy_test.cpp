@@ -44,7 +44,8 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 		const Recognizer rec(objects[k], opts);
 		for (unsigned s = 0; s < 6; ++s)
 		{
-			const auto ts = makeTableScene(objects, static_cast<int>(k), 3, realisticNoise(), 1000 * k + s);
+			const auto ts =
+			    makeTableScene(objects, static_cast<int>(k), 3, realisticNoise(), 1000 * k + s);
 			if (ts.visible_fraction < 0.5) continue;
 			++trials;
 			const auto r = rec.recognize(ts.scene);
@@ -52,8 +53,10 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 			const double et = test::translationErrorMm(r.T_OinS, ts.T_OinS);
 			if (!r.found || er > 10 || et > 30)
 			{
-				std::printf("miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f vis %.2f\n",
-							objects[k].name.c_str(), s, r.found, r.level, r.score, er, et, ts.visible_fraction);
+				std::printf(
+				    "miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f vis %.2f\n",
+				    objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
+				    ts.visible_fraction);
 				continue;
 			}
 			++recognised;
@@ -62,8 +65,8 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 		}
 	}
 	const double rate = static_cast<double>(recognised) / trials;
-	std::printf("trials %d recognised %.3f median rot %.3f deg median trans %.3f mm\n", trials, rate,
-				median(rot), median(trans));
+	std::printf("trials %d recognised %.3f median rot %.3f deg median trans %.3f mm\n", trials,
+	            rate, median(rot), median(trans));
 	EXPECT_GE(rate, 0.95);
 	EXPECT_LT(median(rot), 2.0);
 	EXPECT_LT(median(trans), 5.0);
@@ -85,8 +88,8 @@ TEST(recognizer_accuracy, absent_objects_are_not_found)
 			const auto ts = makeTableScene(others, -1, 4, realisticNoise(), 5000 + 10 * k + s);
 			const auto r = rec.recognize(ts.scene);
 			if (r.found)
-				std::printf("false positive %s seed %u level %d score %.2f\n", objects[k].name.c_str(), s,
-							r.level, r.score);
+				std::printf("false positive %s seed %u level %d score %.2f\n",
+				            objects[k].name.c_str(), s, r.level, r.score);
 			false_positives += r.found;
 		}
 	}

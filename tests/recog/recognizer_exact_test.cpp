@@ -12,7 +12,8 @@ namespace
 {
 Eigen::Isometry3d somePose(int k)
 {
-	return tablePose(37.0 * k + 11, 25 + 3 * (k % 4), Eigen::Vector3d(40 - 10 * k, -80, 700 + 15 * k));
+	return tablePose(37.0 * k + 11, 25 + 3 * (k % 4),
+	                 Eigen::Vector3d(40 - 10 * k, -80, 700 + 15 * k));
 }
 }  // namespace
 
@@ -52,6 +53,6 @@ TEST(recognizer_exact, exact_pose_among_the_other_objects)
 		const auto r = Recognizer(objects[k], opts).recognize(scene);
 		ASSERT_TRUE(r.found) << objects[k].name;
 		EXPECT_LT((r.T_OinS.matrix() - poses[k].matrix()).cwiseAbs().maxCoeff(), 1e-6)
-			<< objects[k].name;
+		    << objects[k].name;
 	}
 }

@@ -78,7 +78,7 @@ TEST(recognizer_misc, each_noise_kind_alone)
 			const auto ts = makeTableScene(objects, static_cast<int>(k), 2, kinds[kind], 77 + k);
 			const auto r = Recognizer(objects[k], opts).recognize(ts.scene);
 			ok += r.found && test::rotationErrorDeg(r.T_OinS, ts.T_OinS) < 3 &&
-				test::translationErrorMm(r.T_OinS, ts.T_OinS) < 6;
+			      test::translationErrorMm(r.T_OinS, ts.T_OinS) < 6;
 		}
 		EXPECT_GE(ok, 9) << "noise kind " << kind;
 	}
@@ -94,7 +94,7 @@ TEST(recognizer_misc, pan_sweep_finds_the_scene_holding_the_object)
 	others.erase(others.begin() + 1);
 	for (unsigned i = 0; i < 5; ++i)
 		sweep.push_back(i == 2 ? makeTableScene(objects, 1, 2, noisy(), 900 + i).scene
-							   : makeTableScene(others, -1, 3, noisy(), 900 + i).scene);
+		                       : makeTableScene(others, -1, 3, noisy(), 900 + i).scene);
 	const Recognizer rec(cup, RecognitionOptions::defaults());
 	const auto r = rec.searchSweep(sweep);
 	ASSERT_TRUE(r.found);
@@ -126,7 +126,7 @@ TEST(recognizer_misc, malformed_wire_frames)
 	std::istringstream bad("# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 1 0\n");
 	EXPECT_THROW(mrolr::model::readWireFrame(bad, "bad.wf"), mrolr::model::WireFrameFormatError);
 	std::istringstream degenerate(
-		"# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 0 0 0\nline 2 0 0 0 1 0 0\n");
+	    "# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 0 0 0\nline 2 0 0 0 1 0 0\n");
 	mrolr::model::WireFrame wf;
 	try
 	{

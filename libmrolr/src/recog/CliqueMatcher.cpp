@@ -18,27 +18,26 @@ Tolerance toleranceOf(const LevelParams& p)
  * clique member, with a node budget. */
 class ConsistentSetSearch
 {
-   public:
-	ConsistentSetSearch(
-		const ModelTable& m, const OrientedScene& s, const Tolerance& t, int max_nodes)
-		: model_(m), scene_(s), tol_(t), budget_(max_nodes)
+ public:
+	ConsistentSetSearch(const ModelTable& m, const OrientedScene& s, const Tolerance& t,
+	                    int max_nodes)
+	    : model_(m), scene_(s), tol_(t), budget_(max_nodes)
 	{
 	}
 
 	std::vector<std::vector<FeatureMatch>> run(
-		const FeatureMatch& focus, const std::vector<std::vector<FeatureMatch>>& candidates)
+	    const FeatureMatch& focus, const std::vector<std::vector<FeatureMatch>>& candidates)
 	{
 		cands_ = candidates;
-		std::sort(cands_.begin(), cands_.end(), [](const auto& a, const auto& b) {
-			return a.size() < b.size();
-		});
+		std::sort(cands_.begin(), cands_.end(),
+		          [](const auto& a, const auto& b) { return a.size() < b.size(); });
 		chosen_ = {focus};
 		best_ = {chosen_};
 		dfs(0);
 		return best_;
 	}
 
-   private:
+ private:
 	bool fits(const FeatureMatch& c) const
 	{
 		for (const auto& x : chosen_)
@@ -46,9 +45,8 @@ class ConsistentSetSearch
 			if (x.scene() == c.scene()) return false;
 			const auto& rel = model_.relation(x.model, c.model);
 			const auto& mf = model_.features();
-			if (!consistent(
-					rel, mf[x.model], mf[c.model], scene_.oriented[x.oriented],
-					scene_.oriented[c.oriented], tol_))
+			if (!consistent(rel, mf[x.model], mf[c.model], scene_.oriented[x.oriented],
+			                scene_.oriented[c.oriented], tol_))
 				return false;
 		}
 		return true;
@@ -58,9 +56,10 @@ class ConsistentSetSearch
 	 * can give the true and a mirrored assignment of the same size. */
 	void record()
 	{
-		if (chosen_.size() > best_.front().size()) best_ = {chosen_};
+		if (chosen_.size() > best_.front().size())
+			best_ = {chosen_};
 		else if (chosen_.size() == best_.front().size() && chosen_.size() > 1 &&
-				 best_.size() < kAlternatives && chosen_ != best_.back())
+		         best_.size() < kAlternatives && chosen_ != best_.back())
 			best_.push_back(chosen_);
 	}
 
@@ -90,8 +89,8 @@ class ConsistentSetSearch
 };
 
 /** Oriented scene features passing member j's unary gate (computed once per clique). */
-std::vector<size_t> gatedFor(
-	const Feature& m, const OrientedScene& scene, const LevelParams& p, bool focus)
+std::vector<size_t> gatedFor(const Feature& m, const OrientedScene& scene, const LevelParams& p,
+                             bool focus)
 {
 	std::vector<size_t> out;
 	for (size_t o = 0; o < scene.oriented.size(); ++o)
@@ -100,16 +99,18 @@ std::vector<size_t> gatedFor(
 }
 
 /** Scene matches of member j (among its gated features) consistent with the focus match. */
-std::vector<FeatureMatch> memberCandidates(
-	const ModelTable& model, size_t j, const std::vector<size_t>& gated, const FeatureMatch& focus,
-	const OrientedScene& scene, const Tolerance& tol)
+std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
+                                           const std::vector<size_t>& gated,
+                                           const FeatureMatch& focus, const OrientedScene& scene,
+                                           const Tolerance& tol)
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
 	std::vector<FeatureMatch> out;
 	for (size_t o : gated)
 		if (o / 2 != focus.scene() &&
-			consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented], scene.oriented[o], tol))
+		    consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented],
+		               scene.oriented[o], tol))
 			out.push_back({j, o});
 	return out;
 }
@@ -146,9 +147,9 @@ bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, b
 	return std::abs(s.a_mm - m.a_mm) <= rtol && std::abs(s.b_mm - m.b_mm) <= rtol;
 }
 
-std::vector<CliqueMatch> matchClique(
-	const ModelTable& model, size_t clique_index, const OrientedScene& scene,
-	const LevelParams& p, int max_nodes)
+std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
+                                     const OrientedScene& scene, const LevelParams& p,
+                                     int max_nodes)
 {
 	const auto& clique = model.cliques().at(clique_index);
 	const Tolerance tol = toleranceOf(p);
@@ -161,16 +162,20 @@ std::vector<CliqueMatch> matchClique(
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
 		for (size_t k = 0; k < clique.members.size(); ++k)
-			cands.push_back(memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
+			cands.push_back(
+			    memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
 		for (auto& ms : search.run(focus, cands))
 			if (static_cast<int>(ms.size()) >= p.clique_size)
 				out.push_back({clique_index, ms, strengthOf(model, ms)});
 	}
-	std::sort(out.begin(), out.end(), [](const CliqueMatch& a, const CliqueMatch& b) {
-		if (a.matches.size() != b.matches.size()) return a.matches.size() > b.matches.size();
-		return a.strength_mm > b.strength_mm;
-	});
+	std::sort(out.begin(), out.end(),
+	          [](const CliqueMatch& a, const CliqueMatch& b)
+	          {
+		          if (a.matches.size() != b.matches.size())
+			          return a.matches.size() > b.matches.size();
+		          return a.strength_mm > b.strength_mm;
+	          });
 	return out;
 }
 

@@ -9,12 +9,15 @@ namespace mrolr::recog
 {
 namespace
 {
-bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
+bool finite(const Eigen::Vector3d& v)
+{
+	return v.allFinite();
+}
 
 [[noreturn]] void reject(const model::WireFrame& wf, const char* what, int id, const char* why)
 {
-	throw std::invalid_argument(
-		"wire-frame '" + wf.name + "': " + what + " " + std::to_string(id) + " " + why);
+	throw std::invalid_argument("wire-frame '" + wf.name + "': " + what + " " + std::to_string(id) +
+	                            " " + why);
 }
 
 Feature lineFeature(const model::WireFrame& wf, const model::Line3& l)
@@ -35,7 +38,7 @@ Feature lineFeature(const model::WireFrame& wf, const model::Line3& l)
 Feature conicFeature(const model::WireFrame& wf, const model::Conic3& c)
 {
 	if (!finite(c.centre) || !finite(c.normal) || !finite(c.major) || !std::isfinite(c.a) ||
-		!std::isfinite(c.b) || !std::isfinite(c.t1) || !std::isfinite(c.t2))
+	    !std::isfinite(c.b) || !std::isfinite(c.t1) || !std::isfinite(c.t2))
 		reject(wf, "conic", c.id, "has non-finite values");
 	if (c.a <= 0 || c.b <= 0) reject(wf, "conic", c.id, "has a non-positive semi-axis");
 	if (c.normal.norm() < 1e-9) reject(wf, "conic", c.id, "has a zero normal");

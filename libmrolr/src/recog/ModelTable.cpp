@@ -18,7 +18,10 @@ std::vector<Eigen::Vector3d> samples(const Feature& f)
 	return s;
 }
 
-double distinctiveness(const Feature& f) { return f.isLine() ? f.len_mm : 1.5 * f.len_mm; }
+double distinctiveness(const Feature& f)
+{
+	return f.isLine() ? f.len_mm : 1.5 * f.len_mm;
+}
 
 IndexClique cliqueAround(const std::vector<Feature>& fs, size_t focus, int size)
 {
@@ -36,17 +39,18 @@ IndexClique cliqueAround(const std::vector<Feature>& fs, size_t focus, int size)
 	return c;
 }
 
-std::vector<IndexClique> cliquesFromModel(
-	const model::WireFrame& wf, const std::vector<Feature>& fs)
+std::vector<IndexClique> cliquesFromModel(const model::WireFrame& wf,
+                                          const std::vector<Feature>& fs)
 {
 	std::map<int, size_t> index;
 	for (size_t i = 0; i < fs.size(); ++i) index[fs[i].id] = i;
-	auto at = [&](int id) {
+	auto at = [&](int id)
+	{
 		const auto it = index.find(id);
 		if (it == index.end())
-			throw std::invalid_argument(
-				"wire-frame '" + wf.name + "': clique refers to unknown feature id " +
-				std::to_string(id));
+			throw std::invalid_argument("wire-frame '" + wf.name +
+			                            "': clique refers to unknown feature id " +
+			                            std::to_string(id));
 		return it->second;
 	};
 	std::vector<IndexClique> out;
@@ -73,21 +77,23 @@ std::vector<IndexClique> chooseCliques(const std::vector<Feature>& features, int
 {
 	std::vector<size_t> order(features.size());
 	std::iota(order.begin(), order.end(), 0);
-	std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) {
-		return distinctiveness(features[i]) > distinctiveness(features[j]);
-	});
+	std::stable_sort(order.begin(), order.end(),
+	                 [&](size_t i, size_t j)
+	                 { return distinctiveness(features[i]) > distinctiveness(features[j]); });
 	std::vector<IndexClique> out;
 	for (size_t k = 0; k < order.size() && static_cast<int>(k) < count; ++k)
 		out.push_back(cliqueAround(features, order[k], size));
 	return out;
 }
 
-std::vector<IndexClique> ModelTable::automaticCliques(
-	const model::WireFrame& wf, const std::string& method, int count, int size) const
+std::vector<IndexClique> ModelTable::automaticCliques(const model::WireFrame& wf,
+                                                      const std::string& method, int count,
+                                                      int size) const
 {
 	if (method == "recog") return chooseCliques(features_, count, size);
 	if (method != "model")
-		throw std::invalid_argument("unknown automatic clique method '" + method + "' (recog | model)");
+		throw std::invalid_argument("unknown automatic clique method '" + method +
+		                            "' (recog | model)");
 	model::WireFrame withCliques = wf;
 	model::CliqueOptions co;
 	co.clique_size = size;
@@ -96,16 +102,16 @@ std::vector<IndexClique> ModelTable::automaticCliques(
 	return cliquesFromModel(withCliques, features_);
 }
 
-ModelTable::ModelTable(
-	const model::WireFrame& wf, int auto_count, int auto_size, const std::string& auto_method)
-	: name_(wf.name), features_(featuresOf(wf)), n_(features_.size())
+ModelTable::ModelTable(const model::WireFrame& wf, int auto_count, int auto_size,
+                       const std::string& auto_method)
+    : name_(wf.name), features_(featuresOf(wf)), n_(features_.size())
 {
 	if (features_.size() < 2)
-		throw std::invalid_argument(
-			"wire-frame '" + wf.name + "' has fewer than two lines and conics to match");
+		throw std::invalid_argument("wire-frame '" + wf.name +
+		                            "' has fewer than two lines and conics to match");
 	automatic_ = wf.cliques.empty();
 	cliques_ = automatic_ ? automaticCliques(wf, auto_method, auto_count, auto_size)
-						  : cliquesFromModel(wf, features_);
+	                      : cliquesFromModel(wf, features_);
 	table_.resize(n_ * n_);
 	for (size_t i = 0; i < n_; ++i)
 		for (size_t j = 0; j < n_; ++j)

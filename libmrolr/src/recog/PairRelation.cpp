@@ -55,7 +55,10 @@ void conicConic(const Feature& a, const Feature& b, PairRelation& r)
 	r.ax2 = -w.dot(b.u);
 }
 
-bool within(double scene, double model, double tol) { return std::abs(scene - model) <= tol; }
+bool within(double scene, double model, double tol)
+{
+	return std::abs(scene - model) <= tol;
+}
 
 /** A scene segment [lo, hi] must lie inside the model's [lo, hi] widened by tol. */
 bool inside(double slo, double shi, double mlo, double mhi, double tol)
@@ -78,7 +81,7 @@ bool consistentLineConic(const PairRelation& m, const PairRelation& s, const Tol
 {
 	const double tol = 2 * t.beta_mm + (m.h + std::abs(m.ax1)) * t.tan_theta;
 	return within(s.h, m.h, tol) && within(s.ax1, m.ax1, tol) &&
-		inside(s.lo1, s.hi1, m.lo1, m.hi1, tol);
+	       inside(s.lo1, s.hi1, m.lo1, m.hi1, tol);
 }
 
 bool consistentConicConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
@@ -91,9 +94,10 @@ bool consistentConicConic(const PairRelation& m, const PairRelation& s, const To
 bool angleWithin(double cos_s, const PairRelation& m, const Tolerance& t)
 {
 	const double two = 2 * t.theta_rad;
-	const double hi = m.alpha - two <= 0 ? 1.0 : m.cos_alpha * t.cos_2theta + m.sin_alpha * t.sin_2theta;
+	const double hi =
+	    m.alpha - two <= 0 ? 1.0 : m.cos_alpha * t.cos_2theta + m.sin_alpha * t.sin_2theta;
 	const double lo =
-		m.alpha + two >= M_PI ? -1.0 : m.cos_alpha * t.cos_2theta - m.sin_alpha * t.sin_2theta;
+	    m.alpha + two >= M_PI ? -1.0 : m.cos_alpha * t.cos_2theta - m.sin_alpha * t.sin_2theta;
 	return cos_s >= lo - 1e-12 && cos_s <= hi + 1e-12;
 }
 }  // namespace
@@ -119,14 +123,13 @@ PairRelation relate(const Feature& a, const Feature& b, bool parallel)
 PairRelation relateModel(const Feature& a, const Feature& b)
 {
 	const double alpha = angleBetween(a.u, b.u);
-	const bool parallel = a.isLine() && b.isLine() &&
-		(alpha < kParallelAngle || alpha > M_PI - kParallelAngle);
+	const bool parallel =
+	    a.isLine() && b.isLine() && (alpha < kParallelAngle || alpha > M_PI - kParallelAngle);
 	return relate(a, b, parallel);
 }
 
-bool consistent(
-	const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
-	const Feature& sb, const Tolerance& tol)
+bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
+                const Feature& sb, const Tolerance& tol)
 {
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
 	if (!angleWithin(sa.u.dot(sb.u), m, tol)) return false;

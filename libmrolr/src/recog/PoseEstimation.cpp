@@ -18,12 +18,12 @@ constexpr double kParallelOffsetAngle = 5.0 * M_PI / 180.0;
 Eigen::Matrix4d hornMatrix(const Eigen::Matrix3d& S)
 {
 	Eigen::Matrix4d N;
-	const double xx = S(0, 0), xy = S(0, 1), xz = S(0, 2), yx = S(1, 0), yy = S(1, 1),
-				 yz = S(1, 2), zx = S(2, 0), zy = S(2, 1), zz = S(2, 2);
-	N << xx + yy + zz, yz - zy, zx - xz, xy - yx,	//
-		yz - zy, xx - yy - zz, xy + yx, zx + xz,	//
-		zx - xz, xy + yx, -xx + yy - zz, yz + zy,	//
-		xy - yx, zx + xz, yz + zy, -xx - yy + zz;
+	const double xx = S(0, 0), xy = S(0, 1), xz = S(0, 2), yx = S(1, 0), yy = S(1, 1), yz = S(1, 2),
+	             zx = S(2, 0), zy = S(2, 1), zz = S(2, 2);
+	N << xx + yy + zz, yz - zy, zx - xz, xy - yx,  //
+	    yz - zy, xx - yy - zz, xy + yx, zx + xz,   //
+	    zx - xz, xy + yx, -xx + yy - zz, yz + zy,  //
+	    xy - yx, zx + xz, yz + zy, -xx - yy + zz;
 	return N;
 }
 
@@ -46,9 +46,8 @@ Eigen::Vector3d offsetBetween(const Feature& a, const Feature& b)
 	return a.isLine() ? Eigen::Vector3d(c.m - foot) : Eigen::Vector3d(foot - c.m);
 }
 
-void addDirections(
-	const std::vector<Correspondence>& cs, std::vector<Eigen::Vector3d>& a,
-	std::vector<Eigen::Vector3d>& b, std::vector<double>& w)
+void addDirections(const std::vector<Correspondence>& cs, std::vector<Eigen::Vector3d>& a,
+                   std::vector<Eigen::Vector3d>& b, std::vector<double>& w)
 {
 	for (const auto& c : cs)
 	{
@@ -68,16 +67,17 @@ void addDirections(
 		}
 }
 
-std::optional<Eigen::Vector3d> translationFor(
-	const std::vector<Correspondence>& cs, const Eigen::Matrix3d& R)
+std::optional<Eigen::Vector3d> translationFor(const std::vector<Correspondence>& cs,
+                                              const Eigen::Matrix3d& R)
 {
 	Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
 	Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
 	for (const auto& c : cs)
 	{
-		const Eigen::Matrix3d P = c.model.isLine()
-			? Eigen::Matrix3d(Eigen::Matrix3d::Identity() - c.scene.u * c.scene.u.transpose())
-			: Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+		const Eigen::Matrix3d P =
+		    c.model.isLine()
+		        ? Eigen::Matrix3d(Eigen::Matrix3d::Identity() - c.scene.u * c.scene.u.transpose())
+		        : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
 		A += P;
 		rhs += P * (c.scene.m - R * c.model.m);
 	}
@@ -131,9 +131,9 @@ Eigen::Isometry3d fromOpengv(const opengv::transformation_t& T)
 }
 }  // namespace
 
-std::optional<Eigen::Matrix3d> rotationFromDirections(
-	const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
-	const std::vector<double>& w)
+std::optional<Eigen::Matrix3d> rotationFromDirections(const std::vector<Eigen::Vector3d>& a,
+                                                      const std::vector<Eigen::Vector3d>& b,
+                                                      const std::vector<double>& w)
 {
 	Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
 	for (size_t i = 0; i < a.size(); ++i) S += w[i] * a[i] * b[i].transpose();
@@ -161,7 +161,7 @@ std::optional<Eigen::Isometry3d> faugerasHebertPose(const std::vector<Correspond
 }
 
 std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> correspondingPoints(
-	const std::vector<Correspondence>& cs)
+    const std::vector<Correspondence>& cs)
 {
 	std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pts;
 	for (size_t i = 0; i < cs.size(); ++i)
@@ -174,8 +174,8 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> correspondingPoints(
 	return pts;
 }
 
-std::optional<Eigen::Isometry3d> arunPose(
-	const std::vector<Correspondence>& cs, double ransac_threshold_mm)
+std::optional<Eigen::Isometry3d> arunPose(const std::vector<Correspondence>& cs,
+                                          double ransac_threshold_mm)
 {
 	const auto pts = correspondingPoints(cs);
 	if (pts.size() < 3) return std::nullopt;

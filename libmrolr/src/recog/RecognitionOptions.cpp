@@ -19,24 +19,23 @@ struct LevelKey
 const std::vector<LevelKey>& levelKeys()
 {
 	static const std::vector<LevelKey> keys = {
-		{"position_error_mm", [](LevelParams& p) -> double& { return p.position_error_mm; }, 0.01,
-		 1000},
-		{"rotation_deg", [](LevelParams& p) -> double& { return p.rotation_deg; }, 0.01, 45},
-		{"length_threshold_mm", [](LevelParams& p) -> double& { return p.length_threshold_mm; },
-		 0, 1e4},
-		{"max_rotation_deg", [](LevelParams& p) -> double& { return p.max_rotation_deg; }, 0.01,
-		 180},
-		{"max_translation_mm", [](LevelParams& p) -> double& { return p.max_translation_mm; },
-		 0.01, 1e4},
-		{"length_ratio", [](LevelParams& p) -> double& { return p.length_ratio; }, 0, 1},
-		{"verify_min_score", [](LevelParams& p) -> double& { return p.verify_min_score; }, 0, 1},
+	    {"position_error_mm", [](LevelParams& p) -> double& { return p.position_error_mm; }, 0.01,
+	     1000},
+	    {"rotation_deg", [](LevelParams& p) -> double& { return p.rotation_deg; }, 0.01, 45},
+	    {"length_threshold_mm", [](LevelParams& p) -> double& { return p.length_threshold_mm; }, 0,
+	     1e4},
+	    {"max_rotation_deg", [](LevelParams& p) -> double& { return p.max_rotation_deg; }, 0.01,
+	     180},
+	    {"max_translation_mm", [](LevelParams& p) -> double& { return p.max_translation_mm; }, 0.01,
+	     1e4},
+	    {"length_ratio", [](LevelParams& p) -> double& { return p.length_ratio; }, 0, 1},
+	    {"verify_min_score", [](LevelParams& p) -> double& { return p.verify_min_score; }, 0, 1},
 	};
 	return keys;
 }
 
-void readLevelKey(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const LevelKey& key,
-	std::vector<LevelParams>& levels)
+void readLevelKey(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                  const LevelKey& key, std::vector<LevelParams>& levels)
 {
 	const auto values = util::readDoubles(cfg, section, key.name, levels.size());
 	for (size_t i = 0; i < levels.size(); ++i)
@@ -46,23 +45,21 @@ void readLevelKey(
 	}
 }
 
-void readCliqueSizes(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-	std::vector<LevelParams>& levels)
+void readCliqueSizes(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                     std::vector<LevelParams>& levels)
 {
 	const auto values = util::readDoubles(cfg, section, "clique_size", levels.size());
 	for (size_t i = 0; i < levels.size(); ++i)
 	{
 		util::requireInRange(cfg, section, "clique_size", values[i], 2, 50);
 		if (values[i] != static_cast<int>(values[i]))
-			throw util::ConfigError(
-				util::describeKey(cfg, section, "clique_size") + ": values must be integers");
+			throw util::ConfigError(util::describeKey(cfg, section, "clique_size") +
+			                        ": values must be integers");
 		levels[i].clique_size = static_cast<int>(values[i]);
 	}
 }
 
-void dumpLevelKey(
-	std::ostream& out, const LevelKey& key, const std::vector<LevelParams>& levels)
+void dumpLevelKey(std::ostream& out, const LevelKey& key, const std::vector<LevelParams>& levels)
 {
 	out << key.name << " =";
 	for (auto p : levels) out << " " << key.field(p);
@@ -74,20 +71,20 @@ RecognitionOptions RecognitionOptions::defaults()
 {
 	// clique, beta mm, theta deg, min len mm, max rot deg, max trans mm, len ratio, verify score
 	static const double table[12][8] = {
-		{5, 2, 1.5, 15, 3, 6, 0.7, 0.33},  {5, 3, 2, 15, 3, 6, 0.6, 0.33},
-		{4, 3, 2, 12, 4, 8, 0.6, 0.34},	   {4, 4, 3, 12, 4, 8, 0.5, 0.35},
-		{4, 5, 3, 10, 5, 10, 0.5, 0.35},   {4, 6, 4, 10, 5, 10, 0.4, 0.36},
-		{3, 6, 4, 10, 6, 12, 0.4, 0.36},   {3, 8, 5, 8, 6, 12, 0.35, 0.37},
-		{3, 8, 6, 8, 8, 15, 0.3, 0.38},	   {3, 10, 7, 8, 8, 15, 0.3, 0.39},
-		{3, 12, 8, 6, 10, 20, 0.25, 0.40}, {3, 15, 10, 6, 10, 20, 0.2, 0.42}};
+	    {5, 2, 1.5, 15, 3, 6, 0.7, 0.33},  {5, 3, 2, 15, 3, 6, 0.6, 0.33},
+	    {4, 3, 2, 12, 4, 8, 0.6, 0.34},    {4, 4, 3, 12, 4, 8, 0.5, 0.35},
+	    {4, 5, 3, 10, 5, 10, 0.5, 0.35},   {4, 6, 4, 10, 5, 10, 0.4, 0.36},
+	    {3, 6, 4, 10, 6, 12, 0.4, 0.36},   {3, 8, 5, 8, 6, 12, 0.35, 0.37},
+	    {3, 8, 6, 8, 8, 15, 0.3, 0.38},    {3, 10, 7, 8, 8, 15, 0.3, 0.39},
+	    {3, 12, 8, 6, 10, 20, 0.25, 0.40}, {3, 15, 10, 6, 10, 20, 0.2, 0.42}};
 	RecognitionOptions o;
 	for (const auto& r : table)
 		o.levels.push_back({static_cast<int>(r[0]), r[1], r[2], r[3], r[4], r[5], r[6], r[7]});
 	return o;
 }
 
-void RecognitionOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                            const std::string& section)
 {
 	const long n = util::readInt(cfg, section, "levels");
 	util::requireInRange(cfg, section, "levels", static_cast<double>(n), 1, 100);
@@ -97,15 +94,14 @@ void RecognitionOptions::loadFromConfigFile(
 	levels = std::move(lv);
 	pose_method = util::readString(cfg, section, "pose_method");
 	if (pose_method != "faugeras_hebert" && pose_method != "arun" && pose_method != "both")
-		throw util::ConfigError(
-			util::describeKey(cfg, section, "pose_method") + ": '" + pose_method +
-			"' is not one of faugeras_hebert, arun, both");
+		throw util::ConfigError(util::describeKey(cfg, section, "pose_method") + ": '" +
+		                        pose_method + "' is not one of faugeras_hebert, arun, both");
 	auto_cliques = util::readString(cfg, section, "auto_cliques");
 	if (auto_cliques != "recog" && auto_cliques != "model")
-		throw util::ConfigError(
-			util::describeKey(cfg, section, "auto_cliques") + ": '" + auto_cliques +
-			"' is not one of recog, model");
-	auto readCount = [&](const char* key, long lo, long hi) {
+		throw util::ConfigError(util::describeKey(cfg, section, "auto_cliques") + ": '" +
+		                        auto_cliques + "' is not one of recog, model");
+	auto readCount = [&](const char* key, long lo, long hi)
+	{
 		const long v = util::readInt(cfg, section, key);
 		util::requireInRange(cfg, section, key, static_cast<double>(v), lo, hi);
 		return static_cast<int>(v);
@@ -117,8 +113,8 @@ void RecognitionOptions::loadFromConfigFile(
 	verify_clusters = readCount("verify_clusters", 1, 10000);
 	confirm_levels = readCount("confirm_levels", 0, 100);
 	verify_position_error_mm = util::readDouble(cfg, section, "verify_position_error_mm");
-	util::requireInRange(
-		cfg, section, "verify_position_error_mm", verify_position_error_mm, 0.01, 1000);
+	util::requireInRange(cfg, section, "verify_position_error_mm", verify_position_error_mm, 0.01,
+	                     1000);
 	verify_rotation_deg = util::readDouble(cfg, section, "verify_rotation_deg");
 	util::requireInRange(cfg, section, "verify_rotation_deg", verify_rotation_deg, 0.01, 90);
 }
@@ -130,13 +126,13 @@ void RecognitionOptions::dump(std::ostream& out) const
 	out << "\n";
 	for (const auto& key : levelKeys()) dumpLevelKey(out, key, levels);
 	out << "pose_method = " << pose_method << "\nauto_cliques = " << auto_cliques
-		<< "\nauto_clique_count = " << auto_clique_count
-		<< "\nauto_clique_size = " << auto_clique_size
-		<< "\nmax_search_nodes = " << max_search_nodes
-		<< "\nrefine_iterations = " << refine_iterations
-		<< "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
-		<< "\nverify_position_error_mm = " << verify_position_error_mm
-		<< "\nverify_rotation_deg = " << verify_rotation_deg << "\n";
+	    << "\nauto_clique_count = " << auto_clique_count
+	    << "\nauto_clique_size = " << auto_clique_size
+	    << "\nmax_search_nodes = " << max_search_nodes
+	    << "\nrefine_iterations = " << refine_iterations
+	    << "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
+	    << "\nverify_position_error_mm = " << verify_position_error_mm
+	    << "\nverify_rotation_deg = " << verify_rotation_deg << "\n";
 }
 
 }  // namespace mrolr::recog

@@ -14,8 +14,8 @@ namespace
 {
 constexpr size_t kMatchesPerClique = 20;  // strongest clique matches kept as hypotheses
 
-std::vector<Correspondence> correspondencesOf(
-	const ModelTable& model, const OrientedScene& scene, const CliqueMatch& cm)
+std::vector<Correspondence> correspondencesOf(const ModelTable& model, const OrientedScene& scene,
+                                              const CliqueMatch& cm)
 {
 	std::vector<Correspondence> cs;
 	for (const auto& m : cm.matches)
@@ -23,9 +23,8 @@ std::vector<Correspondence> correspondencesOf(
 	return cs;
 }
 
-void addPoses(
-	const std::vector<Correspondence>& cs, const RecognitionOptions& o, const LevelParams& p,
-	double weight, std::vector<PoseHypothesis>& out)
+void addPoses(const std::vector<Correspondence>& cs, const RecognitionOptions& o,
+              const LevelParams& p, double weight, std::vector<PoseHypothesis>& out)
 {
 	if (o.pose_method != "arun")
 		if (auto T = faugerasHebertPose(cs)) out.push_back({*T, weight});
@@ -33,26 +32,26 @@ void addPoses(
 		if (auto T = arunPose(cs, 2 * p.position_error_mm)) out.push_back({*T, weight});
 }
 
-std::vector<PoseHypothesis> hypothesesAt(
-	const ModelTable& model, const OrientedScene& scene, const RecognitionOptions& o,
-	const LevelParams& p)
+std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const OrientedScene& scene,
+                                         const RecognitionOptions& o, const LevelParams& p)
 {
 	std::vector<PoseHypothesis> hyps;
 	for (size_t c = 0; c < model.cliques().size(); ++c)
 	{
 		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes);
 		for (size_t k = 0; k < matches.size() && k < kMatchesPerClique; ++k)
-			addPoses(
-				correspondencesOf(model, scene, matches[k]), o, p,
-				static_cast<double>(matches[k].matches.size()), hyps);
+			addPoses(correspondencesOf(model, scene, matches[k]), o, p,
+			         static_cast<double>(matches[k].matches.size()), hyps);
 	}
 	return hyps;
 }
 
 /** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
-std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
-	const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
-	const LevelParams& p, const RecognitionOptions& o)
+std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(const ModelTable& model,
+                                                                 const std::vector<Feature>& scene,
+                                                                 Eigen::Isometry3d T,
+                                                                 const LevelParams& p,
+                                                                 const RecognitionOptions& o)
 {
 	const double beta = std::min(2 * p.position_error_mm, o.verify_position_error_mm);
 	const double theta = std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
@@ -70,7 +69,10 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
 	return {T, std::move(v)};
 }
 
-double rankOf(const RecognitionResult& r) { return r.score + 0.05 * r.coverage; }
+double rankOf(const RecognitionResult& r)
+{
+	return r.score + 0.05 * r.coverage;
+}
 
 double confidenceOf(double score, size_t level, size_t levels)
 {
@@ -80,7 +82,7 @@ double confidenceOf(double score, size_t level, size_t levels)
 }  // namespace
 
 Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
-	: table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques), opts_(opts)
+    : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques), opts_(opts)
 {
 	if (opts_.levels.empty()) throw std::invalid_argument("recognition options have no levels");
 	centroid_O_.setZero();
@@ -88,8 +90,8 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	centroid_O_ /= static_cast<double>(table_.features().size());
 }
 
-RecognitionResult Recognizer::recognizeAtLevel(
-	const std::vector<Feature>& scene, size_t level) const
+RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene,
+                                               size_t level) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
@@ -97,12 +99,11 @@ RecognitionResult Recognizer::recognizeAtLevel(
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	const auto hyps = hypothesesAt(table_, os, opts_, p);
 	const auto clusters =
-		clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
+	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	VerificationResult bestV;
 	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
 	{
-		const auto [T, v] =
-			verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_);
+		const auto [T, v] = verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_);
 		if (rankOf(v) <= rankOf(bestV)) continue;
 		bestV = v;
 		best.T_OinS = T;
@@ -133,8 +134,8 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
-	best.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-				  .count();
+	best.ms =
+	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	return best;
 }
 
@@ -154,8 +155,8 @@ RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& s
 		if (r.found || r.score > best.score) best = r;
 		if (r.found) best.scene_index = static_cast<int>(i);
 	}
-	best.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-				  .count();
+	best.ms =
+	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	return best;
 }
 

@@ -14,12 +14,12 @@ using Stroke = std::array<double, 4>;  // u0 v0 u1 v1 in the unit letter box
 const std::vector<std::vector<Stroke>>& letterStrokes()
 {
 	static const std::vector<std::vector<Stroke>> letters = {
-		{{0, 0, 0.5, 1}, {0.5, 1, 1, 0}, {0.25, 0.5, 0.75, 0.5}},  // A
-		{{0, 0, 0, 1}, {0, 1, 1, 1}, {0, 0.5, 0.7, 0.5}, {0, 0, 1, 0}},  // E
-		{{0, 0, 0, 1}, {0, 1, 1, 1}, {0, 0.5, 0.7, 0.5}},  // F
-		{{0, 0, 0, 1}, {1, 0, 1, 1}, {0, 0.5, 1, 0.5}},  // H
-		{{0, 0, 0, 1}, {0, 0.4, 1, 1}, {0.3, 0.6, 1, 0}},  // K
-		{{0, 1, 1, 1}, {0.5, 1, 0.5, 0}},  // T
+	    {{0, 0, 0.5, 1}, {0.5, 1, 1, 0}, {0.25, 0.5, 0.75, 0.5}},        // A
+	    {{0, 0, 0, 1}, {0, 1, 1, 1}, {0, 0.5, 0.7, 0.5}, {0, 0, 1, 0}},  // E
+	    {{0, 0, 0, 1}, {0, 1, 1, 1}, {0, 0.5, 0.7, 0.5}},                // F
+	    {{0, 0, 0, 1}, {1, 0, 1, 1}, {0, 0.5, 1, 0.5}},                  // H
+	    {{0, 0, 0, 1}, {0, 0.4, 1, 1}, {0.3, 0.6, 1, 0}},                // K
+	    {{0, 1, 1, 1}, {0.5, 1, 0.5, 0}},                                // T
 	};
 	return letters;
 }
@@ -31,9 +31,15 @@ void letter(WireFrameBuilder& b, const std::vector<Stroke>& strokes, V c, V U, V
 	for (const auto& s : strokes) b.line(at(s[0], s[1]), at(s[2], s[3]));
 }
 
-double cupRadius(double z) { return 32 + 8 * z / 95; }
+double cupRadius(double z)
+{
+	return 32 + 8 * z / 95;
+}
 
-V onCup(double phi, double z) { return {cupRadius(z) * std::cos(phi), cupRadius(z) * std::sin(phi), z}; }
+V onCup(double phi, double z)
+{
+	return {cupRadius(z) * std::cos(phi), cupRadius(z) * std::sin(phi), z};
+}
 }  // namespace
 
 model::WireFrame makeAlphabetCube()
@@ -145,7 +151,8 @@ model::WireFrame makeTapeRoll()
 model::WireFrame makeBracket()
 {
 	WireFrameBuilder b("bracket");
-	const std::vector<std::pair<double, double>> xz = {{0, 0}, {100, 0}, {100, 8}, {8, 8}, {8, 80}, {0, 80}};
+	const std::vector<std::pair<double, double>> xz = {{0, 0}, {100, 0}, {100, 8},
+	                                                   {8, 8}, {8, 80},  {0, 80}};
 	std::vector<V> front, back;
 	for (const auto& [x, z] : xz)
 	{
@@ -161,8 +168,8 @@ model::WireFrame makeBracket()
 
 std::vector<model::WireFrame> makeLabObjects()
 {
-	return {makeAlphabetCube(), makeCup(),	makeBottle(), makeCan(),	makeStaplerBox(),
-			makeBook(),			makeTeaBox(), makeWedge(),	makeTapeRoll(), makeBracket()};
+	return {makeAlphabetCube(), makeCup(),    makeBottle(), makeCan(),      makeStaplerBox(),
+	        makeBook(),         makeTeaBox(), makeWedge(),  makeTapeRoll(), makeBracket()};
 }
 
 }  // namespace mrolr::recog

@@ -14,7 +14,10 @@ Eigen::Vector3d gaussian3(std::mt19937& rng, double sigma)
 	return {n(rng), n(rng), n(rng)};
 }
 
-bool chance(std::mt19937& rng, double p) { return std::uniform_real_distribution<>(0, 1)(rng) < p; }
+bool chance(std::mt19937& rng, double p)
+{
+	return std::uniform_real_distribution<>(0, 1)(rng) < p;
+}
 
 /** Hidden when on the far half of the object as seen along +z (the camera's optic axis). */
 bool hidden(const Eigen::Vector3d& p, const Eigen::Vector3d& centroid, double extent)
@@ -22,8 +25,7 @@ bool hidden(const Eigen::Vector3d& p, const Eigen::Vector3d& centroid, double ex
 	return p.z() - centroid.z() > 0.15 * extent;
 }
 
-void addLine(
-	model::WireFrame& out, const model::Line3& l, const SceneNoise& n, std::mt19937& rng)
+void addLine(model::WireFrame& out, const model::Line3& l, const SceneNoise& n, std::mt19937& rng)
 {
 	std::vector<std::pair<double, double>> parts = {{0.0, 1.0}};
 	if (chance(rng, n.fragment_probability))
@@ -42,14 +44,14 @@ void addLine(
 	}
 }
 
-void addConic(
-	model::WireFrame& out, model::Conic3 c, const SceneNoise& n, std::mt19937& rng)
+void addConic(model::WireFrame& out, model::Conic3 c, const SceneNoise& n, std::mt19937& rng)
 {
 	c.id = static_cast<int>(out.lines.size() + out.conics.size()) + 1;
 	c.centre += gaussian3(rng, n.endpoint_sigma_mm);
 	c.normal = (c.normal + gaussian3(rng, n.endpoint_sigma_mm / std::max(c.a, 1.0))).normalized();
 	c.major = (c.major - c.major.dot(c.normal) * c.normal).normalized();  // keep it in the plane
-	const double dr = std::normal_distribution<>(0, n.endpoint_sigma_mm > 0 ? n.endpoint_sigma_mm : 1e-300)(rng);
+	const double dr =
+	    std::normal_distribution<>(0, n.endpoint_sigma_mm > 0 ? n.endpoint_sigma_mm : 1e-300)(rng);
 	c.a += dr;
 	c.b += dr;
 	if (chance(rng, n.flip_probability))
@@ -61,9 +63,8 @@ void addConic(
 }
 }  // namespace
 
-model::WireFrame corruptScene(
-	const model::WireFrame& wf, const SceneNoise& noise, std::mt19937& rng,
-	double* visible_fraction)
+model::WireFrame corruptScene(const model::WireFrame& wf, const SceneNoise& noise,
+                              std::mt19937& rng, double* visible_fraction)
 {
 	const auto fs = featuresOf(wf);
 	Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -73,10 +74,11 @@ model::WireFrame corruptScene(
 	model::WireFrame out;
 	out.name = wf.name;
 	out.frame = wf.frame;
-	auto keep = [&](const Eigen::Vector3d& m, double len) {
+	auto keep = [&](const Eigen::Vector3d& m, double len)
+	{
 		total += len;
 		const bool k = !(noise.hide_back_side && hidden(m, centroid, extent)) &&
-			!chance(rng, noise.missing_fraction);
+		               !chance(rng, noise.missing_fraction);
 		if (k) kept += len;
 		return k;
 	};
@@ -102,17 +104,16 @@ Eigen::Isometry3d tablePose(double yaw_deg, double tilt_deg, const Eigen::Vector
 	// Object z (up) becomes the camera's +y (up); the table is seen from slightly above.
 	const double d2r = M_PI / 180.0;
 	const Eigen::Matrix3d upToY =
-		Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+	    Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
 	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 	T.linear() = Eigen::AngleAxisd(tilt_deg * d2r, Eigen::Vector3d::UnitX()) * upToY *
-		Eigen::AngleAxisd(yaw_deg * d2r, Eigen::Vector3d::UnitZ());
+	             Eigen::AngleAxisd(yaw_deg * d2r, Eigen::Vector3d::UnitZ());
 	T.translation() = p_mm;
 	return T;
 }
 
-TableScene makeTableScene(
-	const std::vector<model::WireFrame>& objects, int target, int clutter, const SceneNoise& noise,
-	unsigned seed)
+TableScene makeTableScene(const std::vector<model::WireFrame>& objects, int target, int clutter,
+                          const SceneNoise& noise, unsigned seed)
 {
 	std::mt19937 rng(seed);
 	std::uniform_real_distribution<> yaw(0, 360), tilt(20, 40), depth(700, 1000);
@@ -122,7 +123,8 @@ TableScene makeTableScene(
 	for (int k = 0; k < static_cast<int>(objects.size()); ++k)
 		if (k != target) others.push_back(k);
 	std::shuffle(others.begin(), others.end(), rng);
-	for (int k = 0; k < clutter && k < static_cast<int>(others.size()); ++k) chosen.push_back(others[k]);
+	for (int k = 0; k < clutter && k < static_cast<int>(others.size()); ++k)
+		chosen.push_back(others[k]);
 	std::vector<int> slots(chosen.size());
 	for (size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<int>(i);
 	std::shuffle(slots.begin(), slots.end(), rng);

@@ -10,8 +10,8 @@ namespace mrolr::recog
 {
 namespace
 {
-void computeSpread(
-	PoseCluster& c, const std::vector<PoseHypothesis>& hyps, const Eigen::Vector3d& centroid_O)
+void computeSpread(PoseCluster& c, const std::vector<PoseHypothesis>& hyps,
+                   const Eigen::Vector3d& centroid_O)
 {
 	double r2 = 0, t2 = 0;
 	const Eigen::Vector3d pm = c.mean * centroid_O;
@@ -24,8 +24,8 @@ void computeSpread(
 	c.spread_trans_mm = std::sqrt(t2 / c.members.size());
 }
 
-void finishCluster(
-	PoseCluster& c, const std::vector<PoseHypothesis>& hyps, const Eigen::Vector3d& centroid_O)
+void finishCluster(PoseCluster& c, const std::vector<PoseHypothesis>& hyps,
+                   const Eigen::Vector3d& centroid_O)
 {
 	std::vector<Eigen::Isometry3d> Ts;
 	std::vector<double> w;
@@ -44,7 +44,8 @@ double rotationDistanceDeg(const Eigen::Matrix3d& Ra, const Eigen::Matrix3d& Rb)
 	return Eigen::AngleAxisd(Ra.transpose() * Rb).angle() * 180.0 / M_PI;
 }
 
-Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts, const std::vector<double>& w)
+Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts,
+                                const std::vector<double>& w)
 {
 	Eigen::Matrix4d M = Eigen::Matrix4d::Zero();
 	Eigen::Vector3d t = Eigen::Vector3d::Zero();
@@ -58,38 +59,40 @@ Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts, const 
 	}
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(M);
 	Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-	out.linear() = Eigen::Quaterniond(Eigen::Vector4d(es.eigenvectors().col(3))).normalized()
-					   .toRotationMatrix();
+	out.linear() = Eigen::Quaterniond(Eigen::Vector4d(es.eigenvectors().col(3)))
+	                   .normalized()
+	                   .toRotationMatrix();
 	out.translation() = t / wsum;
 	return out;
 }
 
-std::vector<PoseCluster> clusterTransforms(
-	const std::vector<PoseHypothesis>& hyps, const Eigen::Vector3d& centroid_O,
-	double max_rotation_deg, double max_translation_mm)
+std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hyps,
+                                           const Eigen::Vector3d& centroid_O,
+                                           double max_rotation_deg, double max_translation_mm)
 {
 	std::vector<size_t> order(hyps.size());
 	std::iota(order.begin(), order.end(), 0);
-	std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-		return hyps[a].weight > hyps[b].weight;
-	});
+	std::stable_sort(order.begin(), order.end(),
+	                 [&](size_t a, size_t b) { return hyps[a].weight > hyps[b].weight; });
 	std::vector<PoseCluster> clusters;
 	for (size_t i : order)
 	{
 		const auto& T = hyps[i].T_OinS;
-		auto it = std::find_if(clusters.begin(), clusters.end(), [&](const PoseCluster& c) {
-			const auto& S = hyps[c.members.front()].T_OinS;
-			return rotationDistanceDeg(S.linear(), T.linear()) <= max_rotation_deg &&
-				(S * centroid_O - T * centroid_O).norm() <= max_translation_mm;
-		});
+		auto it = std::find_if(
+		    clusters.begin(), clusters.end(),
+		    [&](const PoseCluster& c)
+		    {
+			    const auto& S = hyps[c.members.front()].T_OinS;
+			    return rotationDistanceDeg(S.linear(), T.linear()) <= max_rotation_deg &&
+			           (S * centroid_O - T * centroid_O).norm() <= max_translation_mm;
+		    });
 		if (it == clusters.end()) it = clusters.insert(clusters.end(), PoseCluster{});
 		it->members.push_back(i);
 		it->weight += hyps[i].weight;
 	}
 	for (auto& c : clusters) finishCluster(c, hyps, centroid_O);
-	std::stable_sort(clusters.begin(), clusters.end(), [](const auto& a, const auto& b) {
-		return a.weight > b.weight;
-	});
+	std::stable_sort(clusters.begin(), clusters.end(),
+	                 [](const auto& a, const auto& b) { return a.weight > b.weight; });
 	return clusters;
 }
 

@@ -18,7 +18,8 @@ struct Support
 double lineOverlap(const Feature& l, const Feature& s, double beta, double cosT)
 {
 	if (std::abs(l.u.dot(s.u)) < cosT) return 0;
-	auto perp = [&](const Eigen::Vector3d& p) {
+	auto perp = [&](const Eigen::Vector3d& p)
+	{
 		const Eigen::Vector3d w = p - l.m;
 		return (w - w.dot(l.u) * l.u).norm();
 	};
@@ -43,7 +44,7 @@ Support supportOf(const Feature& mf, const std::vector<Feature>& scene, double b
 	{
 		if (s.kind != mf.kind) continue;
 		const double o =
-			mf.isLine() ? lineOverlap(mf, s, beta, cosT) : conicOverlap(mf, s, beta, cosT);
+		    mf.isLine() ? lineOverlap(mf, s, beta, cosT) : conicOverlap(mf, s, beta, cosT);
 		if (o <= 0) continue;
 		sup.overlap_mm += o;
 		if (o > sup.best_mm) sup.best_mm = o, sup.best = &s;
@@ -53,9 +54,9 @@ Support supportOf(const Feature& mf, const std::vector<Feature>& scene, double b
 }
 }  // namespace
 
-VerificationResult verifyPose(
-	const ModelTable& model, const std::vector<Feature>& scene, const Eigen::Isometry3d& T_OinS,
-	double beta_mm, double theta_rad, double min_len_mm)
+VerificationResult verifyPose(const ModelTable& model, const std::vector<Feature>& scene,
+                              const Eigen::Isometry3d& T_OinS, double beta_mm, double theta_rad,
+                              double min_len_mm)
 {
 	VerificationResult r;
 	const double cosT = std::cos(theta_rad);

@@ -2,7 +2,10 @@
 
 namespace mrolr::recog
 {
-WireFrameBuilder::WireFrameBuilder(std::string name) { wf_.name = std::move(name); }
+WireFrameBuilder::WireFrameBuilder(std::string name)
+{
+	wf_.name = std::move(name);
+}
 
 WireFrameBuilder& WireFrameBuilder::line(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
@@ -23,8 +26,10 @@ WireFrameBuilder& WireFrameBuilder::polyline(const std::vector<Eigen::Vector3d>&
 
 WireFrameBuilder& WireFrameBuilder::box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
 {
-	auto corner = [&](int i) {
-		return Eigen::Vector3d(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+	auto corner = [&](int i)
+	{
+		return Eigen::Vector3d(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(),
+		                       i & 4 ? hi.z() : lo.z());
 	};
 	for (int i = 0; i < 8; ++i)
 		for (int bit : {1, 2, 4})
@@ -32,9 +37,9 @@ WireFrameBuilder& WireFrameBuilder::box(const Eigen::Vector3d& lo, const Eigen::
 	return *this;
 }
 
-WireFrameBuilder& WireFrameBuilder::arc(
-	const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const Eigen::Vector3d& major,
-	double r, double t1, double t2)
+WireFrameBuilder& WireFrameBuilder::arc(const Eigen::Vector3d& centre,
+                                        const Eigen::Vector3d& normal, const Eigen::Vector3d& major,
+                                        double r, double t1, double t2)
 {
 	model::Conic3 c;
 	c.id = next_id_++;

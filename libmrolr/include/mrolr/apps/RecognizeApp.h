@@ -29,7 +29,7 @@ namespace mrolr::apps
 {
 class RecognizeApp
 {
-   public:
+ public:
 	/** Parses the arguments (argv[0] first); throws util::UsageError for bad or missing ones. */
 	void initialize(const std::vector<std::string>& args);
 
@@ -51,10 +51,10 @@ class RecognizeApp
 	// Results (set by run)
 	recog::RecognitionOptions options;
 	std::vector<model::WireFrame> models;
-	std::vector<model::WireFrame> scenes;  ///< the scene models searched, in order
+	std::vector<model::WireFrame> scenes;           ///< the scene models searched, in order
 	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
 
-   private:
+ private:
 	void loadScenes();
 	void writeDemo(std::ostream& out) const;
 	void printText(std::ostream& out) const;

@@ -25,7 +25,7 @@ OrientedScene orientScene(const std::vector<Feature>& scene, double min_len_mm);
 /** One model feature matched to one oriented scene feature. */
 struct FeatureMatch
 {
-	size_t model = 0;  ///< index into ModelTable::features()
+	size_t model = 0;     ///< index into ModelTable::features()
 	size_t oriented = 0;  ///< index into OrientedScene::oriented
 	size_t scene() const { return oriented / 2; }
 	bool operator==(const FeatureMatch& o) const
@@ -49,8 +49,8 @@ bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, b
 
 /** All matches of clique @p clique_index with at least p.clique_size features, largest and
  * strongest first. @p max_nodes bounds the search per focus candidate. */
-std::vector<CliqueMatch> matchClique(
-	const ModelTable& model, size_t clique_index, const OrientedScene& scene,
-	const LevelParams& p, int max_nodes);
+std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
+                                     const OrientedScene& scene, const LevelParams& p,
+                                     int max_nodes);
 
 }  // namespace mrolr::recog

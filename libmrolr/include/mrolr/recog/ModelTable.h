@@ -31,14 +31,13 @@ double featureDistance(const Feature& a, const Feature& b);
 
 class ModelTable
 {
-   public:
+ public:
 	/** Prepares @p wf. Uses its cliques if it has any (ids must exist: std::invalid_argument
 	 * otherwise), else automatic ones: @p auto_method "recog" is chooseCliques(features,
 	 * auto_count, auto_size); "model" is the model area's viewing-direction coverage
 	 * (model::addAutomaticCliques, what `mrolr-model cliques` writes). */
-	ModelTable(
-		const model::WireFrame& wf, int auto_count, int auto_size,
-		const std::string& auto_method = "recog");
+	ModelTable(const model::WireFrame& wf, int auto_count, int auto_size,
+	           const std::string& auto_method = "recog");
 
 	const std::string& name() const { return name_; }
 	const std::vector<Feature>& features() const { return features_; }
@@ -49,9 +48,9 @@ class ModelTable
 	/** Sum of feature lengths (mm): the denominator of the verification score. */
 	double totalLength() const { return total_len_mm_; }
 
-   private:
-	std::vector<IndexClique> automaticCliques(
-		const model::WireFrame& wf, const std::string& method, int count, int size) const;
+ private:
+	std::vector<IndexClique> automaticCliques(const model::WireFrame& wf, const std::string& method,
+	                                          int count, int size) const;
 
 	std::string name_;
 	std::vector<Feature> features_;

@@ -39,11 +39,11 @@ struct Tolerance
 {
 	Tolerance() : Tolerance(3, 0.035) {}
 	Tolerance(double beta, double theta)
-		: beta_mm(beta),
-		  theta_rad(theta),
-		  tan_theta(std::tan(theta)),
-		  cos_2theta(std::cos(2 * theta)),
-		  sin_2theta(std::sin(2 * theta))
+	    : beta_mm(beta),
+	      theta_rad(theta),
+	      tan_theta(std::tan(theta)),
+	      cos_2theta(std::cos(2 * theta)),
+	      sin_2theta(std::sin(2 * theta))
 	{
 	}
 	double beta_mm;
@@ -62,8 +62,7 @@ PairRelation relateModel(const Feature& a, const Feature& b);
  * of the model relation @p m of the pair (ma, mb): orientation within 2·theta, distances within the
  * paper's bounds beta1 + beta2 + |q| tan(theta) (/ sin alpha for positions along the lines), and
  * each scene segment inside its model segment's interval (scene lines may be fragments). */
-bool consistent(
-	const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
-	const Feature& sb, const Tolerance& tol);
+bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
+                const Feature& sb, const Tolerance& tol);
 
 }  // namespace mrolr::recog

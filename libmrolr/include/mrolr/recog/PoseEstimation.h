@@ -24,9 +24,9 @@ struct Correspondence
 /** Rotation R minimising sum w |R a_i - b_i|^2 as the unit quaternion of Horn/Faugeras–Hebert: the
  * eigenvector of the largest eigenvalue of the 4×4 matrix built from sum w a b^T. Returns nullopt
  * when the directions do not fix the rotation (all parallel). */
-std::optional<Eigen::Matrix3d> rotationFromDirections(
-	const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b,
-	const std::vector<double>& w);
+std::optional<Eigen::Matrix3d> rotationFromDirections(const std::vector<Eigen::Vector3d>& a,
+                                                      const std::vector<Eigen::Vector3d>& b,
+                                                      const std::vector<double>& w);
 
 /** Faugeras–Hebert pose: rotation from matched line directions, conic normals and the directions
  * between matched conic centres; translation t minimising sum |P_i (R m_i + t - m'_i)|^2 over lines
@@ -39,13 +39,13 @@ std::optional<Eigen::Isometry3d> faugerasHebertPose(const std::vector<Correspond
  * lines at least 30° apart the midpoint of their common perpendicular, and for each line–conic pair
  * the foot of the perpendicular from the centre onto the line. first = model, second = scene. */
 std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> correspondingPoints(
-	const std::vector<Correspondence>& cs);
+    const std::vector<Correspondence>& cs);
 
 /** OpenGV point-cloud alignment of correspondingPoints(cs): opengv::point_cloud::threept_arun on
  * all points, or inside opengv::sac::Ransac (threshold @p ransac_threshold_mm, fixed seed) when
  * there are at least 6 points. nullopt with fewer than 3 points or when they are (nearly)
  * collinear. */
-std::optional<Eigen::Isometry3d> arunPose(
-	const std::vector<Correspondence>& cs, double ransac_threshold_mm);
+std::optional<Eigen::Isometry3d> arunPose(const std::vector<Correspondence>& cs,
+                                          double ransac_threshold_mm);
 
 }  // namespace mrolr::recog

@@ -14,13 +14,13 @@ namespace mrolr::recog
  * threshold that keeps coarse levels from accepting wrong matches. */
 struct LevelParams
 {
-	int clique_size = 4;  ///< (a) minimum matched features in a clique, focus included
-	double position_error_mm = 3;  ///< (b) beta: allowed error on a feature's position (mm)
-	double rotation_deg = 2;  ///< (c) theta: allowed error on a feature's direction (deg)
+	int clique_size = 4;              ///< (a) minimum matched features in a clique, focus included
+	double position_error_mm = 3;     ///< (b) beta: allowed error on a feature's position (mm)
+	double rotation_deg = 2;          ///< (c) theta: allowed error on a feature's direction (deg)
 	double length_threshold_mm = 10;  ///< (d) scene segments shorter than this are ignored (mm)
-	double max_rotation_deg = 4;  ///< (e) clique transforms closer than this agree (deg)
-	double max_translation_mm = 8;  ///< (f) clique transforms closer than this agree (mm)
-	double length_ratio = 0.5;  ///< (g) focus match: scene length / model length at least this
+	double max_rotation_deg = 4;      ///< (e) clique transforms closer than this agree (deg)
+	double max_translation_mm = 8;    ///< (f) clique transforms closer than this agree (mm)
+	double length_ratio = 0.5;      ///< (g) focus match: scene length / model length at least this
 	double verify_min_score = 0.3;  ///< supported fraction of the model needed to accept, [0,1]
 };
 
@@ -34,17 +34,18 @@ struct RecognitionOptions
 	/** Automatic cliques for models without any: "recog" (nearest features of the longest ones)
 	 * or "model" (model::addAutomaticCliques, viewing-direction coverage). */
 	std::string auto_cliques = "recog";
-	int auto_clique_count = 12;  ///< cliques chosen automatically when a model has none
-	int auto_clique_size = 7;  ///< features per automatic clique, focus included
+	int auto_clique_count = 12;   ///< cliques chosen automatically when a model has none
+	int auto_clique_size = 7;     ///< features per automatic clique, focus included
 	int max_search_nodes = 4000;  ///< budget of the maximal-consistent-set search per focus match
-	int refine_iterations = 2;  ///< least-squares refinements on the verified correspondences
+	int refine_iterations = 2;    ///< least-squares refinements on the verified correspondences
 	/** Verification tolerances (the whole model carried into the scene): a scene feature supports
 	 * a model feature within min(2 beta, verify_position_error_mm) and min(2 theta,
 	 * verify_rotation_deg). Capped so that coarse matching levels do not loosen verification. */
 	double verify_position_error_mm = 3;
 	double verify_rotation_deg = 3;
 	int verify_clusters = 20;
-	int confirm_levels = 1;  ///< levels run after the first recognition; the best answer is kept  ///< heaviest clusters of clique transforms verified per level
+	int confirm_levels = 1;  ///< levels run after the first recognition; the best answer is kept
+	                         ///< ///< heaviest clusters of clique transforms verified per level
 
 	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
 	static RecognitionOptions defaults();

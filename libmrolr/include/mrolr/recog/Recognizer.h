@@ -20,21 +20,21 @@ struct RecognitionResult
 	std::string model;
 	bool found = false;
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< model → scene frame (mm)
-	double score = 0;  ///< verified fraction of the model's length supported by the scene
-	double coverage = 0;  ///< supported length / length of the model features with support
-	int matched = 0;  ///< model features supported in the scene
-	int level = 0;  ///< 1-based level that recognised (0 when not found)
+	double score = 0;       ///< verified fraction of the model's length supported by the scene
+	double coverage = 0;    ///< supported length / length of the model features with support
+	int matched = 0;        ///< model features supported in the scene
+	int level = 0;          ///< 1-based level that recognised (0 when not found)
 	double confidence = 0;  ///< score × (1 − 0.5 (level − 1)/(levels − 1)); 0 when not found
-	int agreeing_cliques = 0;  ///< clique transforms in the winning cluster
-	double spread_rot_deg = 0;  ///< RMS spread of those transforms (deg)
+	int agreeing_cliques = 0;    ///< clique transforms in the winning cluster
+	double spread_rot_deg = 0;   ///< RMS spread of those transforms (deg)
 	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
-	int scene_index = -1;  ///< which scene of a sweep held it (-1 when not found)
-	double ms = 0;  ///< wall time of the search (ms)
+	int scene_index = -1;        ///< which scene of a sweep held it (-1 when not found)
+	double ms = 0;               ///< wall time of the search (ms)
 };
 
 class Recognizer
 {
-   public:
+ public:
 	/** Builds the model's pairwise tables and cliques once. Throws std::invalid_argument for a
 	 * model that cannot be matched (fewer than two features, degenerate elements, bad cliques). */
 	Recognizer(const model::WireFrame& model, const RecognitionOptions& opts);
@@ -56,7 +56,7 @@ class Recognizer
 	const ModelTable& table() const { return table_; }
 	const RecognitionOptions& options() const { return opts_; }
 
-   private:
+ private:
 	ModelTable table_;
 	RecognitionOptions opts_;
 	Eigen::Vector3d centroid_O_;

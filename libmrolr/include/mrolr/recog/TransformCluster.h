@@ -20,9 +20,10 @@ struct PoseCluster
 {
 	Eigen::Isometry3d mean = Eigen::Isometry3d::Identity();
 	std::vector<size_t> members;  ///< indices into the hypotheses
-	double weight = 0;  ///< summed weights
-	double spread_rot_deg = 0;  ///< RMS rotation of the members from the mean (deg)
-	double spread_trans_mm = 0;  ///< RMS distance of the carried model centroid from the mean's (mm)
+	double weight = 0;            ///< summed weights
+	double spread_rot_deg = 0;    ///< RMS rotation of the members from the mean (deg)
+	double spread_trans_mm =
+	    0;  ///< RMS distance of the carried model centroid from the mean's (mm)
 };
 
 /** Angle of the rotation R_a^T R_b (deg). */
@@ -30,13 +31,14 @@ double rotationDistanceDeg(const Eigen::Matrix3d& Ra, const Eigen::Matrix3d& Rb)
 
 /** Weighted mean of rotations: the principal eigenvector of sum w q q^T (sign-free quaternion
  * average) — and of translations. */
-Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts, const std::vector<double>& w);
+Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts,
+                                const std::vector<double>& w);
 
 /** Greedy clustering, heaviest hypothesis first: a hypothesis joins the first cluster whose seed
  * is within @p max_rotation_deg and moves @p centroid_O (model frame, mm) to within
  * @p max_translation_mm of where the seed moves it. Clusters are returned heaviest first. */
-std::vector<PoseCluster> clusterTransforms(
-	const std::vector<PoseHypothesis>& hyps, const Eigen::Vector3d& centroid_O,
-	double max_rotation_deg, double max_translation_mm);
+std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hyps,
+                                           const Eigen::Vector3d& centroid_O,
+                                           double max_rotation_deg, double max_translation_mm);
 
 }  // namespace mrolr::recog

@@ -16,15 +16,18 @@ struct VerificationResult
 {
 	double score = 0;  ///< supported length / length of the model features considered, [0, 1]
 	double supported_mm = 0;  ///< supported model length (mm)
-	double coverage = 0;  ///< supported length / length of the model features that have support
-	int matched = 0;  ///< model features with at least a quarter of their length supported
+	double coverage = 0;      ///< supported length / length of the model features that have support
+	int matched = 0;          ///< model features with at least a quarter of their length supported
 	std::vector<Correspondence> correspondences;  ///< model feature (model frame) ↔ best support
 };
 
 /** Ranking of verified poses: the score, ties broken towards the pose whose supported features
  * are covered more completely (a fragment explained as a whole feature rather than as part of a
  * longer one). */
-inline double rankOf(const VerificationResult& v) { return v.score + 0.05 * v.coverage; }
+inline double rankOf(const VerificationResult& v)
+{
+	return v.score + 0.05 * v.coverage;
+}
 
 /** A scene line supports a transformed model line when it is within @p theta_rad of its direction
  * and both its endpoints are within @p beta_mm of the model line; the support is the overlap of
@@ -32,8 +35,8 @@ inline double rankOf(const VerificationResult& v) { return v.score + 0.05 * v.co
  * a model conic with centre within beta, normal within theta and semi-axes within beta + 5 %; the
  * support is the smaller arc length. Model features shorter than @p min_len_mm (which the scene
  * could not show, having been filtered by the same threshold) count neither way. */
-VerificationResult verifyPose(
-	const ModelTable& model, const std::vector<Feature>& scene, const Eigen::Isometry3d& T_OinS,
-	double beta_mm, double theta_rad, double min_len_mm = 0);
+VerificationResult verifyPose(const ModelTable& model, const std::vector<Feature>& scene,
+                              const Eigen::Isometry3d& T_OinS, double beta_mm, double theta_rad,
+                              double min_len_mm = 0);
 
 }  // namespace mrolr::recog

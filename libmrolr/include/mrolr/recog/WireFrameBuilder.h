@@ -11,7 +11,7 @@ namespace mrolr::recog
 {
 class WireFrameBuilder
 {
-   public:
+ public:
 	explicit WireFrameBuilder(std::string name);
 	WireFrameBuilder& line(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 	/** Consecutive segments through @p pts; closed adds the segment back to the first point. */
@@ -20,13 +20,12 @@ class WireFrameBuilder
 	WireFrameBuilder& box(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
 	/** Circle arc of radius r (mm) about @p centre with plane normal @p normal, from t1 to t2 (rad)
 	 * measured from @p major. */
-	WireFrameBuilder& arc(
-		const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const Eigen::Vector3d& major,
-		double r, double t1, double t2);
+	WireFrameBuilder& arc(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
+	                      const Eigen::Vector3d& major, double r, double t1, double t2);
 	WireFrameBuilder& circle(const Eigen::Vector3d& centre, double r);  ///< full, normal +z
 	model::WireFrame build() const { return wf_; }
 
-   private:
+ private:
 	model::WireFrame wf_;
 	int next_id_ = 1;
 };

@@ -14,7 +14,7 @@ void requireInputs(const RecognizeApp& a)
 	if (!a.scene_paths.empty() && !a.right_png.empty())
 		throw util::UsageError("--scene and --right exclude each other (one source of scene)");
 	if (stereo && a.scene_paths.empty() &&
-		(a.left_png.empty() || a.right_png.empty() || a.calib_path.empty()))
+	    (a.left_png.empty() || a.right_png.empty() || a.calib_path.empty()))
 		throw util::UsageError("building the scene from stereo needs --left, --right and --calib");
 	if (!a.overlay_png.empty() && a.calib_path.empty())
 		throw util::UsageError("--overlay projects with the left camera: it needs --calib");
@@ -23,21 +23,27 @@ void requireInputs(const RecognizeApp& a)
 
 void RecognizeApp::initialize(const std::vector<std::string>& args)
 {
-	TCLAP::CmdLine cmd(
-		"Recognise wire-frame object models in a scene and report their poses", ' ', "0.1");
+	TCLAP::CmdLine cmd("Recognise wire-frame object models in a scene and report their poses", ' ',
+	                   "0.1");
 	using Str = TCLAP::ValueArg<std::string>;
-	TCLAP::MultiArg<std::string> model("", "model", "object model .wf (repeatable)", false, "M.wf", cmd);
-	TCLAP::MultiArg<std::string> scene(
-		"", "scene", "scene model .wf; several = a pan sweep searched in order", false, "S.wf", cmd);
+	TCLAP::MultiArg<std::string> model("", "model", "object model .wf (repeatable)", false, "M.wf",
+	                                   cmd);
+	TCLAP::MultiArg<std::string> scene("", "scene",
+	                                   "scene model .wf; several = a pan sweep searched in order",
+	                                   false, "S.wf", cmd);
 	Str left("", "left", "left image (stereo scene and overlay)", false, "", "L.png", cmd);
 	Str right("", "right", "right image (stereo scene)", false, "", "R.png", cmd);
 	Str calib("", "calib", "stereo calibration .ini ([stereo_calib])", false, "", "C.ini", cmd);
 	Str cfg("", "config", "recognition options", false, config_path, "INI", cmd);
-	Str scfg("", "scene-config", "scene building options ([scene])", false, scene_config_path, "INI", cmd);
-	Str overlay("", "overlay", "PNG of the models drawn on the left image", false, "", "OUT.png", cmd);
-	Str s3d("", "scene3d", "MRPT .3Dscene of scene and recognised models", false, "", "OUT.3Dscene", cmd);
+	Str scfg("", "scene-config", "scene building options ([scene])", false, scene_config_path,
+	         "INI", cmd);
+	Str overlay("", "overlay", "PNG of the models drawn on the left image", false, "", "OUT.png",
+	            cmd);
+	Str s3d("", "scene3d", "MRPT .3Dscene of scene and recognised models", false, "", "OUT.3Dscene",
+	        cmd);
 	TCLAP::SwitchArg js("", "json", "print one JSON object", cmd);
-	Str demo("", "make-demo", "write demo models and scenes into DIR and exit", false, "", "DIR", cmd);
+	Str demo("", "make-demo", "write demo models and scenes into DIR and exit", false, "", "DIR",
+	         cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;

@@ -56,9 +56,8 @@ void RecognizeApp::loadScenes()
 	const auto calib = stereo::loadStereoCalibration(calib_path);
 	stereo::SceneOptions so;
 	so.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(scene_config_path)), "scene");
-	const auto s = stereo::reconstructScene(
-		readImage(left_png, cv::IMREAD_GRAYSCALE), readImage(right_png, cv::IMREAD_GRAYSCALE),
-		calib, so);
+	const auto s = stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
+	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so);
 	scenes.push_back(model::sceneToWireFrame(s));
 	scenes.back().name = "stereo";
 }
@@ -74,14 +73,15 @@ int RecognizeApp::run(std::ostream& out)
 	options.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(config_path)), "recognition");
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();
-	for (const auto& m : models) results.push_back(recog::Recognizer(m, options).searchSweep(scenes));
+	for (const auto& m : models)
+		results.push_back(recog::Recognizer(m, options).searchSweep(scenes));
 	json ? printJson(out) : printText(out);
 	if (!overlay_png.empty())
 	{
 		const auto calib = stereo::loadStereoCalibration(calib_path);
 		const cv::Mat canvas = left_png.empty()
-			? cv::Mat(calib.image_size, CV_8UC3, cv::Scalar(30, 30, 30))
-			: readImage(left_png, cv::IMREAD_COLOR);
+		                           ? cv::Mat(calib.image_size, CV_8UC3, cv::Scalar(30, 30, 30))
+		                           : readImage(left_png, cv::IMREAD_COLOR);
 		writeOverlay(canvas, calib, scenes, models, results, overlay_png);
 	}
 	if (!scene3d_path.empty()) writeScene3D(scenes, models, results, scene3d_path);
@@ -106,13 +106,15 @@ void RecognizeApp::writeDemo(std::ostream& out) const
 		const auto name = "table_" + std::to_string(k);
 		model::saveWireFrame(ts.scene, (fs::path(demo_dir) / "scenes" / (name + ".wf")).string());
 		truth.push_back({{"scene", name + ".wf"},
-						 {"target", ts.target >= 0 ? objects[ts.target].name : "none"},
-						 {"T", resultJson([&] {
-							  recog::RecognitionResult r;
-							  r.T_OinS = ts.T_OinS;
-							  return r;
-						  }())["T"]},
-						 {"visible_fraction", ts.visible_fraction}});
+		                 {"target", ts.target >= 0 ? objects[ts.target].name : "none"},
+		                 {"T", resultJson(
+		                           [&]
+		                           {
+			                           recog::RecognitionResult r;
+			                           r.T_OinS = ts.T_OinS;
+			                           return r;
+		                           }())["T"]},
+		                 {"visible_fraction", ts.visible_fraction}});
 	}
 	std::ofstream((fs::path(demo_dir) / "scenes" / "truth.json").string()) << truth.dump(2) << "\n";
 	out << "wrote " << objects.size() << " models and 4 scenes under " << demo_dir << "\n";
@@ -130,12 +132,13 @@ void RecognizeApp::printText(std::ostream& out) const
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-			<< ", score " << r.score << ", confidence " << r.confidence << ", " << r.matched
-			<< " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
+		    << ", score " << r.score << ", confidence " << r.confidence << ", " << r.matched
+		    << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());
-		out << "  roll pitch yaw (deg): " << rpy.transpose() << "\n  translation (mm): "
-			<< r.T_OinS.translation().transpose() << "\n  agreeing cliques: " << r.agreeing_cliques
-			<< ", spread " << r.spread_rot_deg << " deg, " << r.spread_trans_mm << " mm\n";
+		out << "  roll pitch yaw (deg): " << rpy.transpose()
+		    << "\n  translation (mm): " << r.T_OinS.translation().transpose()
+		    << "\n  agreeing cliques: " << r.agreeing_cliques << ", spread " << r.spread_rot_deg
+		    << " deg, " << r.spread_trans_mm << " mm\n";
 	}
 }
 

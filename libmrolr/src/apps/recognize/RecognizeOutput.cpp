@@ -15,11 +15,11 @@ namespace mrolr::apps
 {
 namespace
 {
-const cv::Scalar kColours[] = {{0, 0, 255}, {0, 200, 0}, {255, 0, 0}, {0, 200, 255},
-							   {255, 0, 255}, {255, 255, 0}};
+const cv::Scalar kColours[] = {{0, 0, 255},   {0, 200, 0},   {255, 0, 0},
+                               {0, 200, 255}, {255, 0, 255}, {255, 255, 0}};
 
-std::vector<cv::Point2d> project(
-	const std::vector<Eigen::Vector3d>& p_L, const stereo::StereoCalibration& calib)
+std::vector<cv::Point2d> project(const std::vector<Eigen::Vector3d>& p_L,
+                                 const stereo::StereoCalibration& calib)
 {
 	std::vector<cv::Point3d> p_cv;
 	for (const auto& p : p_L)
@@ -33,9 +33,8 @@ std::vector<cv::Point2d> project(
 	return px;
 }
 
-void drawWireFrame(
-	cv::Mat& img, const model::WireFrame& wf, const stereo::StereoCalibration& calib,
-	const cv::Scalar& colour, int thickness)
+void drawWireFrame(cv::Mat& img, const model::WireFrame& wf, const stereo::StereoCalibration& calib,
+                   const cv::Scalar& colour, int thickness)
 {
 	for (const auto& pl : polylinesOf(wf))
 	{
@@ -63,7 +62,7 @@ Eigen::Vector3d rollPitchYawDeg(const Eigen::Matrix3d& R)
 {
 	const double r2d = 180.0 / M_PI;
 	return {std::atan2(R(2, 1), R(2, 2)) * r2d, std::asin(-std::clamp(R(2, 0), -1.0, 1.0)) * r2d,
-			std::atan2(R(1, 0), R(0, 0)) * r2d};
+	        std::atan2(R(1, 0), R(0, 0)) * r2d};
 }
 
 nlohmann::json resultJson(const recog::RecognitionResult& r)
@@ -73,18 +72,27 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 		T.push_back({r.T_OinS(i, 0), r.T_OinS(i, 1), r.T_OinS(i, 2), r.T_OinS(i, 3)});
 	const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 	const auto& t = r.T_OinS.translation();
-	return {{"model", r.model}, {"found", r.found}, {"T", T}, {"score", r.score},
-			{"matched", r.matched}, {"level", r.level}, {"ms", r.ms},
-			{"confidence", r.confidence}, {"scene", r.scene_index},
-			{"rpy_deg", {rpy.x(), rpy.y(), rpy.z()}}, {"t_mm", {t.x(), t.y(), t.z()}},
-			{"agreeing_cliques", r.agreeing_cliques}, {"spread_rot_deg", r.spread_rot_deg},
-			{"spread_trans_mm", r.spread_trans_mm}};
+	return {{"model", r.model},
+	        {"found", r.found},
+	        {"T", T},
+	        {"score", r.score},
+	        {"matched", r.matched},
+	        {"level", r.level},
+	        {"ms", r.ms},
+	        {"confidence", r.confidence},
+	        {"scene", r.scene_index},
+	        {"rpy_deg", {rpy.x(), rpy.y(), rpy.z()}},
+	        {"t_mm", {t.x(), t.y(), t.z()}},
+	        {"agreeing_cliques", r.agreeing_cliques},
+	        {"spread_rot_deg", r.spread_rot_deg},
+	        {"spread_trans_mm", r.spread_trans_mm}};
 }
 
 std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf)
 {
 	std::vector<std::vector<Eigen::Vector3d>> out;
-	auto add = [&out](const std::vector<model::FeatureSample>& samples) {
+	auto add = [&out](const std::vector<model::FeatureSample>& samples)
+	{
 		out.emplace_back();
 		for (const auto& s : samples) out.back().push_back(s.p);
 	};
@@ -93,10 +101,10 @@ std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf
 	return out;
 }
 
-void writeOverlay(
-	cv::Mat left, const stereo::StereoCalibration& calib,
-	const std::vector<model::WireFrame>& scenes, const std::vector<model::WireFrame>& models,
-	const std::vector<recog::RecognitionResult>& results, const std::string& png)
+void writeOverlay(cv::Mat left, const stereo::StereoCalibration& calib,
+                  const std::vector<model::WireFrame>& scenes,
+                  const std::vector<model::WireFrame>& models,
+                  const std::vector<recog::RecognitionResult>& results, const std::string& png)
 {
 	if (!scenes.empty()) drawWireFrame(left, scenes.front(), calib, {160, 160, 160}, 1);
 	for (size_t k = 0; k < models.size(); ++k)
@@ -112,9 +120,9 @@ void writeOverlay(
 	if (!cv::imwrite(png, left)) throw std::runtime_error("cannot write overlay '" + png + "'");
 }
 
-void writeScene3D(
-	const std::vector<model::WireFrame>& scenes, const std::vector<model::WireFrame>& models,
-	const std::vector<recog::RecognitionResult>& results, const std::string& path)
+void writeScene3D(const std::vector<model::WireFrame>& scenes,
+                  const std::vector<model::WireFrame>& models,
+                  const std::vector<recog::RecognitionResult>& results, const std::string& path)
 {
 	mrpt::opengl::COpenGLScene scene;
 	for (const auto& s : scenes) scene.insert(linesOf(s, {0.6f, 0.6f, 0.6f}));
@@ -122,10 +130,9 @@ void writeScene3D(
 	{
 		if (!results[k].found) continue;
 		const auto& c = kColours[k % 6];
-		scene.insert(linesOf(
-			recog::placeInScene(models[k], results[k].T_OinS),
-			{static_cast<float>(c[2] / 255), static_cast<float>(c[1] / 255),
-			 static_cast<float>(c[0] / 255)}));
+		scene.insert(linesOf(recog::placeInScene(models[k], results[k].T_OinS),
+		                     {static_cast<float>(c[2] / 255), static_cast<float>(c[1] / 255),
+		                      static_cast<float>(c[0] / 255)}));
 	}
 	if (!scene.saveToFile(path)) throw std::runtime_error("cannot write 3D scene '" + path + "'");
 }

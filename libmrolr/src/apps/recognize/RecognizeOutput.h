@@ -26,15 +26,15 @@ std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf
 /** Draws the first scene (grey) and every found model carried into it (one colour each, with its
  * name) on @p left (thesis L frame is OpenCV's camera frame turned 180° about z; the image is the
  * unrectified left image, so the calibration's K_left and D_left project). */
-void writeOverlay(
-	cv::Mat left, const stereo::StereoCalibration& calib,
-	const std::vector<model::WireFrame>& scenes, const std::vector<model::WireFrame>& models,
-	const std::vector<recog::RecognitionResult>& results, const std::string& png);
+void writeOverlay(cv::Mat left, const stereo::StereoCalibration& calib,
+                  const std::vector<model::WireFrame>& scenes,
+                  const std::vector<model::WireFrame>& models,
+                  const std::vector<recog::RecognitionResult>& results, const std::string& png);
 
 /** MRPT .3Dscene: every scene model (grey lines) and the found models carried into their scene
  * (coloured), coordinates converted from mm to m. */
-void writeScene3D(
-	const std::vector<model::WireFrame>& scenes, const std::vector<model::WireFrame>& models,
-	const std::vector<recog::RecognitionResult>& results, const std::string& path);
+void writeScene3D(const std::vector<model::WireFrame>& scenes,
+                  const std::vector<model::WireFrame>& models,
+                  const std::vector<recog::RecognitionResult>& results, const std::string& path);
 
 }  // namespace mrolr::apps
