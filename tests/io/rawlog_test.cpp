@@ -93,6 +93,7 @@ TEST(Rawlog, WrittenThenReadGivesTheSameObservations)
 		EXPECT_LT((out[i].T_LcvInVehicle.matrix() - in[i].T_LcvInVehicle.matrix()).norm(), 1e-9);
 		EXPECT_LT((out[i].T_RcvInLcv.matrix() - in[i].T_RcvInLcv.matrix()).norm(), 1e-9);
 	}
+	fs::remove_all(fs::path(path).parent_path());
 }
 
 TEST(Rawlog, RawlogEditReadsIt)
@@ -113,6 +114,7 @@ TEST(Rawlog, RawlogEditReadsIt)
 	for (const char* line : {"BISIGHT /      3", "GROUND_TRUTH /      4", "HEAD_ANGLES /      4",
 	                         "ODOMETRY /      4", "Actions/SensoryFrame format       : Yes"})
 		EXPECT_NE(text.find(line), std::string::npos) << line << " not listed in:\n" << text;
+	fs::remove_all(fs::path(path).parent_path());
 }
 
 TEST(Rawlog, MissingFileIsReported)
