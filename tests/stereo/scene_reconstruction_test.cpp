@@ -22,7 +22,7 @@ StereoEdgel project(const Rectifier& r, const Eigen::Vector3d& p_L)
 	const cv::Vec3d q = r.R_RectFromL() * p_cv;
 	const cv::Point2d c = r.principalPoint_px();
 	return {{r.focal_px() * q[0] / q[2] + c.x, r.focal_px() * q[1] / q[2] + c.y},
-	        r.focal_px() * r.baseline_mm() / q[2],
+	        r.disparityAtDepth(q[2]),
 	        p_L};
 }
 

@@ -46,12 +46,14 @@ bool nearHorizontal(const EdgeString& s, const Piece& p, double max_deg)
 	return std::abs(d.y) <= std::tan(max_deg * M_PI / 180) * std::abs(d.x);
 }
 
-/** Median disparity of the matches within r px of q, or NaN. */
-double disparityNear(const cv::Point2d& q, const std::vector<EdgeMatch>& m, double r)
+/** Median disparity of the matches of the same string within r px of q (the edges meeting at the
+ * corner, not a nearer object passing by), or NaN. */
+double disparityNear(const cv::Point2d& q, int string, const std::vector<EdgeMatch>& m, double r)
 {
 	std::vector<double> d;
 	for (const auto& x : m)
-		if (std::hypot(x.x_left_px - q.x, x.y_px - q.y) <= r) d.push_back(x.disparity_px);
+		if (x.string == string && std::hypot(x.x_left_px - q.x, x.y_px - q.y) <= r)
+			d.push_back(x.disparity_px);
 	if (d.empty()) return std::nan("");
 	std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
 	return d[d.size() / 2];
@@ -114,9 +116,9 @@ std::vector<LineFit3> recoverHorizontalLines(const std::vector<EdgeString>& left
 			n_matched += matched.count({p.string, static_cast<int>(i)});
 		if (!nearHorizontal(s, p, o.max_angle_deg) || n_matched > (p.hi - p.lo) / 3) continue;
 		const cv::Point2d a = s[p.lo].p, b = s[p.hi - 1].p;
-		const double da = disparityNear(a, matches, o.corner_radius_px),
-		             db = disparityNear(b, matches, o.corner_radius_px);
-		if (!(da > 0) || !(db > 0)) continue;
+		const double da = disparityNear(a, p.string, matches, o.corner_radius_px),
+		             db = disparityNear(b, p.string, matches, o.corner_radius_px);
+		if (std::isnan(da) || std::isnan(db)) continue;
 		if (rightSupport(dist, a - cv::Point2d(da, 0), b - cv::Point2d(db, 0)) <
 		    o.min_right_support)
 			continue;

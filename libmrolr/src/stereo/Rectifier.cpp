@@ -15,7 +15,7 @@ Rectifier::Rectifier(const StereoCalibration& c) : size_(c.image_size)
 	cv::Mat R1, R2, P1, P2, Q;
 	cv::stereoRectify(cv::Mat(c.K_left), cv::Mat(c.D_left), cv::Mat(c.K_right), cv::Mat(c.D_right),
 	                  size_, cv::Mat(c.R_RfromL), cv::Mat(c.t_LinR_mm), R1, R2, P1, P2, Q,
-	                  cv::CALIB_ZERO_DISPARITY, 0);
+	                  0, 0);
 	cv::initUndistortRectifyMap(cv::Mat(c.K_left), cv::Mat(c.D_left), R1, P1, size_, CV_32FC1,
 	                            map_lx_, map_ly_);
 	cv::initUndistortRectifyMap(cv::Mat(c.K_right), cv::Mat(c.D_right), R2, P2, size_, CV_32FC1,
@@ -24,6 +24,7 @@ Rectifier::Rectifier(const StereoCalibration& c) : size_(c.image_size)
 	f_px_ = P1.at<double>(0, 0);
 	cx_px_ = P1.at<double>(0, 2);
 	cy_px_ = P1.at<double>(1, 2);
+	doff_px_ = cx_px_ - P2.at<double>(0, 2);
 	baseline_mm_ = -P2.at<double>(0, 3) / P2.at<double>(0, 0);
 	if (std::abs(P2.at<double>(1, 3)) > 1e-9 || baseline_mm_ <= 0)
 		throw std::runtime_error(
@@ -50,7 +51,7 @@ void Rectifier::rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left
 
 Eigen::Vector3d Rectifier::pointInLeftCamera(double x_px, double y_px, double d_px) const
 {
-	const double z = f_px_ * baseline_mm_ / d_px;
+	const double z = f_px_ * baseline_mm_ / (d_px - doff_px_);
 	const Eigen::Vector3d p_rect((x_px - cx_px_) * z / f_px_, (y_px - cy_px_) * z / f_px_, z);
 	return R_LthesisFromRect_ * p_rect;
 }

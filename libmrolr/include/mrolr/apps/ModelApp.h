@@ -2,7 +2,7 @@
 /** `mrolr-model`: wire-frame models from stereo (issue 6, thesis 4.3, 6.1, 6.2, 7.1).
  *
  *     mrolr-model build --turntable DIR --out M.wf [--truth T.wf] [--json]
- *     mrolr-model scene --left L.png --right R.png --calib C.ini [--head pan,tilt,vl,vr] --out S.wf
+ *     mrolr-model scene --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out S.wf
  *     mrolr-model edit M.wf [--out M2.wf] [--remove 3,5] [--remove-box x0,y0,z0,x1,y1,z1]
  *                 [--add-line x1,y1,z1,x2,y2,z2] [--add-conic cx,cy,cz,nx,ny,nz,ax,ay,az,a,b,t1,t2]
  *                 [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]

@@ -2,8 +2,8 @@
 /** Edges along the scanlines. Scanline stereo cannot match an edge that runs along the epipolar
  * lines (every point of it matches every other), so such edges are missing from the matched
  * strings. Their ends are usually corners where matchable edges meet: a near-horizontal straight
- * piece of a left edge string takes the disparity of the matched edgels around each of its ends
- * (median within corner_radius_px) and is kept when the right image has an edge along the
+ * piece of a left edge string takes the disparity of the matched edgels of the same string around
+ * each of its ends (median within corner_radius_px) and is kept when the right image has an edge along the
  * predicted right segment (at least min_right_support of it within 1.5 px). */
 
 #include <mrolr/stereo/EdgeMatcher.h>

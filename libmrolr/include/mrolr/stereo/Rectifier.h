@@ -2,9 +2,11 @@
 /** Epipolar rectification of a calibrated stereo pair (thesis 4.3.1, fig 4.3.1.1) with OpenCV's
  * stereoRectify: both images are re-projected onto a common plane parallel to the baseline so that
  * conjugate epipolar lines are the same image row. Rectified left pixel (x, y) with disparity
- * d = x_left − x_right (px) is the 3D point Z = f·B/d, X = (x − cx)·Z/f, Y = (y − cy)·Z/f in the
+ * d = x_left − x_right (px) is the 3D point Z = f·B/(d − d0), X = (x − cx)·Z/f, Y = (y − cy)·Z/f in the
  * rectified left camera (OpenCV axes); pointInLeftCamera returns it in the thesis left camera frame
- * L of the unrectified left camera (x left, y up, z along the optic axis), millimetres. */
+ * L of the unrectified left camera (x left, y up, z along the optic axis), millimetres. The
+ * principal points of the rectified images differ by d0 = cx_left − cx_right (not forced to zero
+ * disparity at infinity) so that verged cameras keep their common field of view. */
 
 #include <mrolr/stereo/StereoCalibration.h>
 
@@ -30,7 +32,10 @@ class Rectifier
 	Eigen::Vector3d pointInLeftCamera(double x_px, double y_px, double disparity_px) const;
 
 	/** Disparity (px) of a point at depth z_mm along the rectified optic axis. */
-	double disparityAtDepth(double z_mm) const { return f_px_ * baseline_mm_ / z_mm; }
+	double disparityAtDepth(double z_mm) const { return f_px_ * baseline_mm_ / z_mm + doff_px_; }
+
+	/** d0 = cx_left − cx_right of the rectified cameras (px): the disparity at infinite depth. */
+	double disparityOffset_px() const { return doff_px_; }
 
 	double focal_px() const { return f_px_; }
 	double baseline_mm() const { return baseline_mm_; }
@@ -43,7 +48,7 @@ class Rectifier
 	cv::Mat map_lx_, map_ly_, map_rx_, map_ry_;
 	cv::Matx33d R1_;
 	Eigen::Matrix3d R_LthesisFromRect_;
-	double f_px_ = 0, cx_px_ = 0, cy_px_ = 0, baseline_mm_ = 0;
+	double f_px_ = 0, cx_px_ = 0, cy_px_ = 0, baseline_mm_ = 0, doff_px_ = 0;
 };
 
 }  // namespace mrolr::stereo

@@ -13,7 +13,7 @@ using Str = TCLAP::ValueArg<std::string>;
 const char* kUsage =
     "mrolr-model: 3D wire-frame models from stereo (docs/model.md)\n"
     "  build   --turntable DIR --out M.wf [--truth T.wf] [--json]\n"
-    "  scene   --left L.png --right R.png --calib C.ini [--head pan,tilt,vl,vr] --out S.wf\n"
+    "  scene   --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out S.wf\n"
     "  edit    M.wf [--out M2.wf] [--remove IDS] [--remove-box BOX] [--add-line L] [--add-conic "
     "C]\n"
     "          [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]\n"
@@ -95,7 +95,8 @@ void ModelApp::parseScene(const std::vector<std::string>& a)
 	TCLAP::CmdLine cmd("mrolr-model scene: scene wire-frame from one stereo pair", ' ', "1");
 	Str l("", "left", "left image", true, "", "L.png", cmd),
 	    r("", "right", "right image", true, "", "R.png", cmd);
-	Str calib("", "calib", "stereo calibration .ini", true, "", "C.ini", cmd);
+	Str calib("", "calib", "stereo calibration .ini (default: the ideal head cameras at --head)",
+		false, "", "C.ini", cmd);
 	Str head("", "head", "head angles pan,tilt,vl,vr (deg): output in C0", false, "", "ANGLES",
 	         cmd);
 	Str bis("", "bisight", "head configuration for --head", false, bisight_path, "INI", cmd);
@@ -108,6 +109,7 @@ void ModelApp::parseScene(const std::vector<std::string>& a)
 	out_path = out.getValue(), truth_path = truth.getValue(), config_path = cfg.getValue();
 	bisight_path = bis.getValue(), json = js.getValue();
 	if (!head.getValue().empty()) head_deg = numbers(head.getValue(), 4, "--head");
+	if (calib_path.empty() && !head_deg) throw util::UsageError("scene needs --calib or --head");
 }
 
 void ModelApp::parseEdit(const std::vector<std::string>& a)

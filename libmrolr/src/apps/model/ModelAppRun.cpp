@@ -7,6 +7,7 @@
 #include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
+#include <mrolr/stereo/HeadCalibration.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 #include <mrolr/util/Cli.h>
 
@@ -127,17 +128,16 @@ int ModelApp::runBuild()
 
 int ModelApp::runScene()
 {
-	const auto calib = stereo::loadStereoCalibration(calib_path);
+	std::optional<geometry::BiSightHead> head;
+	if (head_deg) head.emplace(geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
+	const auto calib = calib_path.empty()
+						   ? stereo::calibrationFromHead(*head, anglesFromDeg(*head_deg))
+						   : stereo::loadStereoCalibration(calib_path);
 	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
 	const auto scene =
-	    stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
+		stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
 	result = model::sceneToWireFrame(scene);
-	if (head_deg)
-	{
-		const geometry::BiSightHead head(
-		    geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
-		result = model::leftCameraToC0(result, head, anglesFromDeg(*head_deg));
-	}
+	if (head) result = model::leftCameraToC0(result, *head, anglesFromDeg(*head_deg));
 	model::saveWireFrame(result, out_path);
 	report["frame"] = model::frameName(result.frame);
 	report["edge_strings_left"] = scene.left_strings;
