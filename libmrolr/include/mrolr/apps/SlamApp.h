@@ -2,7 +2,7 @@
 /** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (issue 5, thesis 5.2–5.7, 7.2).
  *
  *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--out DIR] [--json]
- *     mrolr-slam --world maps/lab/world.ini --acquire-known
+ *     mrolr-slam --world maps/lab/world.ini --acquire-known [--known NAME,NAME]
  *
  * The robot drives the world's waypoints (rotate–translate–rotate legs planned from the estimate),
  * its true wheels slipping as configured; at every step the head saccades to the selected feature,
@@ -73,6 +73,7 @@ class SlamApp
 
 	// Inputs (set by initialize)
 	std::string world_path, config_path, rawlog_path, out_dir;
+	std::vector<std::string> known_names;  ///< --known: landmarks to acquire as known features
 	bool live = false, acquire_known = false, json = false, help_shown = false;
 
 	// Results (set by run)

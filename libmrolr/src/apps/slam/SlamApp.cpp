@@ -1,5 +1,6 @@
 #include <mrolr/apps/SlamApp.h>
 #include <mrolr/apps/TclapSupport.h>
+#include <mrolr/util/Config.h>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,10 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	                                    cmd);
 	TCLAP::SwitchArg liveArg(
 	    "", "live", "run on the simulator: drive the waypoints, measure with the head", cmd);
+	TCLAP::ValueArg<std::string> knownArg(
+	    "", "known",
+	    "with --acquire-known: comma-separated landmark names (default: the world's known)", false,
+	    "", "NAMES", cmd);
 	TCLAP::SwitchArg acquireArg("", "acquire-known",
 	                            "fixate the world's known landmarks from the first waypoint and "
 	                            "write <world dir>/known_features.ini",
@@ -36,6 +41,7 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	world_path = world.getValue(), config_path = config.getValue(), rawlog_path = rawlog.getValue();
 	out_dir = out.getValue(), live = liveArg.getValue(), json = js.getValue();
 	acquire_known = acquireArg.getValue();
+	known_names = util::splitFields(knownArg.getValue());
 	if (int(live) + int(acquire_known) + int(!rawlog_path.empty()) != 1)
 		throw util::UsageError("give exactly one of --live, --acquire-known and --rawlog FILE");
 	if (rawlog_path.empty() && world_path.empty())
@@ -107,11 +113,6 @@ nlohmann::json toJson(const SlamSummary& s)
 int SlamApp::run(std::ostream& out)
 {
 	if (help_shown) return util::kExitOk;
-	if (acquire_known)
-	{
-		runAcquireKnown(out);
-		return util::kExitOk;
-	}
 	if (acquire_known)
 	{
 		runAcquireKnown(out);

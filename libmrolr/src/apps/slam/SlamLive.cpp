@@ -10,6 +10,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -117,19 +118,27 @@ std::string knownFeaturesPath(const world::World& w)
 	return (std::filesystem::path(w.directory()) / "known_features.ini").string();
 }
 
-/** The world's known landmarks, fixated from @p x0 with the head of @p device (5.6.2). */
+/** The landmarks @p names (default: those flagged known in the world), fixated from @p x0 with the
+ * head of @p device (5.6.2). Throws for a name that is not a landmark of the world. */
 std::vector<vision::KnownFeature> acquireKnown(const world::World& w,
                                                vision::SyntheticWorld& device,
                                                const geometry::BiSightHead& head,
-                                               const LiveSetup& s, const Eigen::Vector3d& x0)
+                                               const LiveSetup& s, const Eigen::Vector3d& x0,
+                                               const std::vector<std::string>& names = {})
 {
+	for (const auto& n : names)
+		if (!w.findLandmark(n))
+			throw std::runtime_error(w.path + ": no landmark named '" + n + "'");
 	std::vector<vision::KnownFeature> out;
 	for (const auto& l : w.landmarks)
-		if (l.known)
-			out.push_back({l.name, l.p_LinW,
-			               acquireKnownPatch(device, head,
-			                                 slam::pointInHead(x0, l.p_LinW, s.slam.head.constants),
-			                                 s.vision, l.name)});
+	{
+		const bool wanted =
+		    names.empty() ? l.known : std::count(names.begin(), names.end(), l.name) > 0;
+		if (!wanted) continue;
+		const Eigen::Vector3d p_inC0 = slam::pointInHead(x0, l.p_LinW, s.slam.head.constants);
+		out.push_back(
+		    {l.name, l.p_LinW, acquireKnownPatch(device, head, p_inC0, s.vision, l.name)});
+	}
 	return out;
 }
 }  // namespace
@@ -143,7 +152,7 @@ void SlamApp::runAcquireKnown(std::ostream& out)
 	                              s.run.image_noise_grey, s.run.seed);
 	const Eigen::Vector3d x0 = startPose(w);
 	device.setVehicle(x0);
-	const auto known = acquireKnown(w, device, head, s, x0);
+	const auto known = acquireKnown(w, device, head, s, x0, known_names);
 	vision::saveKnownFeatures(knownFeaturesPath(w), known);
 	out << "acquired " << known.size() << " known feature(s) into " << knownFeaturesPath(w) << "\n";
 }
