@@ -49,11 +49,16 @@ TEST(SlamApp, KnownFeatureIsReFoundAtHome)
 {
 	const SlamApp app = runApp({});
 	ASSERT_GE(app.steps.size(), 3u);
-	const auto& last = app.steps.back().record;
-	EXPECT_EQ(last.label, "fire_sign");
-	EXPECT_TRUE(last.measurement.found);
-	EXPECT_TRUE(last.accepted);
-	EXPECT_LT(last.measurement.left.score, 0.9);
+	// the home-coming measurements are the last records of the run
+	int refound = 0;
+	for (size_t k = app.steps.size() - 6; k < app.steps.size(); ++k)
+	{
+		const auto& r = app.steps[k].record;
+		if (r.label != "fire_sign") continue;
+		EXPECT_LT(r.measurement.left.score, 0.9);
+		refound += r.measurement.found && r.accepted;
+	}
+	EXPECT_GE(refound, 1);
 }
 
 TEST(SlamApp, BadArgumentsAreUsageErrors)
