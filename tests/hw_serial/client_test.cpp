@@ -22,6 +22,7 @@ LinkOptions fastLink(int retries = 2)
 	o.device = "device.test";
 	o.timeout_ms = 100;
 	o.retries = retries;
+	o.first_seq = 1;  // the scripts answer numbers from 1
 	return o;
 }
 
@@ -99,6 +100,28 @@ TEST(SerialClient, ASilentDeviceTimesOutAfterTheRetriesNamingDeviceAndPort)
 	ASSERT_EQ(peer.requests().size(), 3u);
 	EXPECT_EQ(peer.requests()[0], peer.requests()[2]);  // resent with the same sequence number
 	EXPECT_EQ(client.resends(), 2);
+}
+
+TEST(SerialClient, SequenceNumbersStartAtRandomAndWrapAfter9999)
+{
+	auto [host1, dev1] = makeMemoryPipe();
+	auto [host2, dev2] = makeMemoryPipe();
+	LinkOptions random_start = fastLink(0);
+	random_start.first_seq = 0;
+	random_start.timeout_ms = 1;
+	SerialClient a(std::move(host1), random_start), b(std::move(host2), random_start);
+	EXPECT_THROW(a.call("ODO?", {}), SerialDeviceError);
+	EXPECT_THROW(b.call("ODO?", {}), SerialDeviceError);
+	const std::string ra = dev1->read(100), rb = dev2->read(100);
+	EXPECT_NE(ra, rb);  // two hosts start at different numbers (1 chance in 9999 to collide)
+
+	auto [host, dev] = makeMemoryPipe();
+	LinkOptions last = fastLink(0);
+	last.first_seq = 9999;
+	ScriptedPeer peer(std::move(dev), {{f("9999 OK 0")}, {f("1 OK 1")}});
+	SerialClient c(std::move(host), last);
+	EXPECT_EQ(c.call("GRIP?", {}), std::vector<std::string>{"0"});
+	EXPECT_EQ(c.call("GRIP?", {}), std::vector<std::string>{"1"});
 }
 
 TEST(SerialClient, GarbageIsRetriedThenReportedWithItsBytes)

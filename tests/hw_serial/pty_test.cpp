@@ -8,6 +8,7 @@
 #include <mrolr/sim/SimHead.h>
 #include <mrolr/util/Config.h>
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <gtest/gtest.h>
@@ -294,4 +295,17 @@ TEST(SerialFactory, AMissingPortIsADisconnectNamingIt)
 	EXPECT_EQ(e.kind(), Kind::Disconnected);
 	EXPECT_EQ(e.port(), "/dev/mrolr-no-such-port");
 	EXPECT_NE(std::string(e.what()).find("cannot open the serial port"), std::string::npos);
+}
+
+TEST(SerialFactory, TheShippedHardwareConfigReadsForEveryDevice)
+{
+	const mrpt::config::CConfigFile cfg(std::string(MROLR_SOURCE_DIR) + "/config/mission_hw.ini");
+	for (const char* section : {"device.base", "device.head", "device.arm"})
+	{
+		SerialLinkConfig link;
+		ASSERT_NO_THROW(link.loadFromConfigFile(cfg, section)) << section;
+		EXPECT_EQ(util::readString(cfg, section, "driver"), "serial");
+		EXPECT_EQ(link.link.device, section);
+		EXPECT_GT(link.link.motion_timeout_ms, link.link.timeout_ms);
+	}
 }

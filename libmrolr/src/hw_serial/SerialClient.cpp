@@ -2,6 +2,7 @@
 #include <mrolr/hw_serial/SerialClient.h>
 
 #include <chrono>
+#include <random>
 
 namespace mrolr::hw
 {
@@ -21,6 +22,10 @@ std::string joinText(const std::vector<std::string>& fields, size_t from)
 SerialClient::SerialClient(std::unique_ptr<ByteTransport> link, const LinkOptions& options)
     : link_(std::move(link)), options_(options), assembler_(options.max_line_bytes)
 {
+	next_seq_ = options.first_seq;
+	if (next_seq_ >= 1 && next_seq_ <= kMaxSeq) return;
+	std::random_device entropy;
+	next_seq_ = std::uniform_int_distribution<int>(1, kMaxSeq)(entropy);
 }
 
 void SerialClient::fail(int kind, const std::string& what) const

@@ -9,6 +9,18 @@
 
 namespace mrolr::hw
 {
+namespace
+{
+/** The "Message:" line of an MRPT exception, without its call stack. */
+std::string mrptMessage(const std::string& what)
+{
+	const size_t m = what.find("Message:");
+	if (m == std::string::npos) return what.substr(0, what.find('\n'));
+	const size_t start = what.find_first_not_of(' ', m + 8);
+	return what.substr(start, what.find('\n', start) - start);
+}
+}  // namespace
+
 /** CSerialPort with its descriptor visible, for poll(). */
 class SerialPortTransport::Port : public mrpt::comms::CSerialPort
 {
@@ -31,7 +43,7 @@ SerialPortTransport::SerialPortTransport(const std::string& port, int baud) : po
 	catch (const std::exception& e)
 	{
 		throw TransportClosed(port + ": cannot open the serial port at " + std::to_string(baud) +
-		                      " baud: " + e.what());
+		                      " baud: " + mrptMessage(e.what()));
 	}
 }
 
@@ -46,7 +58,7 @@ void SerialPortTransport::write(const std::string& bytes)
 	}
 	catch (const std::exception& e)
 	{
-		throw TransportClosed(port_ + ": write failed: " + e.what());
+		throw TransportClosed(port_ + ": write failed: " + mrptMessage(e.what()));
 	}
 }
 

@@ -25,6 +25,10 @@ struct LinkOptions
 	int motion_timeout_ms = 5000;   ///< wait for the reply to a motion (head or arm MOVE)
 	int retries = 3;                ///< resends after the first attempt
 	size_t max_line_bytes = 256;    ///< longer lines are rejected as garbage
+	/** First sequence number; 0 draws it at random, so that a host that reconnects does not
+	 * repeat the number (and the body) of the device's last request, which the device would take
+	 * for a resend and answer from its cache. */
+	int first_seq = 0;
 };
 
 class SerialClient

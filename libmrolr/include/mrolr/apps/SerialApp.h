@@ -1,0 +1,49 @@
+#pragma once
+/** mrolr-serial: the serial hardware path from the command line (docs/serial.md).
+ *   mrolr-serial emulate [--seconds S] [--delay-ms N] [--drop-probability P] [--json]
+ *       serves the simulated base, head and arm on three pseudo-terminals and prints their paths
+ *       (`base /dev/pts/N` ...), until Ctrl-C or for S seconds;
+ *   mrolr-serial send PORT VERB [FIELD...] [--baud B] [--timeout-ms T] [--retries R] [--json]
+ *       sends one request to a device and prints the fields of its OK reply (exit 1 with the
+ *       driver's error otherwise).
+ * Results are left in the public fields. */
+
+#include <mrolr/hw_serial/DeviceEmulator.h>
+
+#include <string>
+#include <vector>
+
+namespace mrolr::apps
+{
+class SerialApp
+{
+   public:
+	/** Parses argv (argv[0] first); throws util::UsageError for bad arguments; after --help,
+	 * help_shown is set and run() does nothing. */
+	void initialize(const std::vector<std::string>& args);
+	/** Runs the command; returns the exit code (0, or 1 when the device failed). */
+	int run();
+
+	// --- parsed input ---
+	std::string command;  ///< emulate | send
+	bool json = false;
+	bool help_shown = false;
+	double seconds = 0;  ///< emulate: 0 = until SIGINT/SIGTERM
+	hw::FaultOptions faults;
+	std::string sim_file, labmate_file;
+	std::string port, verb;
+	std::vector<std::string> fields;
+	int baud = 9600, timeout_ms = 500, retries = 3;
+
+	// --- results ---
+	std::vector<std::string> ports;        ///< emulate: base, head, arm pty paths
+	std::vector<std::string> reply;        ///< send: the OK reply's fields
+	std::string error;                     ///< send: the driver's error, when it failed
+	size_t requests_served = 0;            ///< emulate: requests executed by all three
+
+   private:
+	int runEmulate();
+	int runSend();
+};
+
+}  // namespace mrolr::apps
