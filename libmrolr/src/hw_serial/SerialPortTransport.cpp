@@ -3,6 +3,9 @@
 #include <mrpt/comms/CSerialPort.h>
 
 #include <poll.h>
+#include <sys/ioctl.h>
+
+#include <algorithm>
 
 #include <cerrno>
 #include <cstring>
@@ -72,8 +75,11 @@ std::string SerialPortTransport::read(int timeout_ms)
 	if (r == 0) return {};
 	if (p.revents & (POLLHUP | POLLERR | POLLNVAL))
 		throw TransportClosed(port_ + ": the device hung up");
+	// ask CSerialPort for exactly the bytes waiting: it then returns without its 1 ms nap
+	int waiting = 0;
+	if (::ioctl(port_impl_->fd(), FIONREAD, &waiting) < 0 || waiting <= 0) waiting = 1;
 	char buf[512];
-	const size_t n = port_impl_->Read(buf, sizeof(buf));
+	const size_t n = port_impl_->Read(buf, std::min(sizeof(buf), size_t(waiting)));
 	if (!port_impl_->isOpen()) throw TransportClosed(port_ + ": the device was disconnected");
 	return std::string(buf, n);
 }
