@@ -10,7 +10,7 @@
 
 class ScriptedPeer
 {
-   public:
+ public:
 	/** Reply pieces per request, written with @p gap_ms between pieces; an empty list answers
 	 * nothing. Requests beyond the script are recorded and not answered. */
 	ScriptedPeer(std::unique_ptr<mrolr::hw::MemoryTransport> end,
@@ -28,7 +28,7 @@ class ScriptedPeer
 	const std::vector<std::string>& requests() const { return requests_; }
 	void close() { end_->close(); }
 
-   private:
+ private:
 	void run()
 	{
 		std::string buffer;

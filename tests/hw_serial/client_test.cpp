@@ -1,6 +1,7 @@
 // The serial client and drivers against an in-memory stream (the port swapped for a pipe, as in
 // MRPT's CGPSInterface_unittest): exact request bytes, split replies, stale replies, retries,
 // timeouts, garbage and disconnects.
+#include "ExpectSerialError.h"
 #include "FakeDevices.h"
 #include "ScriptedPeer.h"
 
@@ -26,31 +27,19 @@ LinkOptions fastLink(int retries = 2)
 	return o;
 }
 
-std::string f(const std::string& body) { return frameLine(body); }
-
-/** Runs @p fn and returns the SerialDeviceError it throws (fails the test if none). */
-template <typename Fn>
-SerialDeviceError expectSerialError(Fn fn)
+std::string f(const std::string& body)
 {
-	try
-	{
-		fn();
-	}
-	catch (const SerialDeviceError& e)
-	{
-		return e;
-	}
-	ADD_FAILURE() << "no SerialDeviceError";
-	return SerialDeviceError(Kind::Refused, "", "", "none");
+	return frameLine(body);
 }
+
 }  // namespace
 
 TEST(SerialClient, BaseDriverSendsExactBytesAndReadsOdometry)
 {
 	auto [host, dev] = makeMemoryPipe();
-	ScriptedPeer peer(std::move(dev), {{f("1 OK LABMATE 1")},
-	                                   {f("2 OK")},
-	                                   {f("3 OK 0.5 -0.25 0.125 10000 9990 2.5")}});
+	ScriptedPeer peer(
+	    std::move(dev),
+	    {{f("1 OK LABMATE 1")}, {f("2 OK")}, {f("3 OK 0.5 -0.25 0.125 10000 9990 2.5")}});
 	SerialBase base(std::make_unique<SerialClient>(std::move(host), fastLink()));
 	base.step({0.2, -0.1, 0.5});
 	const Odometry o = base.odometry();
@@ -70,7 +59,8 @@ TEST(SerialClient, RepliesArrivingInPiecesAreReassembled)
 	const std::string r = f("1 OK RTX 1") + f("2 OK 1 2 3 4 5 6 7");
 	std::vector<std::string> pieces1, pieces2;
 	const size_t cut = r.find('\n') + 1;
-	for (size_t i = 0; i < cut; i += 3) pieces1.push_back(r.substr(i, std::min<size_t>(3, cut - i)));
+	for (size_t i = 0; i < cut; i += 3)
+		pieces1.push_back(r.substr(i, std::min<size_t>(3, cut - i)));
 	for (size_t i = cut; i < r.size(); i += 5) pieces2.push_back(r.substr(i, 5));
 	ScriptedPeer peer(std::move(dev), {pieces1, pieces2}, 2);
 	SerialArm arm(std::make_unique<SerialClient>(std::move(host), fastLink()));
@@ -95,8 +85,9 @@ TEST(SerialClient, ASilentDeviceTimesOutAfterTheRetriesNamingDeviceAndPort)
 	SerialClient client(std::move(host), fastLink(2));
 	const auto e = expectSerialError([&] { client.call("ODO?", {}); });
 	EXPECT_EQ(e.kind(), Kind::Timeout);
-	EXPECT_STREQ(e.what(),
-	             "device.test on memory: timeout: no reply after 3 attempts of 100 ms (command ODO?)");
+	EXPECT_STREQ(
+	    e.what(),
+	    "device.test on memory: timeout: no reply after 3 attempts of 100 ms (command ODO?)");
 	ASSERT_EQ(peer.requests().size(), 3u);
 	EXPECT_EQ(peer.requests()[0], peer.requests()[2]);  // resent with the same sequence number
 	EXPECT_EQ(client.resends(), 2);
@@ -142,8 +133,8 @@ TEST(SerialClient, OneDamagedReplyIsRetriedAndSucceeds)
 	auto [host, dev] = makeMemoryPipe();
 	std::string damaged = f("1 OK 1");
 	damaged.erase(3, 1);
-	ScriptedPeer peer(std::move(dev), {{damaged}, {f("- ERR BADLINE checksum mismatch")},
-	                                   {f("1 OK 1")}});
+	ScriptedPeer peer(std::move(dev),
+	                  {{damaged}, {f("- ERR BADLINE checksum mismatch")}, {f("1 OK 1")}});
 	SerialClient client(std::move(host), fastLink(2));
 	EXPECT_EQ(client.call("GRIP?", {}), std::vector<std::string>{"1"});
 	EXPECT_EQ(client.resends(), 2);
@@ -222,13 +213,15 @@ TEST(SerialDrivers, HeadGrabStampsTheInjectedImagesWithTheHeadAngles)
 	HeadHandler handler(head);
 	DeviceEmulator emulator(*dev, handler);
 	int grabs = 0;
-	SerialHead shead(std::make_unique<SerialClient>(std::move(host), fastLink()), [&] {
-		++grabs;
-		StereoImages s;
-		s.left = mrpt::img::CImage(8, 6, mrpt::img::CH_GRAY);
-		s.time_s = 3.5;
-		return s;
-	});
+	SerialHead shead(std::make_unique<SerialClient>(std::move(host), fastLink()),
+	                 [&]
+	                 {
+		                 ++grabs;
+		                 StereoImages s;
+		                 s.left = mrpt::img::CImage(8, 6, mrpt::img::CH_GRAY);
+		                 s.time_s = 3.5;
+		                 return s;
+	                 });
 	shead.moveTo({0.2, -0.1, 0.03, -0.03});
 	const auto s = shead.grab();
 	EXPECT_EQ(grabs, 1);

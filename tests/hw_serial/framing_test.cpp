@@ -50,7 +50,7 @@ TEST(Framing, UnframeRejectsDamagedLines)
 	EXPECT_FALSE(unframeLine("1 OK*E63512Fg").ok);   // not hex
 	EXPECT_FALSE(unframeLine("1 OK*E63512F6x").ok);
 	EXPECT_FALSE(unframeLine("1 OK*e63512f6").ok);  // lower-case hex
-	EXPECT_FALSE(unframeLine("1 OK").ok);      // no checksum
+	EXPECT_FALSE(unframeLine("1 OK").ok);           // no checksum
 	EXPECT_FALSE(unframeLine("").ok);
 	EXPECT_EQ(unframeLine("1 OK*E63512F7").error, "checksum mismatch");
 	EXPECT_FALSE(unframeLine(std::string("1 O\0K*E63512F6", 14)).ok);  // NUL inside
@@ -72,7 +72,8 @@ TEST(Framing, UnframeRejectsDamagedLines)
 				std::string damaged = framed;
 				damaged.erase(j, 1);
 				damaged.erase(i, 1);
-				EXPECT_FALSE(unframeLine(damaged).ok) << "bytes " << i << "," << j << ": " << damaged;
+				EXPECT_FALSE(unframeLine(damaged).ok)
+				    << "bytes " << i << "," << j << ": " << damaged;
 			}
 }
 
@@ -167,7 +168,8 @@ TEST(Message, FormatAndParseRoundTrip)
 
 TEST(Message, NumbersRoundTripExactly)
 {
-	for (double v : {0.0, -0.0, 0.1, -1.0 / 3.0, M_PI, 1e-300, 6.02e23, -915.0, 0.30000000000000004})
+	for (double v :
+	     {0.0, -0.0, 0.1, -1.0 / 3.0, M_PI, 1e-300, 6.02e23, -915.0, 0.30000000000000004})
 	{
 		const auto text = formatNumber(v);
 		EXPECT_EQ(parseNumbers({text}, 1, "v")[0], v) << text;

@@ -94,7 +94,8 @@ TEST(ProtocolServer, DamagedLinesGetBadLineWithoutSequenceNumber)
 	fake::Base base;
 	BaseHandler handler(base);
 	ProtocolServer server(handler);
-	const auto reply = [&](const std::string& line, bool overlong = false) {
+	const auto reply = [&](const std::string& line, bool overlong = false)
+	{
 		std::string r = server.handleLine({line, overlong});
 		r.pop_back();
 		return unframeLine(r).body;

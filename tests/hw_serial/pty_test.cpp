@@ -1,6 +1,8 @@
 // End to end through real serial I/O: the serial drivers open pseudo-terminals (CSerialPort on the
 // slave side) served by device emulators that wrap the simulated devices; the results must equal
 // calling the simulated devices directly, also while faults are injected (docs/serial.md).
+#include "ExpectSerialError.h"
+
 #include <mrolr/hw_serial/DeviceEmulator.h>
 #include <mrolr/hw_serial/SerialFactory.h>
 #include <mrolr/sim/SimArm.h>
@@ -78,20 +80,6 @@ struct BaseRig
 	}
 };
 
-template <typename Fn>
-SerialDeviceError expectSerialError(Fn fn)
-{
-	try
-	{
-		fn();
-	}
-	catch (const SerialDeviceError& e)
-	{
-		return e;
-	}
-	ADD_FAILURE() << "no SerialDeviceError";
-	return SerialDeviceError(Kind::Refused, "", "", "none");
-}
 }  // namespace
 
 TEST(PtyEndToEnd, BaseStepsThroughThePtyEqualTheSimulatedBase)
@@ -105,7 +93,7 @@ TEST(PtyEndToEnd, BaseStepsThroughThePtyEqualTheSimulatedBase)
 		expectSameOdometry(serial->odometry(), rig.direct.odometry(), step++);
 	}
 	EXPECT_EQ(rig.served.truePose(), rig.direct.truePose());
-	EXPECT_GT(rig.direct.slipStepsSoFar(), 0);  // the run did include slip bursts
+	EXPECT_GT(rig.direct.slipStepsSoFar(), 0);                // the run did include slip bursts
 	EXPECT_EQ(rig.pty.emulator().executed(), 1u + 2u * 40u);  // ID? + STEP/ODO? pairs, no repeats
 }
 
@@ -142,7 +130,8 @@ TEST(PtyEndToEnd, HeadMovesThroughThePtyEqualTheSimulatedHead)
 TEST(PtyEndToEnd, ArmMovesAndGraspsThroughThePtyEqualTheSimulatedArm)
 {
 	// a toy kinematics is enough here: the protocol must carry joints and gripper faithfully
-	const auto T_GinW = [](const ArmJoints& j) {
+	const auto T_GinW = [](const ArmJoints& j)
+	{
 		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
 		T.translation() = Eigen::Vector3d(j[0] / 1000, j[1] / 100, j[2] / 100);
 		return T;
@@ -261,9 +250,9 @@ TEST(PtyFaults, AHungUpPortIsReportedAsADisconnect)
 	rig.pty.hangUp();
 	const auto e = expectSerialError([&] { serial->step({0.1, 0.1, 0.5}); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected);
-	EXPECT_NE(std::string(e.what()).find("device.test on " + rig.pty.slavePath() +
-	                                     ": disconnected"),
-	          std::string::npos)
+	EXPECT_NE(
+	    std::string(e.what()).find("device.test on " + rig.pty.slavePath() + ": disconnected"),
+	    std::string::npos)
 	    << e.what();
 }
 

@@ -17,7 +17,10 @@ DeviceEmulator::DeviceEmulator(ByteTransport& link, RequestHandler& handler,
 	thread_ = std::thread([this] { loop(); });
 }
 
-DeviceEmulator::~DeviceEmulator() { stop(); }
+DeviceEmulator::~DeviceEmulator()
+{
+	stop();
+}
 
 void DeviceEmulator::setFaults(const FaultOptions& faults)
 {

@@ -8,8 +8,8 @@ namespace
 void requireNoArgs(const std::vector<std::string>& args, const std::string& verb)
 {
 	if (!args.empty())
-		throw CommandError(errcode::kBadArg, verb + " takes no arguments, got " +
-		                                         std::to_string(args.size()));
+		throw CommandError(errcode::kBadArg,
+		                   verb + " takes no arguments, got " + std::to_string(args.size()));
 }
 
 std::vector<std::string> identify(const char* id, const std::vector<std::string>& args)

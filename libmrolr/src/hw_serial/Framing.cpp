@@ -8,7 +8,10 @@ namespace mrolr::hw
 {
 namespace
 {
-bool printable(char c) { return c >= 0x20 && c <= 0x7e; }
+bool printable(char c)
+{
+	return c >= 0x20 && c <= 0x7e;
+}
 
 int hexValue(char c)
 {

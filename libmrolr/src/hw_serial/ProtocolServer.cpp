@@ -35,8 +35,8 @@ std::string ProtocolServer::handleLine(const AssembledLine& line)
 	if (!u.ok) return errorReply(kNoSeq, errcode::kBadLine, u.error);
 	const ParsedMessage p = parseMessage(u.body);
 	if (!p.ok || p.message.seq == kNoSeq)
-		return errorReply(kNoSeq, errcode::kBadLine, p.ok ? "request without sequence number"
-		                                                  : p.error);
+		return errorReply(kNoSeq, errcode::kBadLine,
+		                  p.ok ? "request without sequence number" : p.error);
 	if (u.body == last_request_) return last_reply_;  // a resend: do not execute twice
 	last_reply_ = execute(p.message.seq, p.message.word, p.message.fields);
 	last_request_ = u.body;

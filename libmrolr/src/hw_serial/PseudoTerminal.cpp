@@ -43,7 +43,10 @@ PseudoTerminal::PseudoTerminal()
 	master_ = std::make_unique<FdTransport>(master_fd_, "pty master of " + slave_path_);
 }
 
-PseudoTerminal::~PseudoTerminal() { hangUp(); }
+PseudoTerminal::~PseudoTerminal()
+{
+	hangUp();
+}
 
 void PseudoTerminal::hangUp()
 {

@@ -62,8 +62,7 @@ std::vector<std::string> SerialClient::call(const std::string& verb,
 	}
 	const std::string tries = std::to_string(options_.retries + 1) + " attempts of " +
 	                          std::to_string(timeout_ms) + " ms (command " + verb + ")";
-	if (last == Outcome::Garbage)
-		fail(int(Kind::Garbage), garbage + " after " + tries);
+	if (last == Outcome::Garbage) fail(int(Kind::Garbage), garbage + " after " + tries);
 	fail(int(Kind::Timeout), "no reply after " + tries);
 }
 

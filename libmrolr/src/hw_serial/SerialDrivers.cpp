@@ -45,7 +45,8 @@ auto mapLimit(SerialClient& client, Fn fn)
 	}
 	catch (const SerialDeviceError& e)
 	{
-		if (e.kind() == SerialDeviceError::Kind::Refused && client.lastErrorCode() == errcode::kLimit)
+		if (e.kind() == SerialDeviceError::Kind::Refused &&
+		    client.lastErrorCode() == errcode::kLimit)
 			throw E(e.what());
 		throw;
 	}
@@ -93,10 +94,13 @@ SerialHead::SerialHead(std::unique_ptr<SerialClient> client, ImageSource images)
 
 double SerialHead::moveTo(const geometry::HeadAngles& t)
 {
-	const auto f = mapLimit<geometry::FixationError>(*client_, [&] {
-		return client_->call("MOVE", numberFields({t.pan, t.tilt, t.verg_left, t.verg_right}),
-		                     client_->options().motion_timeout_ms);
-	});
+	const auto f = mapLimit<geometry::FixationError>(
+	    *client_,
+	    [&]
+	    {
+		    return client_->call("MOVE", numberFields({t.pan, t.tilt, t.verg_left, t.verg_right}),
+		                         client_->options().motion_timeout_ms);
+	    });
 	return replyNumbers(*client_, f, 1, "MOVE reply")[0];
 }
 
@@ -124,10 +128,13 @@ SerialArm::SerialArm(std::unique_ptr<SerialClient> client) : client_(std::move(c
 
 void SerialArm::moveTo(const ArmJoints& j)
 {
-	mapLimit<std::out_of_range>(*client_, [&] {
-		return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())),
-		                     client_->options().motion_timeout_ms);
-	});
+	mapLimit<std::out_of_range>(
+	    *client_,
+	    [&]
+	    {
+		    return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())),
+		                         client_->options().motion_timeout_ms);
+	    });
 }
 
 ArmJoints SerialArm::joints() const
@@ -138,7 +145,10 @@ ArmJoints SerialArm::joints() const
 	return j;
 }
 
-void SerialArm::setGripper(bool closed) { client_->call("GRIP", {closed ? "1" : "0"}); }
+void SerialArm::setGripper(bool closed)
+{
+	client_->call("GRIP", {closed ? "1" : "0"});
+}
 
 bool SerialArm::gripperClosed() const
 {

@@ -6,10 +6,14 @@ const char* kindName(SerialDeviceError::Kind kind)
 {
 	switch (kind)
 	{
-		case SerialDeviceError::Kind::Timeout: return "timeout";
-		case SerialDeviceError::Kind::Garbage: return "garbage";
-		case SerialDeviceError::Kind::Disconnected: return "disconnected";
-		case SerialDeviceError::Kind::Refused: return "refused";
+		case SerialDeviceError::Kind::Timeout:
+			return "timeout";
+		case SerialDeviceError::Kind::Garbage:
+			return "garbage";
+		case SerialDeviceError::Kind::Disconnected:
+			return "disconnected";
+		case SerialDeviceError::Kind::Refused:
+			return "refused";
 	}
 	return "?";
 }

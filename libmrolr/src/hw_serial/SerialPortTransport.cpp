@@ -27,7 +27,7 @@ std::string mrptMessage(const std::string& what)
 /** CSerialPort with its descriptor visible, for poll(). */
 class SerialPortTransport::Port : public mrpt::comms::CSerialPort
 {
-   public:
+ public:
 	using CSerialPort::CSerialPort;
 	int fd() const { return hCOM; }
 };

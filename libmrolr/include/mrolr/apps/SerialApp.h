@@ -17,7 +17,7 @@ namespace mrolr::apps
 {
 class SerialApp
 {
-   public:
+ public:
 	/** Parses argv (argv[0] first); throws util::UsageError for bad arguments; after --help,
 	 * help_shown is set and run() does nothing. */
 	void initialize(const std::vector<std::string>& args);
@@ -36,12 +36,12 @@ class SerialApp
 	int baud = 9600, timeout_ms = 500, retries = 3;
 
 	// --- results ---
-	std::vector<std::string> ports;        ///< emulate: base, head, arm pty paths
-	std::vector<std::string> reply;        ///< send: the OK reply's fields
-	std::string error;                     ///< send: the driver's error, when it failed
-	size_t requests_served = 0;            ///< emulate: requests executed by all three
+	std::vector<std::string> ports;  ///< emulate: base, head, arm pty paths
+	std::vector<std::string> reply;  ///< send: the OK reply's fields
+	std::string error;               ///< send: the driver's error, when it failed
+	size_t requests_served = 0;      ///< emulate: requests executed by all three
 
-   private:
+ private:
 	int runEmulate();
 	int runSend();
 };

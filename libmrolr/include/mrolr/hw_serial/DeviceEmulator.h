@@ -21,17 +21,17 @@ class ProtocolServer;
 /** Faults applied to the emulator's replies (all off by default). */
 struct FaultOptions
 {
-	int reply_delay_ms = 0;        ///< every reply is sent this late
-	int drop_byte_replies = 0;     ///< the next N replies lose one byte in their middle
-	int garbage_replies = 0;       ///< the next N replies are replaced by binary garbage
+	int reply_delay_ms = 0;            ///< every reply is sent this late
+	int drop_byte_replies = 0;         ///< the next N replies lose one byte in their middle
+	int garbage_replies = 0;           ///< the next N replies are replaced by binary garbage
 	double drop_byte_probability = 0;  ///< each byte of every reply is lost with this chance
-	bool silent = false;           ///< requests are read but never answered (a hung device)
-	unsigned seed = 1;             ///< for drop_byte_probability
+	bool silent = false;               ///< requests are read but never answered (a hung device)
+	unsigned seed = 1;                 ///< for drop_byte_probability
 };
 
 class DeviceEmulator
 {
-   public:
+ public:
 	/** Starts serving @p handler on @p link (both must outlive the emulator). */
 	DeviceEmulator(ByteTransport& link, RequestHandler& handler, const FaultOptions& faults = {});
 	~DeviceEmulator();
@@ -47,7 +47,7 @@ class DeviceEmulator
 	/** Lines received so far. */
 	size_t received() const { return received_; }
 
-   private:
+ private:
 	void loop();
 	void serveLine(ProtocolServer& server, const AssembledLine& line);
 	std::string applyFaults(std::string reply, int& delay_ms);
@@ -66,7 +66,7 @@ class DeviceEmulator
 /** A device emulator on its own pseudo-terminal: open slavePath() with a serial driver. */
 class PtyEmulator
 {
-   public:
+ public:
 	PtyEmulator(RequestHandler& handler, const FaultOptions& faults = {})
 	    : emulator_(pty_.master(), handler, faults)
 	{
@@ -80,7 +80,7 @@ class PtyEmulator
 		pty_.hangUp();
 	}
 
-   private:
+ private:
 	PseudoTerminal pty_;
 	DeviceEmulator emulator_;
 };

@@ -27,14 +27,14 @@ namespace mrolr::hw
 /** A request the handler refuses; code is one of errcode::*. */
 class CommandError : public std::runtime_error
 {
-   public:
+ public:
 	CommandError(std::string code, const std::string& text)
 	    : std::runtime_error(text), code_(std::move(code))
 	{
 	}
 	const std::string& code() const { return code_; }
 
-   private:
+ private:
 	std::string code_;
 };
 
@@ -45,7 +45,7 @@ constexpr const char* kArmId = "RTX";
 
 class RequestHandler
 {
-   public:
+ public:
 	virtual ~RequestHandler() = default;
 	/** Executes @p verb; throws CommandError (BADCMD, BADARG, LIMIT) or lets the device's own
 	 * exception through (ProtocolServer maps it to LIMIT or FAULT). */
@@ -55,34 +55,34 @@ class RequestHandler
 
 class BaseHandler : public RequestHandler
 {
-   public:
+ public:
 	explicit BaseHandler(BaseDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
-   private:
+ private:
 	BaseDevice& device_;
 };
 
 class HeadHandler : public RequestHandler
 {
-   public:
+ public:
 	explicit HeadHandler(HeadDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
-   private:
+ private:
 	HeadDevice& device_;
 };
 
 class ArmHandler : public RequestHandler
 {
-   public:
+ public:
 	explicit ArmHandler(ArmDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
-   private:
+ private:
 	ArmDevice& device_;
 };
 

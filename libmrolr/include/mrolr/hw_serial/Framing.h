@@ -46,7 +46,7 @@ struct AssembledLine
  * garbage never grows the buffer without bound. */
 class LineAssembler
 {
-   public:
+ public:
 	explicit LineAssembler(size_t max_line_bytes = 256) : max_(max_line_bytes) {}
 	void feed(std::string_view bytes);
 	/** Pops the next complete line; false when none is complete yet. */
@@ -56,7 +56,7 @@ class LineAssembler
 	/** Bytes of the incomplete line held so far. */
 	size_t pendingBytes() const { return partial_.size(); }
 
-   private:
+ private:
 	void push(char c);
 
 	size_t max_;

@@ -12,9 +12,10 @@ namespace mrolr::hw
 {
 class MemoryTransport : public ByteTransport
 {
-   public:
+ public:
 	struct Shared;
-	MemoryTransport(std::shared_ptr<Shared> shared, int side) : shared_(std::move(shared)), side_(side)
+	MemoryTransport(std::shared_ptr<Shared> shared, int side)
+	    : shared_(std::move(shared)), side_(side)
 	{
 	}
 	void write(const std::string& bytes) override;
@@ -23,7 +24,7 @@ class MemoryTransport : public ByteTransport
 	/** Closes the pipe for both ends (a disconnect). */
 	void close();
 
-   private:
+ private:
 	std::shared_ptr<Shared> shared_;
 	int side_;
 };

@@ -13,7 +13,7 @@ namespace mrolr::hw
 {
 class ProtocolServer
 {
-   public:
+ public:
 	explicit ProtocolServer(RequestHandler& handler) : handler_(handler) {}
 
 	/** The framed reply (`...*HH\n`) to one received line. */
@@ -21,7 +21,7 @@ class ProtocolServer
 	/** Requests executed (a repeat answered from the cache does not count). */
 	size_t executed() const { return executed_; }
 
-   private:
+ private:
 	std::string execute(int seq, const std::string& verb, const std::vector<std::string>& args);
 
 	RequestHandler& handler_;

@@ -12,7 +12,7 @@ namespace mrolr::hw
 {
 class PseudoTerminal
 {
-   public:
+ public:
 	/** Opens a new pair; throws std::runtime_error with errno's text if the system refuses. */
 	PseudoTerminal();
 	~PseudoTerminal();
@@ -26,7 +26,7 @@ class PseudoTerminal
 	/** Closes both sides: every driver on the slave sees a hang-up (a pulled cable). */
 	void hangUp();
 
-   private:
+ private:
 	int master_fd_ = -1, slave_fd_ = -1;
 	std::string slave_path_;
 	std::unique_ptr<FdTransport> master_;

@@ -33,7 +33,7 @@ struct LinkOptions
 
 class SerialClient
 {
-   public:
+ public:
 	SerialClient(std::unique_ptr<ByteTransport> link, const LinkOptions& options);
 
 	/** Sends `VERB ARGS...` and returns the fields of the `OK` reply. Throws SerialDeviceError:
@@ -50,7 +50,7 @@ class SerialClient
 	/** Attempts that had to be resent so far (for reports and tests). */
 	int resends() const { return resends_; }
 
-   private:
+ private:
 	enum class Outcome
 	{
 		Reply,

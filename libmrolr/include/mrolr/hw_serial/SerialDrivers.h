@@ -15,12 +15,12 @@ namespace mrolr::hw
 /** The Labmate base over serial: `STEP` blocks until the device has executed the step. */
 class SerialBase : public BaseDevice
 {
-   public:
+ public:
 	explicit SerialBase(std::unique_ptr<SerialClient> client);
 	void step(const base::WheelControl& u) override;
 	Odometry odometry() const override;
 
-   private:
+ private:
 	std::unique_ptr<SerialClient> client_;
 };
 
@@ -32,7 +32,7 @@ using ImageSource = std::function<StereoImages()>;
  * image source and stamps the pair with the joint angles read back from the head. */
 class SerialHead : public HeadDevice
 {
-   public:
+ public:
 	SerialHead(std::unique_ptr<SerialClient> client, ImageSource images);
 	/** Throws geometry::FixationError when the head refuses a target beyond a joint limit. */
 	double moveTo(const geometry::HeadAngles& target) override;
@@ -40,7 +40,7 @@ class SerialHead : public HeadDevice
 	/** Throws std::logic_error when no image source was given. */
 	StereoImages grab() override;
 
-   private:
+ private:
 	std::unique_ptr<SerialClient> client_;
 	ImageSource images_;
 };
@@ -48,7 +48,7 @@ class SerialHead : public HeadDevice
 /** The UMI RTX arm over serial. */
 class SerialArm : public ArmDevice
 {
-   public:
+ public:
 	explicit SerialArm(std::unique_ptr<SerialClient> client);
 	/** Throws std::out_of_range (the device's text) when the arm refuses a joint limit. */
 	void moveTo(const ArmJoints& joints) override;
@@ -56,7 +56,7 @@ class SerialArm : public ArmDevice
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override;
 
-   private:
+ private:
 	std::unique_ptr<SerialClient> client_;
 };
 

@@ -9,7 +9,7 @@ namespace mrolr::hw
 /** Thrown by a transport when the other end has gone (port closed, pty hung up, cable pulled). */
 class TransportClosed : public std::runtime_error
 {
-   public:
+ public:
 	using std::runtime_error::runtime_error;
 };
 
@@ -17,7 +17,7 @@ class TransportClosed : public std::runtime_error
  * "device.base on /dev/pts/3: timeout: no reply after 4 attempts of 200 ms (command STEP)". */
 class SerialDeviceError : public std::runtime_error
 {
-   public:
+ public:
 	enum class Kind
 	{
 		Timeout,       ///< no reply within the timeout, after every retry
@@ -33,7 +33,7 @@ class SerialDeviceError : public std::runtime_error
 	const std::string& device() const { return device_; }
 	const std::string& port() const { return port_; }
 
-   private:
+ private:
 	Kind kind_;
 	std::string device_, port_;
 };

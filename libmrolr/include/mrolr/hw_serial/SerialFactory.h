@@ -24,7 +24,8 @@
 namespace mrolr::hw
 {
 /** Keys `port`, `baud` (required), `timeout_ms`, `motion_timeout_ms`, `retries` (optional) of a
- * device section. A STEP waits timeout_ms plus its dt; a head or arm MOVE waits motion_timeout_ms. */
+ * device section. A STEP waits timeout_ms plus its dt; a head or arm MOVE waits motion_timeout_ms.
+ */
 struct SerialLinkConfig
 {
 	std::string port;

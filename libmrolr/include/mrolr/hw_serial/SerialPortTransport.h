@@ -17,7 +17,7 @@ namespace mrolr::hw
 {
 class SerialPortTransport : public ByteTransport
 {
-   public:
+ public:
 	/** Opens @p port at @p baud; throws TransportClosed naming the port if it cannot. */
 	SerialPortTransport(const std::string& port, int baud);
 	~SerialPortTransport() override;
@@ -25,7 +25,7 @@ class SerialPortTransport : public ByteTransport
 	std::string read(int timeout_ms) override;
 	std::string name() const override { return port_; }
 
-   private:
+ private:
 	class Port;
 	std::unique_ptr<Port> port_impl_;
 	std::string port_;

@@ -11,7 +11,7 @@ namespace mrolr::hw
 {
 class ByteTransport
 {
-   public:
+ public:
 	virtual ~ByteTransport() = default;
 	/** Writes all of @p bytes; throws TransportClosed when the other end has gone. */
 	virtual void write(const std::string& bytes) = 0;
@@ -25,13 +25,13 @@ class ByteTransport
 /** A transport over a POSIX file descriptor (poll + read/write); it does not own the descriptor. */
 class FdTransport : public ByteTransport
 {
-   public:
+ public:
 	FdTransport(int fd, std::string name) : fd_(fd), name_(std::move(name)) {}
 	void write(const std::string& bytes) override;
 	std::string read(int timeout_ms) override;
 	std::string name() const override { return name_; }
 
-   private:
+ private:
 	int fd_;
 	std::string name_;
 };

@@ -23,7 +23,8 @@ void takePositionals(SerialApp& a, const std::vector<std::string>& rest)
 		if (!rest.empty()) throw util::UsageError("emulate takes no positional arguments");
 		return;
 	}
-	if (rest.size() < 2) throw util::UsageError("send needs PORT and VERB (e.g. send /dev/pts/3 ODO?)");
+	if (rest.size() < 2)
+		throw util::UsageError("send needs PORT and VERB (e.g. send /dev/pts/3 ODO?)");
 	a.port = rest[0];
 	a.verb = rest[1];
 	for (size_t i = 2; i < rest.size(); ++i)
@@ -33,9 +34,10 @@ void takePositionals(SerialApp& a, const std::vector<std::string>& rest)
 
 void SerialApp::initialize(const std::vector<std::string>& args)
 {
-	TCLAP::CmdLine cmd("mrolr-serial: device emulators on pseudo-terminals and a one-shot "
-	                   "request to a serial device (docs/serial.md)",
-	                   ' ', "1.0");
+	TCLAP::CmdLine cmd(
+	    "mrolr-serial: device emulators on pseudo-terminals and a one-shot "
+	    "request to a serial device (docs/serial.md)",
+	    ' ', "1.0");
 	std::vector<std::string> mode_names{"emulate", "send"};
 	TCLAP::ValuesConstraint<std::string> modes(mode_names);
 	TCLAP::UnlabeledValueArg<std::string> mode("command", "emulate | send", true, "", &modes, cmd);
@@ -54,8 +56,8 @@ void SerialApp::initialize(const std::vector<std::string>& args)
 	TCLAP::ValueArg<int> baud_arg("", "baud", "send: line speed", false, 9600, "B", cmd);
 	TCLAP::ValueArg<int> tmo("", "timeout-ms", "send: reply timeout per attempt", false, 500, "T",
 	                         cmd);
-	TCLAP::ValueArg<int> rtr("", "retries", "send: resends after the first attempt", false, 3,
-	                         "R", cmd);
+	TCLAP::ValueArg<int> rtr("", "retries", "send: resends after the first attempt", false, 3, "R",
+	                         cmd);
 	try
 	{
 		if (!parseTclap(cmd, args))

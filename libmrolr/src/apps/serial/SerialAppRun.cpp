@@ -22,7 +22,10 @@ namespace
 {
 std::atomic<bool> g_interrupted{false};
 
-void onSignal(int) { g_interrupted = true; }
+void onSignal(int)
+{
+	g_interrupted = true;
+}
 
 mrpt::config::CConfigFile openConfig(const std::string& file)
 {
@@ -52,8 +55,9 @@ struct SimDevices
 	SimDevices(const mrpt::config::CConfigFileBase& sim, const mrpt::config::CConfigFileBase& lab)
 	    : model(load<base::LabmateOptions>(lab, "labmate")),
 	      base(model, load<sim::SimBaseOptions>(sim, "sim_base")),
-	      head(renderer, scene, [] { return Eigen::Isometry3d::Identity(); },
-	           load<sim::SimHeadOptions>(sim, "sim_head")),
+	      head(
+	          renderer, scene, [] { return Eigen::Isometry3d::Identity(); },
+	          load<sim::SimHeadOptions>(sim, "sim_head")),
 	      arm([](const hw::ArmJoints&) { return Eigen::Isometry3d::Identity(); },
 	          load<sim::SimArmOptions>(sim, "sim_arm"), objects)
 	{
@@ -64,7 +68,8 @@ bool keepRunning(double seconds, std::chrono::steady_clock::time_point start)
 {
 	if (g_interrupted) return false;
 	if (seconds <= 0) return true;
-	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds;
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
+	       seconds;
 }
 }  // namespace
 

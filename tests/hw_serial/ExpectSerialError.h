@@ -1,0 +1,21 @@
+#pragma once
+// Runs a callable that must throw SerialDeviceError and returns the error for inspection.
+#include <mrolr/hw_serial/SerialError.h>
+
+#include <gtest/gtest.h>
+
+template <typename Fn>
+mrolr::hw::SerialDeviceError expectSerialError(Fn fn)
+{
+	try
+	{
+		fn();
+	}
+	catch (const mrolr::hw::SerialDeviceError& e)
+	{
+		return e;
+	}
+	ADD_FAILURE() << "no SerialDeviceError";
+	return mrolr::hw::SerialDeviceError(mrolr::hw::SerialDeviceError::Kind::Refused, "", "",
+	                                    "none");
+}
