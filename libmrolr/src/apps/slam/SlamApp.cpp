@@ -20,6 +20,9 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	                                    cmd);
 	TCLAP::SwitchArg liveArg(
 	    "", "live", "run on the simulator: drive the waypoints, measure with the head", cmd);
+	TCLAP::ValueArg<std::string> headArg(
+	    "", "head", "synthetic (textured points) or lab (rendered lab, sim::SimHead)", false,
+	    "synthetic", "KIND", cmd);
 	TCLAP::ValueArg<std::string> knownArg(
 	    "", "known",
 	    "with --acquire-known: comma-separated landmark names (default: the world's known)", false,
@@ -41,6 +44,9 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	world_path = world.getValue(), config_path = config.getValue(), rawlog_path = rawlog.getValue();
 	out_dir = out.getValue(), live = liveArg.getValue(), json = js.getValue();
 	acquire_known = acquireArg.getValue();
+	head_kind = headArg.getValue();
+	if (head_kind != "synthetic" && head_kind != "lab")
+		throw util::UsageError("--head: '" + head_kind + "' is neither synthetic nor lab");
 	known_names = util::splitFields(knownArg.getValue());
 	if (int(live) + int(acquire_known) + int(!rawlog_path.empty()) != 1)
 		throw util::UsageError("give exactly one of --live, --acquire-known and --rawlog FILE");

@@ -7,6 +7,7 @@
 #include <mrolr/vision/KnownFeatures.h>
 #include <mrolr/vision/SyntheticWorld.h>
 #include <mrolr/world/World.h>
+#include "LiveHeads.h"
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -57,15 +58,6 @@ LiveSetup loadSetup(const std::string& config_path)
 	return s;
 }
 
-std::vector<vision::TexturedLandmark> texturedLandmarks(const world::World& w, int texture_px)
-{
-	std::vector<vision::TexturedLandmark> out;
-	for (size_t i = 0; i < w.landmarks.size(); ++i)
-		out.push_back({w.landmarks[i].name, w.landmarks[i].p_LinW,
-		               vision::makeTexture(texture_px, 1000 + i)});
-	return out;
-}
-
 /** The true wheels: noisy, and the left wheel slips during bursts. */
 class TrueWheels
 {
@@ -93,7 +85,7 @@ class TrueWheels
 
 /** Acquires a known landmark the way the thesis did (5.6.2): fixate it from the start pose, lock
  * on, and store its patch. Throws when lock-on fails, since the map would lack its anchor. */
-cv::Mat acquireKnownPatch(vision::SyntheticWorld& device, const geometry::BiSightHead& head,
+cv::Mat acquireKnownPatch(LiveHead& device, const geometry::BiSightHead& head,
                           const Eigen::Vector3d& p_inC0, const vision::VisionOptions& o,
                           const std::string& name)
 {
@@ -120,8 +112,7 @@ std::string knownFeaturesPath(const world::World& w)
 
 /** The landmarks @p names (default: those flagged known in the world), fixated from @p x0 with the
  * head of @p device (5.6.2). Throws for a name that is not a landmark of the world. */
-std::vector<vision::KnownFeature> acquireKnown(const world::World& w,
-                                               vision::SyntheticWorld& device,
+std::vector<vision::KnownFeature> acquireKnown(const world::World& w, LiveHead& device,
                                                const geometry::BiSightHead& head,
                                                const LiveSetup& s, const Eigen::Vector3d& x0,
                                                const std::vector<std::string>& names = {})
@@ -148,8 +139,9 @@ void SlamApp::runAcquireKnown(std::ostream& out)
 	const LiveSetup s = loadSetup(config_path);
 	const world::World w = world::World::load(world_path);
 	const geometry::BiSightHead head(s.bisight);
-	vision::SyntheticWorld device(head, texturedLandmarks(w, s.run.texture_size_px),
-	                              s.run.image_noise_grey, s.run.seed);
+	const auto head_device =
+	    makeLiveHead(head_kind, w, head, s.run.texture_size_px, s.run.image_noise_grey, s.run.seed);
+	LiveHead& device = *head_device;
 	const Eigen::Vector3d x0 = startPose(w);
 	device.setVehicle(x0);
 	const auto known = acquireKnown(w, device, head, s, x0, known_names);
@@ -159,13 +151,21 @@ void SlamApp::runAcquireKnown(std::ostream& out)
 
 namespace
 {
-void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w,
-                      vision::SyntheticWorld& device, const geometry::BiSightHead& head,
-                      const LiveSetup& s, const Eigen::Vector3d& x0)
+void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w, LiveHead& device,
+                      const geometry::BiSightHead& head, const LiveSetup& s,
+                      const Eigen::Vector3d& x0, const std::string& head_kind)
 {
 	const std::string path = knownFeaturesPath(w);
-	const auto known = std::filesystem::exists(path) ? vision::loadKnownFeatures(path)
-	                                                 : acquireKnown(w, device, head, s, x0);
+	std::vector<vision::KnownFeature> known;
+	if (std::filesystem::exists(path)) known = vision::loadKnownFeatures(path);
+	// The stored patches come from the synthetic head; the rendered lab looks different, so there
+	// the same features are re-acquired by fixation from the start pose.
+	if (head_kind != "synthetic" || known.empty())
+	{
+		std::vector<std::string> ids;
+		for (const auto& f : known) ids.push_back(f.id);
+		known = acquireKnown(w, device, head, s, x0, ids);
+	}
 	for (const auto& f : known) vslam.addKnownFeature(f.id, f.p_FinW, f.patch);
 }
 }  // namespace
@@ -176,14 +176,15 @@ void SlamApp::runLive()
 	const world::World w = world::World::load(world_path);
 	const geometry::BiSightHead head(s.bisight);
 	const base::LabmateModel model(s.labmate);
-	vision::SyntheticWorld device(head, texturedLandmarks(w, s.run.texture_size_px),
-	                              s.run.image_noise_grey, s.run.seed);
+	const auto head_device =
+	    makeLiveHead(head_kind, w, head, s.run.texture_size_px, s.run.image_noise_grey, s.run.seed);
+	LiveHead& device = *head_device;
 	const Eigen::Vector3d x0 = startPose(w);
 	slam::ActiveSlamFilter filter(s.slam, model);
 	filter.reset(x0);
 	device.setVehicle(x0);
 	vision::VisualSlam vslam(filter, head, s.vision);
-	addKnownFeatures(vslam, w, device, head, s, x0);
+	addKnownFeatures(vslam, w, device, head, s, x0, head_kind);
 	TrueWheels wheels(s.run);
 	Eigen::Vector3d x_true = x0, x_dr = x0;
 	auto log = [&](vision::CycleRecord rec)

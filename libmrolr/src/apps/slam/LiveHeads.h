@@ -1,0 +1,29 @@
+#pragma once
+// The heads mrolr-slam --live can drive: the synthetic textured-point head (vision area) or the
+// simulator's rendered lab (sim::SimHead over sim::StereoRenderer), both told the true vehicle
+// pose.
+#include <mrolr/vision/StereoHeadDevice.h>
+#include <mrolr/vision/SyntheticWorld.h>
+#include <mrolr/world/World.h>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+
+namespace mrolr::apps
+{
+/** A StereoHeadDevice on a vehicle whose true pose the simulation sets. */
+class LiveHead : public vision::StereoHeadDevice
+{
+ public:
+	virtual void setVehicle(const Eigen::Vector3d& x_true) = 0;
+};
+
+/** "synthetic" (textured points, @p texture_px, @p noise_grey, @p seed) or "lab" (CFBORender of the
+ * world's room, patches, tables and objects); throws std::invalid_argument for another name. */
+std::unique_ptr<LiveHead> makeLiveHead(const std::string& kind, const world::World& w,
+                                       const geometry::BiSightHead& head, int texture_px,
+                                       double noise_grey, unsigned seed);
+
+}  // namespace mrolr::apps
