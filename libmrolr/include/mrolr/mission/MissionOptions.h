@@ -1,0 +1,132 @@
+#pragma once
+/** Everything a mission reads from its configuration (config/mission_sim.ini, docs/mission.md):
+ * the world, the target, the route, the navigation mode, the search stations, the devices and the
+ * files of the robot's models. Relative file names are resolved against the mission file's
+ * folder. Every key is checked before anything moves; errors name file, section and key. */
+#include <mrolr/arm/GraspChain.h>
+#include <mrolr/arm/GraspFeasibility.h>
+#include <mrolr/arm/RtxOptions.h>
+#include <mrolr/base/LabmateModel.h>
+#include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/geometry/BiSightOptions.h>
+#include <mrolr/recog/RecognitionOptions.h>
+#include <mrolr/sim/SimArm.h>
+#include <mrolr/sim/SimBase.h>
+#include <mrolr/slam/SlamOptions.h>
+#include <mrolr/world/World.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <Eigen/Core>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mrolr::mission
+{
+enum class NavigationMode
+{
+	Slam,  ///< active-vision EKF-SLAM (thesis 5.4–5.7)
+	DeadReckoning  ///< wheel odometry only
+};
+
+/** A named vehicle pose (z, x in m, φ in rad) in W: a waypoint or a search station. */
+struct NamedPose
+{
+	std::string name;
+	Eigen::Vector3d xv_zxphi = Eigen::Vector3d::Zero();
+};
+
+/** Section [navigation]: the simulated head's landmark measurements (ideal-head angles of eq
+ * 5.40 plus Gaussian noise) and the waypoint tolerances. */
+struct NavigationOptions
+{
+	int measurements_per_step = 2;  ///< features measured after each motion step
+	int min_mapped_visible = 3;  ///< a new feature is initialised while fewer are visible
+	double max_range_m = 8;
+	double true_std_pan_rad = 0.002, true_std_elevation_rad = 0.01, true_std_vergence_rad = 0.002;
+	double measurement_time_s = 1.0;  ///< simulated time per measurement (saccade + search)
+	double waypoint_tolerance_m = 0.03;  ///< correction legs until the estimate is this close
+	int max_correction_legs = 3;
+	double table_clearance_m = 0.45;  ///< distance kept from a table edge when going round it
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** Section [search]: the pan sweep at a station (thesis 7.2.2) and the simulated scene
+ * wire-frame sensor's imperfections (mm). */
+struct SearchOptions
+{
+	double gaze_tilt_deg = -20;  ///< tilt while searching (negative: down)
+	double pan_from_deg = -20, pan_to_deg = 20, pan_step_deg = 10;
+	double head_move_time_s = 1.0;  ///< simulated time per sweep position (move + grab)
+	double endpoint_sigma_mm = 1.0;
+	double missing_fraction = 0.15;
+	double fragment_probability = 0.1;
+	bool hide_back_side = true;
+	double max_object_range_m = 2.0;  ///< objects further from C0 are not reconstructed
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** Section [retrieval]: the reach, verification and carry motions (mm) and simulated times. */
+struct RetrievalOptions
+{
+	double approach_mm = 100;  ///< pre-grasp stand-off along the approach axis z_G
+	double lift_mm = 120;  ///< lift after closing the gripper
+	double arm_move_time_s = 3.0;  ///< simulated time per arm move
+	bool visual_verification = true;  ///< re-observe and correct before closing (beyond 7.2.2)
+	/** 0: only the model's grasp line; > 0: if it is infeasible, also the grasp turned about O's
+	 * vertical axis in steps of this (for objects symmetric about it), smallest turn first. */
+	double grasp_yaw_search_deg = 0;
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** The whole mission configuration. */
+struct MissionOptions
+{
+	std::string config_path;  ///< the mission file itself
+	std::string name = "mission";  ///< [mission] name: used in the output folder name
+	std::string world_file;  ///< resolved path of maps/<world>/world.ini
+	world::World world;  ///< as loaded from world_file
+	std::string target;  ///< model to fetch, datasets/objects/<target>.ini (default: the model of
+	                     ///< the world's mission target)
+	std::string target_model_file;  ///< resolved object definition of the target
+	std::vector<std::string> route;  ///< waypoint names driven before searching ("world" = all)
+	std::string home_waypoint;  ///< default: the world's home waypoint
+	std::vector<NamedPose> stations;  ///< search stations in order (names or "z x phi_deg")
+	NavigationMode mode = NavigationMode::Slam;
+	bool obstacle_mode = false;
+	unsigned seed = 1;
+	double home_tolerance_m = 0.10;  ///< returned_home when the true pose is this close
+
+	base::LabmateOptions labmate;
+	base::TrajectoryOptions trajectory;
+	geometry::BiSightOptions bisight;
+	slam::SlamOptions slam;
+	recog::RecognitionOptions recognition = recog::RecognitionOptions::defaults();
+	arm::RtxOptions rtx;
+	arm::GraspFeasibilityOptions grasp;
+	arm::ArmMount dock;  ///< known T_C0inA of the simulated docking (section [arm_mount])
+	sim::SimBaseOptions sim_base;
+	sim::SimArmOptions sim_arm;
+	NavigationOptions navigation;
+	SearchOptions search;
+	RetrievalOptions retrieval;
+
+	/** Reads @p path and every file it names; throws util::ConfigError (file, section, key). */
+	static MissionOptions load(const std::string& path);
+	/** As load(), from an already open configuration (for tests that override keys); relative
+	 * file names are resolved against @p base_dir. */
+	static MissionOptions fromConfig(
+	    const mrpt::config::CConfigFileBase& cfg, const std::string& base_dir);
+	void dump(std::ostream& out) const;
+};
+
+/** Device drivers: `driver = sim | serial` in [device.base], [device.head], [device.arm]. Only
+ * `sim` exists so far: `serial` throws util::ConfigError naming the key ("not available yet"),
+ * anything else names the accepted values. */
+void checkDeviceDrivers(const mrpt::config::CConfigFileBase& cfg);
+
+}  // namespace mrolr::mission

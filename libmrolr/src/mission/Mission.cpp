@@ -1,0 +1,206 @@
+// The mission's state machine (thesis fig 5.8.1.5) on the simulated devices.
+#include <mrolr/arm/RtxKinematics.h>
+#include <mrolr/geometry/Frames.h>
+#include <mrolr/mission/Mission.h>
+#include <mrolr/sim/ObjectWireFrame.h>
+#include <mrolr/sim/SceneBuilder.h>
+#include <mrolr/sim/SimArm.h>
+#include <mrolr/sim/SimBase.h>
+#include <mrolr/world/ObjectShape.h>
+
+#include <cmath>
+
+namespace mrolr::mission
+{
+namespace
+{
+std::map<std::string, model::WireFrame> loadModels(const MissionOptions& o)
+{
+	std::map<std::string, model::WireFrame> out;
+	for (const auto& [name, shape] : sim::loadObjectShapes(o.world))
+		out[name] = sim::objectWireFrame(shape);
+	if (!out.count(o.target))
+		out[o.target] = sim::objectWireFrame(world::ObjectShape::load(o.target_model_file));
+	return out;
+}
+
+NamedPose waypoint(const MissionOptions& o, const std::string& name)
+{
+	const auto* w = o.world.findWaypoint(name);
+	return {w->name, {w->z_m, w->x_m, w->phi_rad}};
+}
+
+Eigen::Isometry3d metres(Eigen::Isometry3d T_mm)
+{
+	T_mm.translation() /= 1000.0;
+	return T_mm;
+}
+}  // namespace
+
+struct Mission::Impl
+{
+	const MissionOptions& o;
+	MissionResult r;
+	std::map<std::string, model::WireFrame> models;
+	std::map<std::string, Eigen::Isometry3d> poses;  ///< true object poses (sim::SimArm moves them)
+	sim::SimBase base;
+	std::mt19937 rng;
+	std::unique_ptr<Navigator> nav;
+	std::unique_ptr<ObjectSearch> search;
+	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
+	std::string carried;  ///< instance standing on the base after retrieval
+	Eigen::Isometry3d T_OinC0_carried = Eigen::Isometry3d::Identity();  ///< m
+
+	explicit Impl(const MissionOptions& opts)
+	    : o(opts), base(base::LabmateModel(opts.labmate), opts.sim_base, start(opts)),
+	      rng(opts.seed + 7)
+	{
+	}
+	static Eigen::Vector3d start(const MissionOptions& opts)
+	{
+		return opts.route.empty() ? Eigen::Vector3d::Zero() : waypoint(opts, opts.route[0]).xv_zxphi;
+	}
+	Eigen::Isometry3d trueC0() const
+	{
+		return geometry::T_C0inW(base.truePose(), o.bisight.head_height_m);
+	}
+	WorldObjects objects() const
+	{
+		WorldObjects out;
+		for (const auto& p : o.world.objects) out[p.name] = {p.model, poses.at(p.name)};
+		return out;
+	}
+	void loadTarget();
+	void navigate();
+	bool searchStation(const NamedPose& station);
+	void retrieve();
+	void goHome();
+	void finish();
+	double tableHeightNear(const Eigen::Vector3d& p_W) const;
+};
+
+void Mission::Impl::loadTarget()
+{
+	r.timeline.beginStage("load_target");
+	ComputeTimer t(r.timeline);
+	models = loadModels(o);
+	for (const auto& p : o.world.objects) poses[p.name] = placedObjects(o.world).at(p.name).T_OinW;
+	search = std::make_unique<ObjectSearch>(o, models.at(o.target), models);
+	r.timeline.note("target model " + o.target + ": " +
+	                std::to_string(models.at(o.target).lines.size()) + " lines, " +
+	                std::to_string(models.at(o.target).conics.size()) + " conics");
+}
+
+void Mission::Impl::navigate()
+{
+	r.timeline.beginStage("navigate");
+	nav = std::make_unique<Navigator>(o, base, [this] { return base.truePose(); }, r.timeline);
+	nav->on_step = [this](const PathSample& s)
+	{
+		if (!carried.empty()) poses[carried] = trueC0() * T_OinC0_carried;
+		if (progress && *progress) (*progress)(r.timeline.stage(), s);
+	};
+	for (size_t i = 1; i < o.route.size(); ++i) nav->driveTo(waypoint(o, o.route[i]));
+}
+
+bool Mission::Impl::searchStation(const NamedPose& station)
+{
+	r.timeline.beginStage("navigate");
+	nav->driveTo(station);
+	r.timeline.beginStage("search");
+	++r.stations_searched;
+	r.search = search->sweep(objects(), trueC0(), rng, r.timeline);
+	r.search_xv_true = base.truePose();
+	r.timeline.note(station.name + ": " + (r.search.found ? "found" : "not found"));
+	if (r.search.found) r.found_at_station = station.name;
+	return r.search.found;
+}
+
+double Mission::Impl::tableHeightNear(const Eigen::Vector3d& p_W) const
+{
+	double best = 1e9, h = 0;
+	for (const auto& t : o.world.tables)
+		if (const double d = std::hypot(t.z_m - p_W.z(), t.x_m - p_W.x()); d < best)
+			best = d, h = t.top_height_m;
+	return h;
+}
+
+void Mission::Impl::retrieve()
+{
+	r.timeline.beginStage("retrieve");
+	// Simulated docking: the arm base stands at the known T_C0inA from the true head centre.
+	const Eigen::Isometry3d T_AinW = trueC0() * metres(o.dock.T_C0inA.inverse());
+	arm::RtxKinematics kin(o.rtx);
+	auto T_GinW = [T_AinW, kin](const hw::ArmJoints& j)
+	{ return T_AinW * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
+	sim::SimArm arm(T_GinW, o.sim_arm, poses);
+	const auto angles = r.search.angles;
+	auto reobserve = [&]() -> std::optional<Eigen::Isometry3d>
+	{
+		r.timeline.advance(o.search.head_move_time_s);
+		const auto s = search->observe(objects(), trueC0(), angles, rng, r.timeline);
+		return s.found ? std::optional(s.T_OinC0) : std::nullopt;
+	};
+	const Eigen::Vector3d p_OinW = (trueC0() * metres(r.search.T_OinC0)).translation();
+	Retrieval retrieval(o, models.at(o.target));
+	r.retrieval = retrieval.run(r.search.T_OinC0, tableHeightNear(p_OinW), arm, reobserve,
+	                            [&] { return arm.grasped(); }, r.timeline);
+	r.retrieved = r.retrieval.retrieved && arm.grasped() == r.search.instance;
+	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
+	if (!r.retrieved) return;
+	carried = arm.grasped();  // placed on the base (thesis 7.2.2)
+	T_OinC0_carried = trueC0().inverse() * poses.at(carried);
+	r.timeline.note("object " + carried + " placed on the base");
+}
+
+void Mission::Impl::goHome()
+{
+	r.timeline.beginStage("return_home");
+	nav->driveTo(waypoint(o, o.home_waypoint));
+	r.timeline.endStage();
+}
+
+void Mission::Impl::finish()
+{
+	r.home = waypoint(o, o.home_waypoint).xv_zxphi;
+	const Eigen::Vector3d truth = base.truePose();
+	r.final_position_error_m = (truth.head<2>() - r.home.head<2>()).norm();
+	r.final_heading_error_deg = std::abs(base::wrapAngle(truth.z() - r.home.z())) * 180 / M_PI;
+	r.final_estimate_error_m = (nav->estimate().head<2>() - truth.head<2>()).norm();
+	r.dead_reckoning_error_m = (base.odometry().xv_zxphi.head<2>() - truth.head<2>()).norm();
+	r.returned_home = r.final_position_error_m <= o.home_tolerance_m;
+	r.path = nav->path();
+	r.map = nav->map();
+	r.measurements = nav->measurements;
+	r.measurements_rejected = nav->rejected;
+	r.final_objects = objects();
+	r.success = r.found && r.retrieved && r.returned_home;
+	if (r.failure.empty() && !r.found)
+		r.failure = "target '" + o.target + "' not found at any of " +
+		            std::to_string(r.stations_searched) + " search stations";
+	if (r.failure.empty() && !r.returned_home) r.failure = "did not return home within tolerance";
+}
+
+Mission::Mission(const MissionOptions& o) : impl_(std::make_unique<Impl>(o)) {}
+Mission::~Mission() = default;
+
+MissionResult Mission::run()
+{
+	auto& m = *impl_;
+	m.progress = &on_progress;
+	m.r.target = m.o.target;
+	m.loadTarget();
+	m.navigate();
+	for (const auto& station : m.o.stations)
+		if ((m.r.found = m.searchStation(station))) break;
+	if (m.r.found)
+	{
+		m.r.found_instance = m.r.search.instance;
+		m.retrieve();
+	}
+	m.goHome();
+	m.finish();
+	return m.r;
+}
+
+}  // namespace mrolr::mission

@@ -1,0 +1,138 @@
+// Grasp planning, checking, reaching, visual verification and lifting (thesis 6.6–6.7, 7.2.2).
+#include <mrolr/arm/GraspChain.h>
+#include <mrolr/mission/Retrieval.h>
+
+#include <cmath>
+
+namespace mrolr::mission
+{
+namespace
+{
+Eigen::Isometry3d shifted(const Eigen::Isometry3d& T, const Eigen::Vector3d& d_mm_in_A)
+{
+	Eigen::Isometry3d out = T;
+	out.translation() += d_mm_in_A;
+	return out;
+}
+
+/** The pre-grasp pose: @p back_mm behind the grasp along the approach axis z_G. */
+Eigen::Isometry3d preGrasp(const Eigen::Isometry3d& T_GinA, double back_mm)
+{
+	return T_GinA * Eigen::Translation3d(0, 0, -back_mm);
+}
+}  // namespace
+
+Retrieval::Retrieval(const MissionOptions& o, const model::WireFrame& target)
+    : o_(o), target_(target), ik_(o.rtx)
+{
+}
+
+double Retrieval::tableZinA(double top_height_m) const
+{
+	const double y_mm = 1000.0 * (top_height_m - o_.bisight.head_height_m);
+	return (o_.dock.T_C0inA * Eigen::Vector3d(0, y_mm, 0)).z();
+}
+
+arm::GraspCheck Retrieval::check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
+                                 double table_z_mm) const
+{
+	const auto pts = arm::sampleWireFrame(target_, T_OinA, o_.grasp.sample_step_mm);
+	return arm::checkGrasp(T_GinA, pts, {}, table_z_mm, ik_, o_.grasp);
+}
+
+Eigen::Isometry3d Retrieval::graspInObject(double turn_deg) const
+{
+	return Eigen::AngleAxisd(turn_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()) *
+	       arm::graspInObject(target_.grasp);
+}
+
+bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
+{
+	std::vector<double> turns{0};
+	const double step = o_.retrieval.grasp_yaw_search_deg;
+	for (int k = 1; step > 0 && k * step < 180 + 1e-9; ++k) turns.insert(turns.end(), {k * step, -k * step});
+	for (double turn : turns)
+	{
+		const Eigen::Isometry3d T_GinA = r.T_OinA * graspInObject(turn);
+		const auto c = check(r.T_OinA, T_GinA, table_z_mm);
+		if (turn == 0) r.reasons = c.reasons, r.T_GinA = T_GinA;
+		if (!c.feasible()) continue;
+		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = c.solutions.front().joints;
+		r.reasons.clear();
+		return true;
+	}
+	if (turns.size() > 1) r.reasons.push_back("no feasible grasp at any turn about the vertical");
+	return false;
+}
+
+std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA) const
+{
+	const auto r = ik_.solve(T_GinA);
+	if (r.solutions.empty()) return std::nullopt;
+	return r.solutions.front().joints;
+}
+
+void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
+{
+	arm.moveTo(j.toMmDeg());
+	timeline.advance(o_.retrieval.arm_move_time_s);
+}
+
+RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
+                               hw::ArmDevice& arm,
+                               const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+                               const std::function<std::string()>& grasped,
+                               Timeline& timeline) const
+{
+	RetrievalResult r;
+	{
+		ComputeTimer t(timeline);
+		r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
+		r.feasible = planGrasp(r, tableZinA(table_top_height_m));
+	}
+	if (!r.feasible) return r;
+	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
+	r.attempted = true;
+	if (!reachAndVerify(r, arm, reobserve, timeline)) return r;
+	arm.setGripper(true);
+	timeline.note("gripper closed");
+	if (const auto lift = solve(shifted(r.T_GinA, {0, 0, o_.retrieval.lift_mm})))
+		moveTo(arm, *lift, timeline);
+	else
+		r.reasons.push_back("no IK solution for the lift pose");
+	r.grasped = grasped();
+	r.retrieved = !r.grasped.empty();
+	if (!r.retrieved) r.reasons.push_back("the gripper closed on nothing");
+	return r;
+}
+
+bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
+                               const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+                               Timeline& timeline) const
+{
+	arm.setGripper(false);
+	const auto pre = solve(preGrasp(r.T_GinA, o_.retrieval.approach_mm));
+	if (!pre)
+	{
+		r.reasons.push_back("no IK solution for the pre-grasp pose");
+		return false;
+	}
+	moveTo(arm, *pre, timeline);
+	if (o_.retrieval.visual_verification)
+		if (const auto T_OinC0 = reobserve())
+		{
+			const Eigen::Isometry3d T_GinA = arm::objectInArm(o_.dock.T_C0inA, *T_OinC0) *
+			                                 graspInObject(r.grasp_turn_deg);
+			const auto j = solve(T_GinA);
+			r.verified = true;
+			r.correction_mm = (T_GinA.translation() - r.T_GinA.translation()).norm();
+			r.correction_deg = Eigen::AngleAxisd(T_GinA.linear().transpose() * r.T_GinA.linear())
+			                       .angle() * 180.0 / M_PI;
+			if (j) r.T_GinA = T_GinA, r.joints = *j;
+		}
+	moveTo(arm, r.joints, timeline);
+	timeline.note("at grasp pose (correction " + std::to_string(r.correction_mm) + " mm)");
+	return true;
+}
+
+}  // namespace mrolr::mission

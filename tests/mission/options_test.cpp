@@ -1,0 +1,81 @@
+// The mission configuration is checked before anything moves, and errors name section and key.
+#include "MissionTestConfig.h"
+
+#include <mrolr/util/Config.h>
+
+#include <gtest/gtest.h>
+
+using namespace mrolr::mission;
+using mrolr::util::ConfigError;
+
+namespace
+{
+/** The message of the ConfigError that loading @p cfg throws ("" if none). */
+std::string errorOf(const mrpt::config::CConfigFileBase& cfg)
+{
+	try
+	{
+		test::optionsFrom(cfg);
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+
+void expectError(const std::string& section, const std::string& key, const std::string& value,
+                 const std::string& fragment)
+{
+	auto cfg = test::defaultMissionConfig();
+	cfg.write(section, key, value);
+	const auto msg = errorOf(cfg);
+	EXPECT_NE(msg.find("[" + section + "] " + key), std::string::npos) << msg;
+	EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+}
+}  // namespace
+
+TEST(MissionOptions, DefaultConfigLoads)
+{
+	const auto o = test::optionsFrom(test::defaultMissionConfig());
+	EXPECT_EQ(o.target, "cup");
+	EXPECT_EQ(o.mode, NavigationMode::Slam);
+	ASSERT_EQ(o.stations.size(), 2u);
+	EXPECT_EQ(o.stations[0].name, "W5");
+	EXPECT_NEAR(o.stations[1].xv_zxphi.z(), M_PI, 1e-12);
+	EXPECT_EQ(o.home_waypoint, "W6");
+	EXPECT_FALSE(o.world.objects.empty());
+}
+
+TEST(MissionOptions, SerialDriverIsNotAvailableYet)
+{
+	expectError("device.arm", "driver", "serial", "not available yet");
+}
+
+TEST(MissionOptions, UnknownDriverNamesTheChoices)
+{
+	expectError("device.base", "driver", "usb", "sim, serial");
+}
+
+TEST(MissionOptions, BadModeTargetWaypointAndStation)
+{
+	expectError("mission", "mode", "fast", "slam or dead_reckoning");
+	expectError("mission", "target", "teapot", "no model 'teapot'");
+	expectError("mission", "route", "W0 W99", "no waypoint 'W99'");
+	expectError("mission", "search_stations", "W5; 1 2", "neither a waypoint name");
+	expectError("mission", "obstacle_mode", "true", "not available yet");
+}
+
+TEST(MissionOptions, MalformedNumbersAndMissingKeys)
+{
+	expectError("navigation", "max_range_m", "far", "max_range_m");
+	expectError("search", "pan_step_deg", "0", "pan_step_deg");
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("mission", "world_file", "../maps/nowhere/world.ini");
+	EXPECT_NE(errorOf(cfg) + "x", "x");  // WorldError or ConfigError, never silence
+}
+
+TEST(MissionOptions, MissingFileNamesTheKey)
+{
+	expectError("files", "arm_file", "no_such_arm.ini", "cannot open");
+}

@@ -1,0 +1,128 @@
+// Whole simulated missions: target present (through the app, with its outputs), target absent,
+// object out of the arm's reach, and a bad configuration that stops before anything moves.
+#include "MissionTestConfig.h"
+
+#include <mrolr/apps/MissionApp.h>
+#include <mrolr/mission/Mission.h>
+#include <mrolr/util/Config.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+using namespace mrolr;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string tempDir(const std::string& name)
+{
+	const auto d = fs::temp_directory_path() / ("mrolr_mission_test_" + name);
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+/** The lab world without the cup, written to a temporary folder. */
+std::string worldWithoutCup()
+{
+	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/maps/lab/world.ini");
+	std::stringstream s;
+	s << f.rdbuf();
+	std::string text = std::regex_replace(s.str(), std::regex("\\[object\\.cup\\][^\\[]*"), "");
+	text = std::regex_replace(text, std::regex("objects_dir = [^\\n]*"),
+	                          "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
+	text = std::regex_replace(text, std::regex("target = cup"), "target = can");
+	const auto path = tempDir("absent") + "/world.ini";
+	std::ofstream(path) << text;
+	return path;
+}
+
+Eigen::Vector3d cupStart(const mission::MissionOptions& o)
+{
+	return mission::placedObjects(o.world).at("cup").T_OinW.translation();
+}
+}  // namespace
+
+TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
+{
+	const auto dir = tempDir("present");
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_sim.ini", "--out",
+	                dir, "--quiet", "--json"});
+	std::ostringstream out, progress;
+	EXPECT_EQ(app.run(out, progress), 0) << out.str();
+	const auto& r = app.result;
+	EXPECT_TRUE(r.found);
+	EXPECT_EQ(r.found_instance, "cup");
+	EXPECT_TRUE(r.retrieved);
+	EXPECT_TRUE(r.returned_home);
+	EXPECT_LT(r.final_position_error_m, app.options.home_tolerance_m);
+	EXPECT_LT(r.search.translation_error_mm, 15.0);
+	EXPECT_LT(r.search.rotation_error_deg, 5.0);
+	EXPECT_TRUE(r.retrieval.verified);
+	// The cup came home with the robot: it is now within a metre of home, not on the table.
+	const Eigen::Vector3d p = r.final_objects.at("cup").T_OinW.translation();
+	EXPECT_LT(std::hypot(p.z() - r.home.x(), p.x() - r.home.y()), 1.0);
+	EXPECT_GT((p - cupStart(app.options)).norm(), 0.5);
+	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
+	for (const char* key :
+	     {"success", "target", "found", "retrieved", "returned_home", "final_position_error_m",
+	      "object_rotation_error_deg", "object_translation_error_mm", "grasp_correction_mm",
+	      "stages", "compute_seconds", "simulated_seconds", "T_OinA", "timeline"})
+		EXPECT_TRUE(j.contains(key)) << key;
+	EXPECT_TRUE(j["success"].get<bool>());
+	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
+		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
+}
+
+TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
+{
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("mission", "world_file", worldWithoutCup());
+	const auto o = test::optionsFrom(cfg);
+	mission::Mission m(o);
+	const auto r = m.run();
+	EXPECT_FALSE(r.found);
+	EXPECT_FALSE(r.retrieved);
+	EXPECT_FALSE(r.success);
+	EXPECT_EQ(r.stations_searched, static_cast<int>(o.stations.size()));
+	EXPECT_FALSE(r.retrieval.attempted);
+	EXPECT_TRUE(r.returned_home);
+	EXPECT_NE(r.failure.find("not found"), std::string::npos) << r.failure;
+}
+
+TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
+{
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("arm_mount", "T_C0inA", "0 0 1 -1500    1 0 0 1200    0 1 0 711");
+	cfg.write("mission", "search_stations", "W5");
+	const auto o = test::optionsFrom(cfg);
+	mission::Mission m(o);
+	const auto r = m.run();
+	EXPECT_TRUE(r.found);
+	EXPECT_FALSE(r.retrieval.feasible);
+	EXPECT_FALSE(r.retrieval.attempted);
+	EXPECT_FALSE(r.retrieved);
+	ASSERT_FALSE(r.retrieval.reasons.empty());
+	EXPECT_NE(r.failure.find("not feasible"), std::string::npos) << r.failure;
+	EXPECT_LT((r.final_objects.at("cup").T_OinW.translation() - cupStart(o)).norm(), 1e-12);
+	EXPECT_TRUE(r.returned_home);
+}
+
+TEST(MissionRun, MalformedConfigStopsBeforeAnythingMoves)
+{
+	const auto dir = tempDir("malformed");
+	auto text = std::string("[mission]\nname = x\n");
+	std::ofstream(dir + "/bad.ini") << text;
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--config", dir + "/bad.ini", "--out", dir + "/out"});
+	std::ostringstream out, progress;
+	EXPECT_THROW(app.run(out, progress), util::ConfigError);
+	EXPECT_FALSE(fs::exists(dir + "/out"));
+	EXPECT_TRUE(app.result.path.empty());
+}
