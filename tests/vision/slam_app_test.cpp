@@ -72,3 +72,17 @@ TEST(SlamApp, BadArgumentsAreUsageErrors)
 	std::ostringstream out;
 	EXPECT_ANY_THROW(missing.run(out));
 }
+
+TEST(SlamApp, RenderedLabHeadBeatsDeadReckoning)
+{
+	const SlamApp app = runApp({"--head", "lab"});
+	const auto& s = app.summary;
+	EXPECT_LE(s.slam_final_position_error_m, 0.05);
+	EXPECT_GE(s.dr_final_position_error_m, 3 * s.slam_final_position_error_m);
+	EXPECT_GT(s.match_success_rate, 0.7);
+	EXPECT_GE(s.features, 4);
+	SlamApp bad;
+	EXPECT_THROW(
+		bad.initialize({"mrolr-slam", "--world", "w.ini", "--live", "--head", "cardboard"}),
+		mrolr::util::UsageError);
+}
