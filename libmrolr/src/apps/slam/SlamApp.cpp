@@ -126,8 +126,7 @@ int SlamApp::run(std::ostream& out)
 	}
 	if (!live)
 		throw std::runtime_error(
-		    "--rawlog replay is not implemented yet (needs the mrolr-sim rawlog reader); use "
-		    "--live");
+		    "--rawlog replay of mrolr-sim rawlogs is not implemented yet; use --live");
 	steps.clear();
 	summary = SlamSummary();
 	runLive();
