@@ -46,7 +46,6 @@ void DeviceEmulator::loop()
 			assembler.feed(link_.read(kPollMs));
 			AssembledLine line;
 			while (!stop_ && assembler.next(line)) serveLine(server, line);
-			executed_ = server.executed();
 		}
 	}
 	catch (const TransportClosed&)
@@ -58,17 +57,25 @@ void DeviceEmulator::loop()
 void DeviceEmulator::serveLine(ProtocolServer& server, const AssembledLine& line)
 {
 	++received_;
+	if (silent()) return;  // a hung device: neither executes nor answers
+	const std::string full = server.handleLine(line);
+	executed_ = server.executed();  // before the reply, so a host that has it sees the count
 	int delay_ms = 0;
-	const std::string reply = applyFaults(server.handleLine(line), delay_ms);
+	const std::string reply = applyFaults(full, delay_ms);
 	sleepUnlessStopped(delay_ms);
 	if (!stop_ && !reply.empty()) link_.write(reply);
+}
+
+bool DeviceEmulator::silent()
+{
+	std::lock_guard<std::mutex> lock(mutex_);
+	return faults_.silent;
 }
 
 std::string DeviceEmulator::applyFaults(std::string reply, int& delay_ms)
 {
 	std::lock_guard<std::mutex> lock(mutex_);
 	delay_ms = faults_.reply_delay_ms;
-	if (faults_.silent) return {};
 	if (faults_.garbage_replies > 0)
 	{
 		--faults_.garbage_replies;

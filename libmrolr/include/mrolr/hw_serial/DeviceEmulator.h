@@ -25,8 +25,8 @@ struct FaultOptions
 	int drop_byte_replies = 0;         ///< the next N replies lose one byte in their middle
 	int garbage_replies = 0;           ///< the next N replies are replaced by binary garbage
 	double drop_byte_probability = 0;  ///< each byte of every reply is lost with this chance
-	bool silent = false;               ///< requests are read but never answered (a hung device)
-	unsigned seed = 1;                 ///< for drop_byte_probability
+	bool silent = false;  ///< requests are read, neither executed nor answered (a hung device)
+	unsigned seed = 1;    ///< for drop_byte_probability
 };
 
 class DeviceEmulator
@@ -51,6 +51,7 @@ class DeviceEmulator
 	void loop();
 	void serveLine(ProtocolServer& server, const AssembledLine& line);
 	std::string applyFaults(std::string reply, int& delay_ms);
+	bool silent();
 	void sleepUnlessStopped(int ms) const;
 
 	ByteTransport& link_;
