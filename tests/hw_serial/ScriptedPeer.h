@@ -3,7 +3,9 @@
 // bytes and writes the scripted reply pieces, so tests can check the driver byte by byte.
 #include <mrolr/hw_serial/MemoryTransport.h>
 
+#include <atomic>
 #include <chrono>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -24,8 +26,21 @@ class ScriptedPeer
 		stop_ = true;
 		thread_.join();
 	}
-	/** Request lines received so far (with their '\n'); read after the driver call returned. */
-	const std::vector<std::string>& requests() const { return requests_; }
+	/** Request lines received (with their '\n'), once at least @p n have arrived or after 2 s: the
+	 * peer thread may still be reading the last one when the driver call returns. */
+	std::vector<std::string> requests(size_t n = 0) const
+	{
+		const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+		for (;;)
+		{
+			{
+				std::lock_guard<std::mutex> lock(mutex_);
+				if (requests_.size() >= n || std::chrono::steady_clock::now() > until)
+					return requests_;
+			}
+			std::this_thread::sleep_for(std::chrono::milliseconds(1));
+		}
+	}
 	void close() { end_->close(); }
 
  private:
@@ -39,9 +54,14 @@ class ScriptedPeer
 				buffer += end_->read(10);
 				for (size_t nl; (nl = buffer.find('\n')) != std::string::npos;)
 				{
-					requests_.push_back(buffer.substr(0, nl + 1));
+					size_t index = 0;
+					{
+						std::lock_guard<std::mutex> lock(mutex_);
+						requests_.push_back(buffer.substr(0, nl + 1));
+						index = requests_.size() - 1;
+					}
 					buffer.erase(0, nl + 1);
-					answer(requests_.size() - 1);
+					answer(index);
 				}
 			}
 		}
@@ -62,6 +82,7 @@ class ScriptedPeer
 	std::unique_ptr<mrolr::hw::MemoryTransport> end_;
 	std::vector<std::vector<std::string>> script_;
 	int gap_ms_;
+	mutable std::mutex mutex_;
 	std::vector<std::string> requests_;
 	std::atomic<bool> stop_{false};
 	std::thread thread_;
