@@ -21,13 +21,19 @@ std::string ask(ProtocolServer& server, const std::string& body)
 	EXPECT_TRUE(u.ok) << reply;
 	return u.body;
 }
+
+/** A recording base behind its protocol server. */
+class BaseProtocol : public ::testing::Test
+{
+ protected:
+	fake::Base base;
+	BaseHandler handler{base};
+	ProtocolServer server{handler};
+};
 }  // namespace
 
-TEST(ProtocolServer, BaseStepsAndReportsOdometry)
+TEST_F(BaseProtocol, BaseStepsAndReportsOdometry)
 {
-	fake::Base base;
-	BaseHandler handler(base);
-	ProtocolServer server(handler);
 	EXPECT_EQ(ask(server, "1 ID?"), "1 OK LABMATE 1");
 	EXPECT_EQ(ask(server, "2 STEP 0.2 0.1 0.5"), "2 OK");
 	ASSERT_EQ(base.steps.size(), 1u);
@@ -37,21 +43,15 @@ TEST(ProtocolServer, BaseStepsAndReportsOdometry)
 	EXPECT_EQ(ask(server, "3 ODO?"), "3 OK 0.1 0 0 10 -3 0.5");
 }
 
-TEST(ProtocolServer, ExactReplyBytes)
+TEST_F(BaseProtocol, ExactReplyBytes)
 {
-	fake::Base base;
-	BaseHandler handler(base);
-	ProtocolServer server(handler);
 	EXPECT_EQ(server.handleLine({"5 STEP 0 0 0.5*" + std::string("3B3D37F1"), false}),
 	          frameLine("5 OK"));
 	EXPECT_EQ(frameLine("5 OK"), "5 OK*695785A1\n");
 }
 
-TEST(ProtocolServer, ARepeatedRequestIsAnsweredFromTheCacheNotExecutedTwice)
+TEST_F(BaseProtocol, ARepeatedRequestIsAnsweredFromTheCacheNotExecutedTwice)
 {
-	fake::Base base;
-	BaseHandler handler(base);
-	ProtocolServer server(handler);
 	EXPECT_EQ(ask(server, "7 STEP 0.2 0.2 1"), "7 OK");
 	EXPECT_EQ(ask(server, "7 STEP 0.2 0.2 1"), "7 OK");
 	EXPECT_EQ(base.steps.size(), 1u);
@@ -60,11 +60,8 @@ TEST(ProtocolServer, ARepeatedRequestIsAnsweredFromTheCacheNotExecutedTwice)
 	EXPECT_EQ(base.steps.size(), 2u);
 }
 
-TEST(ProtocolServer, WrongFieldCountsAndBadNumbersAreBadArg)
+TEST_F(BaseProtocol, WrongFieldCountsAndBadNumbersAreBadArg)
 {
-	fake::Base base;
-	BaseHandler handler(base);
-	ProtocolServer server(handler);
 	EXPECT_EQ(ask(server, "1 STEP 0.2 0.1"), "1 ERR BADARG STEP: expected 3 numbers, got 2 fields");
 	EXPECT_EQ(ask(server, "2 STEP 0.2 0.1 0.5 9").rfind("2 ERR BADARG", 0), 0u);
 	EXPECT_EQ(ask(server, "3 STEP nan 0.1 0.5"),
@@ -89,11 +86,8 @@ TEST(ProtocolServer, UnknownCommandsAreBadCmd)
 	EXPECT_EQ(ask(as, "2 STEP 1 2 3"), "2 ERR BADCMD unknown command 'STEP' for RTX");
 }
 
-TEST(ProtocolServer, DamagedLinesGetBadLineWithoutSequenceNumber)
+TEST_F(BaseProtocol, DamagedLinesGetBadLineWithoutSequenceNumber)
 {
-	fake::Base base;
-	BaseHandler handler(base);
-	ProtocolServer server(handler);
 	const auto reply = [&](const std::string& line, bool overlong = false)
 	{
 		std::string r = server.handleLine({line, overlong});
