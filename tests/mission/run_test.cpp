@@ -52,7 +52,7 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 {
 	const auto dir = tempDir("present");
 	apps::MissionApp app;
-	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_sim.ini", "--out",
+	app.initialize({"mrolr-mission", "--config", mission::test::configDir() + "/mission_sim.ini", "--out",
 	                dir, "--quiet", "--json"});
 	std::ostringstream out, progress;
 	EXPECT_EQ(app.run(out, progress), 0) << out.str();
@@ -82,9 +82,9 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 
 TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 {
-	auto cfg = test::defaultMissionConfig();
+	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("mission", "world_file", worldWithoutCup());
-	const auto o = test::optionsFrom(cfg);
+	const auto o = mission::test::optionsFrom(cfg);
 	mission::Mission m(o);
 	const auto r = m.run();
 	EXPECT_FALSE(r.found);
@@ -98,10 +98,10 @@ TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 
 TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 {
-	auto cfg = test::defaultMissionConfig();
+	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("arm_mount", "T_C0inA", "0 0 1 -1500    1 0 0 1200    0 1 0 711");
 	cfg.write("mission", "search_stations", "W5");
-	const auto o = test::optionsFrom(cfg);
+	const auto o = mission::test::optionsFrom(cfg);
 	mission::Mission m(o);
 	const auto r = m.run();
 	EXPECT_TRUE(r.found);

@@ -54,7 +54,9 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 	for (double turn : turns)
 	{
 		const Eigen::Isometry3d T_GinA = r.T_OinA * graspInObject(turn);
-		const auto c = check(r.T_OinA, T_GinA, table_z_mm);
+		auto c = check(r.T_OinA, T_GinA, table_z_mm);
+		if (c.feasible() && !preGraspJoints(T_GinA))
+			c.reasons.push_back("no IK solution for the pre-grasp pose (behind or above the grasp)");
 		if (turn == 0) r.reasons = c.reasons, r.T_GinA = T_GinA;
 		if (!c.feasible()) continue;
 		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = c.solutions.front().joints;
@@ -63,6 +65,12 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 	}
 	if (turns.size() > 1) r.reasons.push_back("no feasible grasp at any turn about the vertical");
 	return false;
+}
+
+std::optional<arm::RtxJoints> Retrieval::preGraspJoints(const Eigen::Isometry3d& T_GinA) const
+{
+	if (auto j = solve(preGrasp(T_GinA, o_.retrieval.approach_mm))) return j;
+	return solve(shifted(T_GinA, {0, 0, o_.retrieval.approach_mm}));
 }
 
 std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA) const
@@ -111,7 +119,7 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
                                Timeline& timeline) const
 {
 	arm.setGripper(false);
-	const auto pre = solve(preGrasp(r.T_GinA, o_.retrieval.approach_mm));
+	const auto pre = preGraspJoints(r.T_GinA);
 	if (!pre)
 	{
 		r.reasons.push_back("no IK solution for the pre-grasp pose");

@@ -2,8 +2,9 @@
 /** Retrieval of a recognised object with the docked RTX arm (thesis 6.6–6.7, 7.2.2):
  *   T_OinA = T_C0inA · T_OinC0 (eq 6.7.1, T_C0inA known from the docking),
  *   T_GinA = T_OinA · T_GinO (the model's grasp line),
- * the grasp is checked (reach, opening, table, arm/GraspFeasibility.h) before the arm moves; the arm
- * goes to a pre-grasp pose approach_mm back along z_G, re-observes the object with the head and
+ * the grasp is checked (reach, opening, table, arm/GraspFeasibility.h, and a reachable pre-grasp
+ * pose) before the arm moves; the arm goes to a pre-grasp pose approach_mm back along z_G (or above
+ * the grasp when that is out of reach), re-observes the object with the head and
  * corrects the grasp (visual verification, beyond the thesis's open loop), closes the gripper and
  * lifts. An unreachable or infeasible grasp is reported with its reasons and the arm never moves. */
 #include <mrolr/arm/AnalyticIk.h>
@@ -54,6 +55,8 @@ class Retrieval
 	Eigen::Isometry3d graspInObject(double turn_deg) const;
 	/** The first feasible grasp turn (0, +s, −s, +2s, …); fills T_GinA, joints and reasons. */
 	bool planGrasp(RetrievalResult& r, double table_z_mm) const;
+	/** Joints of the pre-grasp pose: approach_mm back along z_G, else approach_mm above. */
+	std::optional<arm::RtxJoints> preGraspJoints(const Eigen::Isometry3d& T_GinA) const;
 	std::optional<arm::RtxJoints> solve(const Eigen::Isometry3d& T_GinA) const;
 	void moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const;
 	const MissionOptions& o_;
