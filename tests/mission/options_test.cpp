@@ -38,7 +38,8 @@ void expectError(const std::string& section, const std::string& key, const std::
 TEST(MissionOptions, DefaultConfigLoads)
 {
 	const auto o = test::optionsFrom(test::defaultMissionConfig());
-	EXPECT_EQ(o.target, "cup");
+	EXPECT_EQ(o.target, "alphabet_cube");
+	EXPECT_TRUE(o.world.findObject(o.target));
 	EXPECT_EQ(o.mode, NavigationMode::Slam);
 	ASSERT_EQ(o.stations.size(), 2u);
 	EXPECT_EQ(o.stations[0].name, "W5");

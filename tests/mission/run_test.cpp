@@ -27,24 +27,24 @@ std::string tempDir(const std::string& name)
 	return d.string();
 }
 
-/** The lab world without the cup, written to a temporary folder. */
-std::string worldWithoutCup()
+/** The lab world without the object @p name, written to a temporary folder. */
+std::string worldWithout(const std::string& name)
 {
 	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/maps/lab/world.ini");
 	std::stringstream s;
 	s << f.rdbuf();
-	std::string text = std::regex_replace(s.str(), std::regex("\\[object\\.cup\\][^\\[]*"), "");
+	std::string text = std::regex_replace(s.str(), std::regex("\\[object\\." + name + "\\][^\\[]*"), "");
 	text = std::regex_replace(text, std::regex("objects_dir = [^\\n]*"),
 	                          "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
-	text = std::regex_replace(text, std::regex("target = cup"), "target = can");
 	const auto path = tempDir("absent") + "/world.ini";
 	std::ofstream(path) << text;
 	return path;
 }
 
-Eigen::Vector3d cupStart(const mission::MissionOptions& o)
+/** Where the target (placed under its model's name in the lab) stands at the start. */
+Eigen::Vector3d targetStart(const mission::MissionOptions& o)
 {
-	return mission::placedObjects(o.world).at("cup").T_OinW.translation();
+	return mission::placedObjects(o.world).at(o.target).T_OinW.translation();
 }
 }  // namespace
 
@@ -58,17 +58,17 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 	EXPECT_EQ(app.run(out, progress), 0) << out.str();
 	const auto& r = app.result;
 	EXPECT_TRUE(r.found);
-	EXPECT_EQ(r.found_instance, "cup");
+	EXPECT_EQ(r.found_instance, app.options.target);
 	EXPECT_TRUE(r.retrieved);
 	EXPECT_TRUE(r.returned_home);
 	EXPECT_LT(r.final_position_error_m, app.options.home_tolerance_m);
 	EXPECT_LT(r.search.translation_error_mm, 15.0);
 	EXPECT_LT(r.search.rotation_error_deg, 5.0);
 	EXPECT_TRUE(r.retrieval.verified);
-	// The cup came home with the robot: it is now within a metre of home, not on the table.
-	const Eigen::Vector3d p = r.final_objects.at("cup").T_OinW.translation();
-	EXPECT_LT(std::hypot(p.z() - r.home.x(), p.x() - r.home.y()), 1.0);
-	EXPECT_GT((p - cupStart(app.options)).norm(), 0.5);
+	// The target came home on the base: now within 0.6 m of home, not on the table.
+	const Eigen::Vector3d p = r.final_objects.at(app.options.target).T_OinW.translation();
+	EXPECT_LT(std::hypot(p.z() - r.home.x(), p.x() - r.home.y()), 0.6);
+	EXPECT_GT((p - targetStart(app.options)).norm(), 0.5);
 	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	for (const char* key :
 	     {"success", "target", "found", "retrieved", "returned_home", "final_position_error_m",
@@ -83,7 +83,8 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 {
 	auto cfg = mission::test::defaultMissionConfig();
-	cfg.write("mission", "world_file", worldWithoutCup());
+	cfg.write("mission", "world_file",
+	          worldWithout(mission::test::optionsFrom(cfg).target));
 	const auto o = mission::test::optionsFrom(cfg);
 	mission::Mission m(o);
 	const auto r = m.run();
@@ -110,7 +111,7 @@ TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 	EXPECT_FALSE(r.retrieved);
 	ASSERT_FALSE(r.retrieval.reasons.empty());
 	EXPECT_NE(r.failure.find("not feasible"), std::string::npos) << r.failure;
-	EXPECT_LT((r.final_objects.at("cup").T_OinW.translation() - cupStart(o)).norm(), 1e-12);
+	EXPECT_LT((r.final_objects.at(o.target).T_OinW.translation() - targetStart(o)).norm(), 1e-12);
 	EXPECT_TRUE(r.returned_home);
 }
 

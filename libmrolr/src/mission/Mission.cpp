@@ -148,8 +148,12 @@ void Mission::Impl::retrieve()
 	r.retrieved = r.retrieval.retrieved && arm.grasped() == r.search.instance;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieved) return;
-	carried = arm.grasped();  // placed on the base (thesis 7.2.2)
+	// The arm puts the object on the base's deck (thesis 7.2.2): 0.2 m behind and 0.5 m below C0.
+	carried = arm.grasped();
 	T_OinC0_carried = trueC0().inverse() * poses.at(carried);
+	T_OinC0_carried.translation() = Eigen::Vector3d(0, -0.5, -0.2);
+	poses[carried] = trueC0() * T_OinC0_carried;
+	r.timeline.advance(2 * o.retrieval.arm_move_time_s);
 	r.timeline.note("object " + carried + " placed on the base");
 }
 
