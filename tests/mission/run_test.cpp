@@ -127,3 +127,33 @@ TEST(MissionRun, MalformedConfigStopsBeforeAnythingMoves)
 	EXPECT_FALSE(fs::exists(dir + "/out"));
 	EXPECT_TRUE(app.result.path.empty());
 }
+
+namespace
+{
+/** Mean distance (m) from the truth over a run's path of the estimate or the odometry. */
+double meanError(const mission::MissionResult& r, Eigen::Vector3d mission::PathSample::*pose)
+{
+	double sum = 0;
+	for (const auto& s : r.path) sum += ((s.*pose).head<2>() - s.truth.head<2>()).norm();
+	return sum / static_cast<double>(r.path.size());
+}
+}  // namespace
+
+TEST(MissionRun, SlamOutlivesWheelSlipBurstsThatDeadReckoningDoesNot)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("sim_base", "slip_probability", "0.15");
+	cfg.write("mission", "route", "world");  // the whole lap round the lab first
+	cfg.write("mission", "search_stations", "W5");
+	const auto slam = mission::Mission(mission::test::optionsFrom(cfg)).run();
+	EXPECT_GT(slam.map.size(), 3u);
+	// Same run, same truth: the filter's estimate against the odometry it was given.
+	const double e_slam = meanError(slam, &mission::PathSample::estimate);
+	const double e_odo = meanError(slam, &mission::PathSample::odometry);
+	EXPECT_LT(e_slam, 0.5 * e_odo) << e_slam << " vs " << e_odo;
+	EXPECT_LT(slam.final_estimate_error_m, slam.dead_reckoning_error_m);
+	cfg.write("mission", "mode", "dead_reckoning");
+	const auto dr = mission::Mission(mission::test::optionsFrom(cfg)).run();
+	EXPECT_TRUE(dr.map.empty());
+	for (const auto& s : dr.path) EXPECT_EQ(s.estimate, s.odometry);
+}
