@@ -2,6 +2,7 @@
 #include <mrolr/slam/ActiveSlamFilter.h>
 
 #include <mrolr/slam/Chi2.h>
+#include <mrolr/slam/ProcessNoise.h>
 
 #include <Eigen/Cholesky>
 
@@ -32,6 +33,7 @@ void ActiveSlamFilter::predict(const base::WheelControl& u)
 	m_pending.clear();
 	m_skipPrediction = false;
 	runOneKalmanIteration();
+	notePrediction(vehicleRaw());
 }
 
 UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
@@ -71,7 +73,7 @@ void ActiveSlamFilter::OnTransitionModel(const KFArray_ACT& u, KFArray_VEH& x, b
 
 void ActiveSlamFilter::OnTransitionJacobian(KFMatrix_VxV& F) const
 {
-	F.asEigen() = m_model.jacobianState(vehicleRaw(), m_u);
+	F.asEigen() = transitionJacobian(vehicleRaw());
 }
 
 void ActiveSlamFilter::OnTransitionNoise(KFMatrix_VxV& Q) const
@@ -86,7 +88,10 @@ Eigen::Matrix3d ActiveSlamFilter::processNoise(const Eigen::Vector3d& x_v) const
 	const double t = std::abs(m_u.dt_s);
 	const Eigen::Vector3d floor(m_options.process_noise_floor_m, m_options.process_noise_floor_m,
 	                            m_options.process_noise_floor_rad);
-	return m_model.processNoise(x_v, m_u) + (t * floor.cwiseAbs2()).asDiagonal().toDenseMatrix();
+	Eigen::Matrix3d Q =
+	    m_model.processNoise(x_v, m_u) + (t * floor.cwiseAbs2()).asDiagonal().toDenseMatrix();
+	if (m_options.process_noise_order == 2) Q += secondOrderProcessNoise(m_model, x_v, m_u);
+	return Q;
 }
 
 void ActiveSlamFilter::OnPreComputingPredictions(const vector_KFArray_OBS&,
@@ -150,7 +155,7 @@ void ActiveSlamFilter::OnObservationModel(const std::vector<size_t>& idx,
 
 void ActiveSlamFilter::OnObservationJacobians(size_t idx, KFMatrix_OxV& Hx, KFMatrix_OxF& Hy) const
 {
-	const auto J = measurementJacobians(vehicleRaw(), featureRaw(idx), m_options.head.constants);
+	const auto J = observationJacobians(idx, vehicleRaw(), featureRaw(idx));
 	Hx.asEigen() = J.H_xv;
 	Hy.asEigen() = J.H_y;
 }

@@ -35,6 +35,7 @@ void ActiveSlamFilter::reset(const Eigen::Vector3d& x_v)
 	m_tracker = PostponedTracker33{};
 	m_info.clear();
 	setState(x_v, Eigen::Matrix3d::Zero());
+	notePrediction(x_v);
 }
 
 void ActiveSlamFilter::setState(const Eigen::VectorXd& x, const Eigen::MatrixXd& P)
@@ -72,6 +73,7 @@ size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::
 	FeatureInfo info;
 	info.label = label;
 	info.known = true;
+	info.p_FinW_first = p_FinW;
 	info.p_C0atInitInW = headCentreInW(vehicleRaw(), m_options.head.constants);
 	appendFeature(p_FinW, Eigen::MatrixXd::Zero(3, m_xkk.size() + 3), std::move(info));
 	return m_info.size() - 1;
@@ -92,6 +94,7 @@ size_t ActiveSlamFilter::initialiseFeature(const std::string& label, const Eigen
 	FeatureInfo info;
 	info.label = label;
 	info.p_C0atInitInW = headCentreInW(xv, m_options.head.constants);
+	info.p_FinW_first = g.p_FinW;
 	appendFeature(g.p_FinW, rows, std::move(info));
 	return m_info.size() - 1;
 }
@@ -125,9 +128,11 @@ void ActiveSlamFilter::zeroWorldFrame()
 		    pointInHead(xv, x.segment<3>(o), head) + Eigen::Vector3d(0, head.head_height_m, 0);
 		m_info[i].p_C0atInitInW = pointInHead(xv, m_info[i].p_C0atInitInW, head) +
 		                          Eigen::Vector3d(0, head.head_height_m, 0);
+		m_info[i].p_FinW_first = x.segment<3>(o);  // FEJ restarts in the new frame
 	}
 	x.head<3>().setZero();
 	setState(x, J * P * J.transpose());
+	notePrediction(x.head<3>());
 }
 
 void ActiveSlamFilter::recordAttempt(size_t i, bool success)

@@ -27,7 +27,8 @@ void ActiveSlamFilter::synchronise()
 void ActiveSlamFilter::predictPostponed()
 {
 	const Eigen::Vector3d xv = m_tracker.vehicle();
-	m_tracker.predict(m_model.move(xv, m_u), m_model.jacobianState(xv, m_u), processNoise(xv));
+	m_tracker.predict(m_model.move(xv, m_u), transitionJacobian(xv), processNoise(xv));
+	notePrediction(m_tracker.vehicle());
 }
 
 UpdateReport ActiveSlamFilter::updatePostponed(const Observation& z)
@@ -41,7 +42,7 @@ UpdateReport ActiveSlamFilter::updatePostponed(const Observation& z)
 	}
 	const Eigen::Vector3d xv = m_tracker.vehicle(), y = m_tracker.feature();
 	const auto& head = m_options.head.constants;
-	const auto J = measurementJacobians(xv, y, head);
+	const auto J = observationJacobians(z.feature, xv, y);
 	Eigen::Matrix<double, 3, 6> H;
 	H << J.H_xv, J.H_y;
 	const Eigen::Matrix3d R = measurementNoise();

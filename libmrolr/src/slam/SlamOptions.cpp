@@ -32,8 +32,34 @@ std::string toString(UpdateMethod m)
 	return "?";
 }
 
+JacobianPoint parseJacobianPoint(const std::string& name)
+{
+	if (name == "standard") return JacobianPoint::Standard;
+	if (name == "first_estimate") return JacobianPoint::FirstEstimate;
+	throw std::invalid_argument("unknown jacobians '" + name +
+	                            "' (expected standard or first_estimate)");
+}
+
+std::string toString(JacobianPoint point)
+{
+	return point == JacobianPoint::FirstEstimate ? "first_estimate" : "standard";
+}
+
 namespace
 {
+JacobianPoint readJacobians(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
+{
+	if (!util::hasKey(cfg, s, "jacobians")) return JacobianPoint::Standard;
+	try
+	{
+		return parseJacobianPoint(util::readString(cfg, s, "jacobians"));
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw util::ConfigError(util::describeKey(cfg, s, "jacobians") + ": " + e.what());
+	}
+}
+
 double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
               const std::string& key, double lo, double hi)
 {
@@ -74,6 +100,9 @@ void SlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, c
 	{
 		throw util::ConfigError(util::describeKey(cfg, s, "update_method") + ": " + e.what());
 	}
+	jacobians = readJacobians(cfg, s);
+	process_noise_order = static_cast<int>(util::readInt(cfg, s, "process_noise_order", 1));
+	requireInRange(cfg, s, "process_noise_order", process_noise_order, 1, 2);
 	gate_probability = readIn(cfg, s, "gate_probability", 0.5, 1 - 1e-12);
 	process_noise_floor_m = readIn(cfg, s, "process_noise_floor_m", 0, 1);
 	process_noise_floor_rad = readIn(cfg, s, "process_noise_floor_rad", 0, 1);
@@ -93,6 +122,8 @@ void SlamOptions::dumpToTextStream(std::ostream& out) const
 	out << "[slam]\nstd_pan_rad = " << std_pan_rad << "\nstd_elevation_rad = " << std_elevation_rad
 	    << "\nstd_vergence_rad = " << std_vergence_rad
 	    << "\nupdate_method = " << toString(update_method)
+	    << "\njacobians = " << toString(jacobians)
+	    << "\nprocess_noise_order = " << process_noise_order
 	    << "\ngate_probability = " << gate_probability
 	    << "\nprocess_noise_floor_m = " << process_noise_floor_m
 	    << "\nprocess_noise_floor_rad = " << process_noise_floor_rad

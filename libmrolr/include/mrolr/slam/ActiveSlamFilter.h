@@ -29,6 +29,8 @@ struct FeatureInfo
 	std::string label;
 	bool known = false;  ///< known feature (5.6.2): initialised with zero covariance
 	Eigen::Vector3d p_C0atInitInW = Eigen::Vector3d::Zero();  ///< head centre when first seen
+	/** The feature's first estimate in W (m): where FEJ evaluates its measurement Jacobian. */
+	Eigen::Vector3d p_FinW_first = Eigen::Vector3d::Zero();
 	std::deque<bool> attempts;  ///< last measurement attempts, true = success (5.7)
 	int successes = 0;
 	int failures = 0;
@@ -129,6 +131,13 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	Eigen::Vector3d vehicleRaw() const;
 	Eigen::Matrix3d processNoise(const Eigen::Vector3d& x_v) const;
 	Eigen::Vector3d featureRaw(size_t i) const;
+	/** ∂f/∂x_v at @p x_v (standard) or from the propagated estimates (FEJ). */
+	Eigen::Matrix3d transitionJacobian(const Eigen::Vector3d& x_v) const;
+	/** H of feature i at (x_v, y) (standard) or at (x_{k|k−1}, first estimate of y) (FEJ). */
+	MeasurementJacobians observationJacobians(size_t i, const Eigen::Vector3d& x_v,
+	                                          const Eigen::Vector3d& y) const;
+	/** Records x_{k|k−1}, the vehicle estimate right after a prediction (FEJ's linearisation). */
+	void notePrediction(const Eigen::Vector3d& x_v_predicted);
 	void appendFeature(const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info);
 	bool postponedApplies(const std::vector<Observation>& z) const;
 	UpdateReport updatePostponed(const Observation& z);
@@ -139,6 +148,7 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	double m_gate = 0;
 	std::vector<FeatureInfo> m_info;
 	base::WheelControl m_u;
+	Eigen::Vector3d m_xvPrior = Eigen::Vector3d::Zero();  ///< x_{k|k−1} of the vehicle (FEJ)
 	bool m_skipPrediction = false;
 	std::vector<Observation> m_pending;
 	UpdateReport m_report;

@@ -25,6 +25,18 @@ enum class UpdateMethod
 UpdateMethod parseUpdateMethod(const std::string& name);
 std::string toString(UpdateMethod method);
 
+/** Where the filter evaluates its Jacobians. */
+enum class JacobianPoint
+{
+	Standard,      ///< at the current estimate (the thesis's EKF)
+	FirstEstimate  ///< FEJ-EKF (Huang, Mourikis & Roumeliotis 2008): motion Jacobians from the
+	               ///< propagated estimates, measurement Jacobians at each feature's first estimate
+};
+
+/** "standard" | "first_estimate"; throws std::invalid_argument naming the value otherwise. */
+JacobianPoint parseJacobianPoint(const std::string& name);
+std::string toString(JacobianPoint point);
+
 /** Head constants and joint limits, from the head's section (keys as in config/bisight.ini). */
 struct HeadModelOptions
 {
@@ -47,6 +59,11 @@ struct SlamOptions
 	double std_elevation_rad = 0.01;
 	double std_vergence_rad = 0.002;
 	UpdateMethod update_method = UpdateMethod::Sequential;
+	/** Optional key `jacobians` (default standard): first_estimate for FEJ-EKF. */
+	JacobianPoint jacobians = JacobianPoint::Standard;
+	/** Optional key `process_noise_order` (default 1): 1 = Q = ∇f_u U ∇f_uᵀ (eq 5.12); 2 adds the
+	 * second-order term ½ tr(H_a U H_b U) of the wheel noise (slam/ProcessNoise.h). */
+	int process_noise_order = 1;
 	/** Added to the model's Q per second of motion: σ² = floor² · Δt for z, x (m) and φ (rad). */
 	double process_noise_floor_m = 0;
 	double process_noise_floor_rad = 0;

@@ -115,6 +115,7 @@ void EkfSimApp::printJson(std::ostream& out) const
 	j["outliers_injected"] = m.outliers_injected;
 	j["ms_per_step"] = m.ms_per_step;
 	j["update_method"] = slam::toString(setup.slam.update_method);
+	j["jacobians"] = slam::toString(setup.slam.jacobians);
 	out << j.dump(2) << "\n";
 }
 
@@ -127,7 +128,8 @@ void EkfSimApp::printTable(std::ostream& out) const
 		    << unit << "\n";
 	};
 	out << "mrolr-ekf-sim: " << m.runs << " runs of " << m.steps << " steps on " << world_path
-	    << " (" << slam::toString(setup.slam.update_method) << " updates)\n";
+	    << " (" << slam::toString(setup.slam.update_method) << " updates, "
+	    << slam::toString(setup.slam.jacobians) << " Jacobians)\n";
 	out << "  " << std::left << std::setw(38) << "mean NEES 95% bounds"
 	    << "[" << m.nees_lo << ", " << m.nees_hi << "]\n";
 	row("steps with mean NEES inside", m.nees_inside_fraction, "");
