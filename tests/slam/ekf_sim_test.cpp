@@ -48,9 +48,10 @@ TEST(EkfSim, ConsistencyOver50Runs)
 	EXPECT_NEAR(m.nees_hi, 3.7160, 1e-3);
 	// The innovations are consistent: mean NIS of a χ²₃ is 3.
 	EXPECT_NEAR(m.mean_nis, 3.0, 0.25);
-	// Issue 3 asks for ≥ 90 % of steps inside the bounds; this filter reaches 50–90 % depending on
-	// the seed (docs/slam.md, "Consistency"): the assertion guards against regressions only.
-	EXPECT_GE(m.nees_inside_fraction, 0.45);
+	// Issue 3 asks for ≥ 90 % of steps inside the bounds; with first-estimate Jacobians and the
+	// second-order Q (config/ekf_sim.ini) this seed gives 0.84 and other seeds 0.44–0.91
+	// (docs/slam.md, "Consistency"): the assertion guards against regressions only.
+	EXPECT_GE(m.nees_inside_fraction, 0.75);
 	EXPECT_GE(m.nees_steps, m.steps - 1);
 	for (double v : m.mean_nees)
 	{
