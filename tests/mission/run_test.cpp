@@ -36,6 +36,8 @@ std::string worldWithout(const std::string& name)
 	std::string text = std::regex_replace(s.str(), std::regex("\\[object\\." + name + "\\][^\\[]*"), "");
 	text = std::regex_replace(text, std::regex("objects_dir = [^\\n]*"),
 	                          "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
+	text = std::regex_replace(text, std::regex("texture = textures/"),
+	                          "texture = " + std::string(MROLR_SOURCE_DIR) + "/maps/lab/textures/");
 	const auto path = tempDir("absent") + "/world.ini";
 	std::ofstream(path) << text;
 	return path;
@@ -78,6 +80,12 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 	EXPECT_TRUE(j["success"].get<bool>());
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
 		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
+	// One stereo pair per sweep view, stored as external images next to the rawlog.
+	ASSERT_EQ(r.shots.size(), static_cast<size_t>(r.search.views));
+	size_t images = 0;
+	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
+		images += e.path().extension() == ".png";
+	EXPECT_EQ(images, 2 * r.shots.size());
 }
 
 TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
@@ -95,6 +103,7 @@ TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 	EXPECT_FALSE(r.retrieval.attempted);
 	EXPECT_TRUE(r.returned_home);
 	EXPECT_NE(r.failure.find("not found"), std::string::npos) << r.failure;
+	EXPECT_EQ(r.shots.size(), 10u);  // five views at each of the two stations
 }
 
 TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)

@@ -6,8 +6,10 @@
 #include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
+#include <mrolr/sim/StereoRenderer.h>
 #include <mrolr/world/ObjectShape.h>
 
+#include <chrono>
 #include <cmath>
 
 namespace mrolr::mission
@@ -48,6 +50,9 @@ struct Mission::Impl
 	std::unique_ptr<Navigator> nav;
 	std::unique_ptr<ObjectSearch> search;
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
+	std::unique_ptr<sim::StereoRenderer> renderer;  ///< built at the first sweep view
+	sim::LabScene lab;
+	bool render_failed = false;
 	std::string carried;  ///< instance standing on the base after retrieval
 	Eigen::Isometry3d T_OinC0_carried = Eigen::Isometry3d::Identity();  ///< m
 
@@ -70,6 +75,7 @@ struct Mission::Impl
 		for (const auto& p : o.world.objects) out[p.name] = {p.model, poses.at(p.name)};
 		return out;
 	}
+	void grabStereo(const geometry::HeadAngles& angles);
 	void loadTarget();
 	void navigate();
 	bool searchStation(const NamedPose& station);
@@ -86,9 +92,42 @@ void Mission::Impl::loadTarget()
 	models = loadModels(o);
 	for (const auto& p : o.world.objects) poses[p.name] = placedObjects(o.world).at(p.name).T_OinW;
 	search = std::make_unique<ObjectSearch>(o, models.at(o.target), models);
+	if (o.search.render_stereo)
+		search->on_view = [this](const geometry::HeadAngles& a)
+		{
+			if (render_failed) return;
+			try
+			{
+				grabStereo(a);
+			}
+			catch (const std::exception& e)
+			{  // the recording loses its images, the mission goes on (and says so)
+				r.timeline.note(std::string("stereo rendering failed, no more images: ") + e.what());
+				render_failed = true;
+			}
+		};
 	r.timeline.note("target model " + o.target + ": " +
 	                std::to_string(models.at(o.target).lines.size()) + " lines, " +
 	                std::to_string(models.at(o.target).conics.size()) + " conics");
+}
+
+void Mission::Impl::grabStereo(const geometry::HeadAngles& angles)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	if (!renderer)
+	{
+		lab = sim::buildLabScene(o.world);
+		renderer = std::make_unique<sim::StereoRenderer>(geometry::BiSightHead(o.bisight),
+		                                                 sim::RenderOptions());
+	}
+	for (const auto& [name, T] : poses)
+		if (auto gl = lab.scene->getByName("object." + name))
+			gl->setPose(geometry::cameraPoseToMrpt(T));
+	const auto frame = renderer->render(*lab.scene, trueC0(), angles, r.shots.size());
+	StereoShot shot{nav->path().back(), angles, frame.left, frame.right};
+	shot.state.time_s = r.timeline.simulatedSeconds();
+	r.shots.push_back(std::move(shot));
+	r.timeline.addRender(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 void Mission::Impl::navigate()

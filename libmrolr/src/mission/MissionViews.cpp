@@ -180,18 +180,50 @@ void writeScene3D(const MissionResult& r, const MissionOptions& o, const std::st
 	if (!scene.saveToFile(path)) throw std::runtime_error("cannot write " + path);
 }
 
-void writeRawlog(const MissionResult& r, const std::string& path)
+namespace
+{
+io::RawlogRecord recordOf(const PathSample& s)
+{
+	io::RawlogRecord rec;
+	rec.time_s = s.time_s;
+	rec.odometry_zxphi = s.odometry;
+	rec.ticks_right = s.ticks_right, rec.ticks_left = s.ticks_left;
+	rec.true_zxphi = s.truth;
+	return rec;
+}
+
+/** The record of a stereo shot: images, intrinsics and camera poses on the vehicle (as
+ * apps/sim's recording writes them). */
+io::RawlogRecord recordOf(const StereoShot& shot, const geometry::BiSightHead& head)
+{
+	auto rec = recordOf(shot.state);
+	const auto& a = shot.angles;
+	rec.head_rad = {a.pan, a.tilt, a.verg_left, a.verg_right};
+	rec.has_stereo = true;
+	rec.left = shot.left, rec.right = shot.right;
+	rec.camera = head.camera().toTCamera();
+	const Eigen::Isometry3d T_C0inV = geometry::T_C0inW({0, 0, 0}, head.options().head_height_m);
+	const auto L = head.T_CamCvInC0(geometry::Side::Left, a);
+	rec.T_LcvInVehicle = geometry::cameraPoseToMrpt(T_C0inV * L)
+	                         .getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>()
+	                         .asEigen();
+	rec.T_RcvInLcv = L.inverse() * head.T_CamCvInC0(geometry::Side::Right, a);
+	return rec;
+}
+}  // namespace
+
+void writeRawlog(const MissionResult& r, const MissionOptions& o, const std::string& path)
 {
 	io::RawlogWriter w(path);
+	const geometry::BiSightHead head(o.bisight);
+	size_t k = 0;
 	for (const auto& s : r.path)
 	{
-		io::RawlogRecord rec;
-		rec.time_s = s.time_s;
-		rec.odometry_zxphi = s.odometry;
-		rec.ticks_right = s.ticks_right, rec.ticks_left = s.ticks_left;
-		rec.true_zxphi = s.truth;
-		w.write(rec);
+		for (; k < r.shots.size() && r.shots[k].state.time_s <= s.time_s; ++k)
+			w.write(recordOf(r.shots[k], head));
+		w.write(recordOf(s));
 	}
+	for (; k < r.shots.size(); ++k) w.write(recordOf(r.shots[k], head));
 }
 
 std::vector<std::string> writeOutputs(const MissionResult& r, const MissionOptions& o,
@@ -203,7 +235,7 @@ std::vector<std::string> writeOutputs(const MissionResult& r, const MissionOptio
 	std::ofstream(f("report.md")) << reportMarkdown(r, o);
 	writeTrajectoryPng(r, o, f("trajectory.png"));
 	writeScene3D(r, o, f("mission.3Dscene"));
-	writeRawlog(r, f("mission.rawlog"));
+	writeRawlog(r, o, f("mission.rawlog"));
 	return {f("report.json"), f("report.md"), f("trajectory.png"), f("mission.3Dscene"),
 	        f("mission.rawlog")};
 }

@@ -134,7 +134,9 @@ SearchResult ObjectSearch::sweep(const WorldObjects& objects, const Eigen::Isome
 	for (double pan = s.pan_from_deg; pan <= s.pan_to_deg + 1e-9; pan += s.pan_step_deg)
 	{
 		timeline.advance(s.head_move_time_s);
-		last = observe(objects, T_C0inW, sweepAngles(pan), rng, timeline);
+		const auto angles = sweepAngles(pan);
+		if (on_view) on_view(angles);
+		last = observe(objects, T_C0inW, angles, rng, timeline);
 		last.views = ++views;
 		timeline.note("view at pan " + std::to_string(static_cast<int>(std::lround(pan))) +
 		              " deg: " + (last.found ? "recognised" : "not recognised"));

@@ -68,6 +68,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"stage_compute_seconds", r.timeline.stageComputeSeconds()},
 	          {"compute_seconds", r.timeline.computeSeconds()},
 	          {"simulated_seconds", r.timeline.simulatedSeconds()},
+	          {"render_seconds", r.timeline.renderSeconds()}, {"stereo_pairs", r.shots.size()},
 	          {"steps", r.path.size()}, {"measurements", r.measurements},
 	          {"measurements_rejected", r.measurements_rejected}, {"features", r.map.size()},
 	          {"timeline", timelineJson(r.timeline)}};
@@ -104,7 +105,8 @@ std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
 		  << r.search.recognition.confidence << " (level " << r.search.recognition.level
 		  << ") |\n| grasp correction (mm) | " << r.retrieval.correction_mm << " |\n";
 	s << "| simulated time (s) | " << r.timeline.simulatedSeconds() << " |\n"
-	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n\n## Stages\n\n"
+	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n"
+	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n\n## Stages\n\n"
 	  << "| stage | simulated s | compute s |\n|---|---|---|\n";
 	for (const auto& [name, sec] : r.timeline.stageSeconds())
 	{

@@ -51,6 +51,7 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	fragment_probability = readDouble(c, s, "fragment_probability");
 	hide_back_side = util::readBool(c, s, "hide_back_side", hide_back_side);
 	max_object_range_m = readDouble(c, s, "max_object_range_m");
+	render_stereo = util::readBool(c, s, "render_stereo", render_stereo);
 	util::requireInRange(c, s, "pan_step_deg", pan_step_deg, 0.1, 90);
 	util::requireInRange(c, s, "pan_to_deg", pan_to_deg, pan_from_deg, 90);
 	util::requireInRange(c, s, "missing_fraction", missing_fraction, 0, 0.9);
@@ -65,7 +66,8 @@ void SearchOptions::dump(std::ostream& out) const
 	    << "\nmissing_fraction = " << missing_fraction
 	    << "\nfragment_probability = " << fragment_probability
 	    << "\nhide_back_side = " << (hide_back_side ? "true" : "false")
-	    << "\nmax_object_range_m = " << max_object_range_m << "\n";
+	    << "\nmax_object_range_m = " << max_object_range_m
+	    << "\nrender_stereo = " << (render_stereo ? "true" : "false") << "\n";
 }
 
 void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

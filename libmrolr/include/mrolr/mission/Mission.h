@@ -14,6 +14,14 @@
 
 namespace mrolr::mission
 {
+/** A stereo pair grabbed during a sweep, with the robot's state at that moment. */
+struct StereoShot
+{
+	PathSample state;
+	geometry::HeadAngles angles;
+	mrpt::img::CImage left, right;
+};
+
 /** Everything the reports need. Poses (z, x, φ) in W; mm for object and arm poses. */
 struct MissionResult
 {
@@ -29,6 +37,7 @@ struct MissionResult
 	RetrievalResult retrieval;
 	Eigen::Vector3d home = Eigen::Vector3d::Zero();
 	std::vector<PathSample> path;
+	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps (render_stereo)
 	std::vector<MappedLandmark> map;
 	int measurements = 0, measurements_rejected = 0;
 	Timeline timeline;

@@ -65,6 +65,7 @@ struct SearchOptions
 	double fragment_probability = 0.1;
 	bool hide_back_side = true;
 	double max_object_range_m = 2.0;  ///< objects further from C0 are not reconstructed
+	bool render_stereo = true;  ///< render each view's stereo pair into the rawlog (sim::StereoRenderer)
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

@@ -22,8 +22,9 @@ void writeTrajectoryPng(const MissionResult& r, const MissionOptions& o, const s
 /** The room with the true and estimated paths, the map with 95 % ellipsoids, the recognised model
  * placed where it was recognised, and the arm at its grasp pose (mrpt::opengl .3Dscene). */
 void writeScene3D(const MissionResult& r, const MissionOptions& o, const std::string& path);
-/** The run as an MRPT rawlog through io::RawlogWriter: odometry and ground truth per step. */
-void writeRawlog(const MissionResult& r, const std::string& path);
+/** The run as an MRPT rawlog through io::RawlogWriter: odometry and ground truth per step, and the
+ * sweeps' stereo pairs (images in <name>_Images/) in time order. */
+void writeRawlog(const MissionResult& r, const MissionOptions& o, const std::string& path);
 /** Writes every output into @p dir (created); returns the files written. */
 std::vector<std::string> writeOutputs(const MissionResult& r, const MissionOptions& o,
                                       const std::string& dir);

@@ -14,6 +14,7 @@
 #include <mrolr/recog/Recognizer.h>
 
 #include <Eigen/Geometry>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -64,6 +65,8 @@ class ObjectSearch
 	SearchResult sweep(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,
 	                   std::mt19937& rng, Timeline& timeline) const;
 	const geometry::BiSightHead& head() const { return head_; }
+	/** Called with the head angles of every sweep view (e.g. to grab a stereo pair). */
+	std::function<void(const geometry::HeadAngles&)> on_view;
 
    private:
 	void compareWithTruth(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,

@@ -24,6 +24,9 @@ class Timeline
 	/** Adds robot compute time (wall seconds) to the total and to the current stage. */
 	void addCompute(double seconds);
 	double computeSeconds() const { return compute_s_; }
+	/** Adds the simulator's rendering time (wall seconds), kept apart from the robot's compute. */
+	void addRender(double seconds) { render_s_ += seconds; }
+	double renderSeconds() const { return render_s_; }
 	/** Starts a stage: the previous one's simulated duration is closed. */
 	void beginStage(const std::string& name);
 	/** Closes the current stage. */
@@ -36,7 +39,7 @@ class Timeline
 	const std::vector<TimelineEvent>& events() const { return events_; }
 
    private:
-	double simulated_s_ = 0, compute_s_ = 0, stage_start_s_ = 0;
+	double simulated_s_ = 0, compute_s_ = 0, render_s_ = 0, stage_start_s_ = 0;
 	std::string stage_;
 	std::map<std::string, double> stage_s_, stage_compute_s_;
 	std::vector<TimelineEvent> events_;
