@@ -10,7 +10,10 @@
 
 namespace mrolr::mission::test
 {
-inline std::string configDir() { return std::string(MROLR_SOURCE_DIR) + "/config"; }
+inline std::string configDir()
+{
+	return std::string(MROLR_SOURCE_DIR) + "/config";
+}
 
 inline mrpt::config::CConfigFileMemory defaultMissionConfig()
 {

@@ -3,10 +3,12 @@
 #include "MissionTestConfig.h"
 
 #include <mrolr/apps/MissionApp.h>
+#include <mrolr/io/Rawlog.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/opengl/COpenGLScene.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -33,9 +35,11 @@ std::string worldWithout(const std::string& name)
 	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/maps/lab/world.ini");
 	std::stringstream s;
 	s << f.rdbuf();
-	std::string text = std::regex_replace(s.str(), std::regex("\\[object\\." + name + "\\][^\\[]*"), "");
-	text = std::regex_replace(text, std::regex("objects_dir = [^\\n]*"),
-	                          "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
+	std::string text =
+	    std::regex_replace(s.str(), std::regex("\\[object\\." + name + "\\][^\\[]*"), "");
+	text =
+	    std::regex_replace(text, std::regex("objects_dir = [^\\n]*"),
+	                       "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
 	text = std::regex_replace(text, std::regex("texture = textures/"),
 	                          "texture = " + std::string(MROLR_SOURCE_DIR) + "/maps/lab/textures/");
 	const auto path = tempDir("absent") + "/world.ini";
@@ -54,8 +58,8 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 {
 	const auto dir = tempDir("present");
 	apps::MissionApp app;
-	app.initialize({"mrolr-mission", "--config", mission::test::configDir() + "/mission_sim.ini", "--out",
-	                dir, "--quiet", "--json"});
+	app.initialize({"mrolr-mission", "--config", mission::test::configDir() + "/mission_sim.ini",
+	                "--out", dir, "--quiet", "--json"});
 	std::ostringstream out, progress;
 	EXPECT_EQ(app.run(out, progress), 0) << out.str();
 	const auto& r = app.result;
@@ -86,13 +90,23 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
 		images += e.path().extension() == ".png";
 	EXPECT_EQ(images, 2 * r.shots.size());
+	// The rawlog reads back: one record per motion step and per stereo pair.
+	const auto records = io::readRawlog(dir + "/mission.rawlog");
+	EXPECT_EQ(records.size(), r.path.size() + r.shots.size());
+	size_t stereo = 0;
+	for (const auto& rec : records) stereo += rec.has_stereo && rec.left.getWidth() == 640;
+	EXPECT_EQ(stereo, r.shots.size());
+	mrpt::opengl::COpenGLScene scene;
+	ASSERT_TRUE(scene.loadFromFile(dir + "/mission.3Dscene"));
+	EXPECT_TRUE(scene.getByName("path.true"));
+	EXPECT_TRUE(scene.getByName("arm"));
+	EXPECT_TRUE(scene.getByName("recognised." + app.options.target));
 }
 
 TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 {
 	auto cfg = mission::test::defaultMissionConfig();
-	cfg.write("mission", "world_file",
-	          worldWithout(mission::test::optionsFrom(cfg).target));
+	cfg.write("mission", "world_file", worldWithout(mission::test::optionsFrom(cfg).target));
 	const auto o = mission::test::optionsFrom(cfg);
 	mission::Mission m(o);
 	const auto r = m.run();

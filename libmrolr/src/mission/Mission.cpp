@@ -57,13 +57,15 @@ struct Mission::Impl
 	Eigen::Isometry3d T_OinC0_carried = Eigen::Isometry3d::Identity();  ///< m
 
 	explicit Impl(const MissionOptions& opts)
-	    : o(opts), base(base::LabmateModel(opts.labmate), opts.sim_base, start(opts)),
+	    : o(opts),
+	      base(base::LabmateModel(opts.labmate), opts.sim_base, start(opts)),
 	      rng(opts.seed + 7)
 	{
 	}
 	static Eigen::Vector3d start(const MissionOptions& opts)
 	{
-		return opts.route.empty() ? Eigen::Vector3d::Zero() : waypoint(opts, opts.route[0]).xv_zxphi;
+		return opts.route.empty() ? Eigen::Vector3d::Zero()
+		                          : waypoint(opts, opts.route[0]).xv_zxphi;
 	}
 	Eigen::Isometry3d trueC0() const
 	{
@@ -102,7 +104,8 @@ void Mission::Impl::loadTarget()
 			}
 			catch (const std::exception& e)
 			{  // the recording loses its images, the mission goes on (and says so)
-				r.timeline.note(std::string("stereo rendering failed, no more images: ") + e.what());
+				r.timeline.note(std::string("stereo rendering failed, no more images: ") +
+				                e.what());
 				render_failed = true;
 			}
 		};
@@ -127,13 +130,15 @@ void Mission::Impl::grabStereo(const geometry::HeadAngles& angles)
 	StereoShot shot{nav->path().back(), angles, frame.left, frame.right};
 	shot.state.time_s = r.timeline.simulatedSeconds();
 	r.shots.push_back(std::move(shot));
-	r.timeline.addRender(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+	r.timeline.addRender(
+	    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 void Mission::Impl::navigate()
 {
 	r.timeline.beginStage("navigate");
-	nav = std::make_unique<Navigator>(o, base, [this] { return base.truePose(); }, r.timeline);
+	nav = std::make_unique<Navigator>(
+	    o, base, [this] { return base.truePose(); }, r.timeline);
 	nav->on_step = [this](const PathSample& s)
 	{
 		if (!carried.empty()) poses[carried] = trueC0() * T_OinC0_carried;
@@ -182,8 +187,9 @@ void Mission::Impl::retrieve()
 	};
 	const Eigen::Vector3d p_OinW = (trueC0() * metres(r.search.T_OinC0)).translation();
 	Retrieval retrieval(o, models.at(o.target));
-	r.retrieval = retrieval.run(r.search.T_OinC0, tableHeightNear(p_OinW), arm, reobserve,
-	                            [&] { return arm.grasped(); }, r.timeline);
+	r.retrieval = retrieval.run(
+	    r.search.T_OinC0, tableHeightNear(p_OinW), arm, reobserve, [&] { return arm.grasped(); },
+	    r.timeline);
 	r.retrieved = r.retrieval.retrieved && arm.grasped() == r.search.instance;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieved) return;

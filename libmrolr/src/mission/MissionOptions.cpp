@@ -24,9 +24,8 @@ std::string resolve(const std::string& base_dir, const std::string& file)
 }
 
 /** Opens the file a key names, with the key in the error if it cannot be read. */
-mrpt::config::CConfigFile openNamed(
-    const CConfigFileBase& cfg, const std::string& section, const std::string& key,
-    const std::string& base_dir)
+mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::string& section,
+                                    const std::string& key, const std::string& base_dir)
 {
 	const auto path = resolve(base_dir, util::readString(cfg, section, key));
 	if (!std::ifstream(path).good())
@@ -55,11 +54,13 @@ std::vector<std::string> splitOn(const std::string& text, char sep)
 	return out;
 }
 
-NamedPose waypointPose(const world::Waypoint& w) { return {w.name, {w.z_m, w.x_m, w.phi_rad}}; }
+NamedPose waypointPose(const world::Waypoint& w)
+{
+	return {w.name, {w.z_m, w.x_m, w.phi_rad}};
+}
 
-NamedPose parseStation(
-    const CConfigFileBase& cfg, const std::string& key, const std::string& text,
-    const world::World& w, size_t index)
+NamedPose parseStation(const CConfigFileBase& cfg, const std::string& key, const std::string& text,
+                       const world::World& w, size_t index)
 {
 	const auto fields = util::splitFields(text);
 	if (fields.size() == 1)
@@ -89,8 +90,8 @@ std::vector<std::string> readRoute(const CConfigFileBase& cfg, const world::Worl
 	}
 	for (const auto& n : names)
 		if (!w.findWaypoint(n))
-			throw util::ConfigError(util::describeKey(cfg, "mission", "route") +
-			                        ": no waypoint '" + n + "' in " + w.path);
+			throw util::ConfigError(util::describeKey(cfg, "mission", "route") + ": no waypoint '" +
+			                        n + "' in " + w.path);
 	return names;
 }
 
@@ -175,9 +176,8 @@ void checkDeviceDrivers(const CConfigFileBase& cfg)
 		const std::string section = "device." + dev;
 		const auto driver = util::readString(cfg, section, "driver");
 		if (driver == "serial")
-			throw util::ConfigError(util::describeKey(cfg, section, "driver") +
-			                        ": the serial " + dev +
-			                        " driver is not available yet (use driver = sim)");
+			throw util::ConfigError(util::describeKey(cfg, section, "driver") + ": the serial " +
+			                        dev + " driver is not available yet (use driver = sim)");
 		if (driver != "sim")
 			throw util::ConfigError(util::describeKey(cfg, section, "driver") + ": '" + driver +
 			                        "' is not one of sim, serial");
@@ -212,9 +212,9 @@ MissionOptions MissionOptions::load(const std::string& path)
 void MissionOptions::dump(std::ostream& out) const
 {
 	out << "[mission]\nname = " << name << "\nworld_file = " << world_file
-	    << "\ntarget = " << target << "\nhome_waypoint = " << home_waypoint << "\nmode = "
-	    << (mode == NavigationMode::Slam ? "slam" : "dead_reckoning") << "\nseed = " << seed
-	    << "\nhome_tolerance_m = " << home_tolerance_m << "\nroute =";
+	    << "\ntarget = " << target << "\nhome_waypoint = " << home_waypoint
+	    << "\nmode = " << (mode == NavigationMode::Slam ? "slam" : "dead_reckoning")
+	    << "\nseed = " << seed << "\nhome_tolerance_m = " << home_tolerance_m << "\nroute =";
 	for (const auto& r : route) out << " " << r;
 	out << "\nsearch_stations =";
 	for (size_t i = 0; i < stations.size(); ++i)

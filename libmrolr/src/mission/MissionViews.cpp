@@ -4,15 +4,15 @@
 #include <mrolr/io/Rawlog.h>
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/model/ModelRender.h>
-#include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/sim/ObjectWireFrame.h>
+#include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/world/ObjectShape.h>
 
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/opengl/CEllipsoid3D.h>
 #include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -54,8 +54,8 @@ void drawTables(cv::Mat& img, const TopView& v, const world::World& w)
 		std::vector<cv::Point> pts;
 		for (auto [sz, sx] : {std::pair{-1, -1}, {-1, 1}, {1, 1}, {1, -1}})
 		{
-			const Eigen::Vector2d c = Eigen::Vector2d(t.z_m, t.x_m) +
-			                          0.5 * (sz * t.depth_m * az + sx * t.length_m * ax);
+			const Eigen::Vector2d c =
+			    Eigen::Vector2d(t.z_m, t.x_m) + 0.5 * (sz * t.depth_m * az + sx * t.length_m * ax);
 			pts.push_back(v.px(c.x(), c.y()));
 		}
 		cv::fillConvexPoly(img, pts, cv::Scalar(90, 90, 90));
@@ -64,9 +64,11 @@ void drawTables(cv::Mat& img, const TopView& v, const world::World& w)
 
 void drawLegend(cv::Mat& img)
 {
-	const std::pair<const char*, cv::Scalar> items[] = {
-	    {"true path", {0, 160, 0}}, {"estimate", {200, 0, 0}}, {"dead reckoning", {0, 0, 220}},
-	    {"landmark (true)", {0, 0, 0}}, {"landmark (mapped)", {200, 0, 200}}};
+	const std::pair<const char*, cv::Scalar> items[] = {{"true path", {0, 160, 0}},
+	                                                    {"estimate", {200, 0, 0}},
+	                                                    {"dead reckoning", {0, 0, 220}},
+	                                                    {"landmark (true)", {0, 0, 0}},
+	                                                    {"landmark (mapped)", {200, 0, 200}}};
 	int y = 20;
 	for (const auto& [text, colour] : items)
 	{

@@ -44,9 +44,9 @@ Eigen::Vector3d Navigator::estimate()
 void Navigator::driveTo(const NamedPose& goal)
 {
 	const Eigen::Vector3d now = estimate();
-	const auto via = detourAroundTables(o_.world, {now.x(), now.y()},
-	                                    {goal.xv_zxphi.x(), goal.xv_zxphi.y()},
-	                                    o_.navigation.table_clearance_m);
+	const auto via =
+	    detourAroundTables(o_.world, {now.x(), now.y()}, {goal.xv_zxphi.x(), goal.xv_zxphi.y()},
+	                       o_.navigation.table_clearance_m);
 	Eigen::Vector2d prev(now.x(), now.y());
 	for (const auto& v : via)
 	{
@@ -63,7 +63,8 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal)
 	for (int leg = 0; leg <= o_.navigation.max_correction_legs; ++leg)
 	{
 		const Eigen::Vector3d e = estimate();
-		const bool close = (e.head<2>() - goal.head<2>()).norm() < o_.navigation.waypoint_tolerance_m;
+		const bool close =
+		    (e.head<2>() - goal.head<2>()).norm() < o_.navigation.waypoint_tolerance_m;
 		if (leg > 0 && close && std::abs(base::wrapAngle(e.z() - goal.z())) < 0.02) return;
 		std::vector<base::PlannedStep> plan;
 		{
@@ -114,8 +115,8 @@ std::vector<size_t> Navigator::visibleMapped(const Eigen::Vector3d& xv_true)
 	{
 		const auto* l = o_.world.findLandmark(filter_.info(i).label);
 		const bool predicted = slam::assessVisibility(filter_.vehicle(), filter_.feature(i),
-		                                              filter_.info(i).p_C0atInitInW, o_.slam) ==
-		                       slam::Visibility::Visible;
+		                                              filter_.info(i).p_C0atInitInW,
+		                                              o_.slam) == slam::Visibility::Visible;
 		if (l && predicted && canSee(xv_true, *l)) out.push_back(i);
 	}
 	return out;
@@ -131,8 +132,8 @@ void Navigator::initialiseNewFeature(const Eigen::Vector3d& xv_true)
 		for (size_t i = 0; i < filter_.numFeatures() && !mapped; ++i)
 			mapped = filter_.info(i).label == l.name;
 		if (mapped || !canSee(xv_true, l)) continue;
-		const double pan = std::abs(slam::predictMeasurement(xv_true, l.p_LinW,
-		                                                     o_.slam.head.constants)(0));
+		const double pan =
+		    std::abs(slam::predictMeasurement(xv_true, l.p_LinW, o_.slam.head.constants)(0));
 		if (pan < best_pan) best = &l, best_pan = pan;
 	}
 	if (!best) return;
@@ -153,13 +154,14 @@ void Navigator::measure()
 		std::optional<size_t> pick;
 		{
 			ComputeTimer t(timeline_);
-			pick = slam::largestVolume(filter_.stateVector(), filter_.covariance(), visible,
-			                           o_.slam);
+			pick =
+			    slam::largestVolume(filter_.stateVector(), filter_.covariance(), visible, o_.slam);
 		}
 		if (!pick) break;
 		const size_t i = visible[*pick];
 		visible.erase(visible.begin() + static_cast<long>(*pick));
-		obs.push_back({i, noisyMeasurement(xv_true, o_.world.findLandmark(filter_.info(i).label)->p_LinW)});
+		obs.push_back(
+		    {i, noisyMeasurement(xv_true, o_.world.findLandmark(filter_.info(i).label)->p_LinW)});
 		timeline_.advance(o_.navigation.measurement_time_s);
 	}
 	if (obs.empty()) return;

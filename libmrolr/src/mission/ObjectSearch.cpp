@@ -48,7 +48,10 @@ WorldObjects placedObjects(const world::World& w)
 
 ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& target,
                            const std::map<std::string, model::WireFrame>& models)
-    : o_(o), head_(o.bisight), recognizer_(target, o.recognition), target_(o.target),
+    : o_(o),
+      head_(o.bisight),
+      recognizer_(target, o.recognition),
+      target_(o.target),
       models_(models)
 {
 }
@@ -120,8 +123,7 @@ void ObjectSearch::compareWithTruth(const WorldObjects& objects, const Eigen::Is
 		r.instance = name;
 		r.T_OinC0_true = T_true;
 		r.translation_error_mm = d;
-		r.rotation_error_deg =
-		    rotationAngleDeg(T_true.linear().transpose() * r.T_OinC0.linear());
+		r.rotation_error_deg = rotationAngleDeg(T_true.linear().transpose() * r.T_OinC0.linear());
 	}
 }
 

@@ -15,23 +15,32 @@ using nlohmann::json;
 json matrix34(const Eigen::Isometry3d& T)
 {
 	json rows = json::array();
-	for (int i = 0; i < 3; ++i)
-		rows.push_back({T(i, 0), T(i, 1), T(i, 2), T(i, 3)});
+	for (int i = 0; i < 3; ++i) rows.push_back({T(i, 0), T(i, 1), T(i, 2), T(i, 3)});
 	return rows;
 }
 
-json orNull(bool available, double v) { return available ? json(v) : json(nullptr); }
+json orNull(bool available, double v)
+{
+	return available ? json(v) : json(nullptr);
+}
 
 json graspJson(const RetrievalResult& g)
 {
 	const auto p = arm::gripperFromPose(g.T_GinA);
-	json j = {{"feasible", g.feasible}, {"reasons", g.reasons}, {"arm_moved", g.attempted},
-	          {"T_OinA_mm", matrix34(g.T_OinA)}, {"T_GinA_mm", matrix34(g.T_GinA)},
-	          {"grasp_pose", {{"p_mm", {p.p_mm.x(), p.p_mm.y(), p.p_mm.z()}},
-	                          {"yaw_deg", p.yaw_deg}, {"pitch_deg", p.pitch_deg},
-	                          {"roll_deg", p.roll_deg}}},
-	          {"verified", g.verified}, {"correction_mm", g.correction_mm},
-	          {"correction_deg", g.correction_deg}, {"grasped", g.grasped}};
+	json j = {{"feasible", g.feasible},
+	          {"reasons", g.reasons},
+	          {"arm_moved", g.attempted},
+	          {"T_OinA_mm", matrix34(g.T_OinA)},
+	          {"T_GinA_mm", matrix34(g.T_GinA)},
+	          {"grasp_pose",
+	           {{"p_mm", {p.p_mm.x(), p.p_mm.y(), p.p_mm.z()}},
+	            {"yaw_deg", p.yaw_deg},
+	            {"pitch_deg", p.pitch_deg},
+	            {"roll_deg", p.roll_deg}}},
+	          {"verified", g.verified},
+	          {"correction_mm", g.correction_mm},
+	          {"correction_deg", g.correction_deg},
+	          {"grasped", g.grasped}};
 	if (g.attempted)
 	{
 		const auto jj = g.joints.toMmDeg();
@@ -52,10 +61,16 @@ json timelineJson(const Timeline& t)
 json reportJson(const MissionResult& r, const MissionOptions& o)
 {
 	const bool f = r.found && !r.search.instance.empty();
-	json j = {{"mission", o.name}, {"success", r.success}, {"failure", r.failure},
-	          {"target", r.target}, {"found", r.found}, {"found_instance", r.found_instance},
-	          {"found_at_station", r.found_at_station}, {"stations_searched", r.stations_searched},
-	          {"retrieved", r.retrieved}, {"returned_home", r.returned_home},
+	json j = {{"mission", o.name},
+	          {"success", r.success},
+	          {"failure", r.failure},
+	          {"target", r.target},
+	          {"found", r.found},
+	          {"found_instance", r.found_instance},
+	          {"found_at_station", r.found_at_station},
+	          {"stations_searched", r.stations_searched},
+	          {"retrieved", r.retrieved},
+	          {"returned_home", r.returned_home},
 	          {"mode", o.mode == NavigationMode::Slam ? "slam" : "dead_reckoning"},
 	          {"final_position_error_m", r.final_position_error_m},
 	          {"final_heading_error_deg", r.final_heading_error_deg},
@@ -68,9 +83,12 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"stage_compute_seconds", r.timeline.stageComputeSeconds()},
 	          {"compute_seconds", r.timeline.computeSeconds()},
 	          {"simulated_seconds", r.timeline.simulatedSeconds()},
-	          {"render_seconds", r.timeline.renderSeconds()}, {"stereo_pairs", r.shots.size()},
-	          {"steps", r.path.size()}, {"measurements", r.measurements},
-	          {"measurements_rejected", r.measurements_rejected}, {"features", r.map.size()},
+	          {"render_seconds", r.timeline.renderSeconds()},
+	          {"stereo_pairs", r.shots.size()},
+	          {"steps", r.path.size()},
+	          {"measurements", r.measurements},
+	          {"measurements_rejected", r.measurements_rejected},
+	          {"features", r.map.size()},
 	          {"timeline", timelineJson(r.timeline)}};
 	if (r.found)
 		j["recognition"] = {{"confidence", r.search.recognition.confidence},
@@ -115,7 +133,8 @@ std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
 	}
 	s << "\n## Timeline\n\n";
 	for (const auto& e : r.timeline.events())
-		s << "- " << std::setprecision(1) << e.time_s << " s [" << e.stage << "] " << e.text << "\n";
+		s << "- " << std::setprecision(1) << e.time_s << " s [" << e.stage << "] " << e.text
+		  << "\n";
 	if (r.found && !r.retrieval.reasons.empty())
 	{
 		s << "\n## Grasp problems\n\n";

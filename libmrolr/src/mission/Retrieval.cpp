@@ -50,13 +50,15 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 {
 	std::vector<double> turns{0};
 	const double step = o_.retrieval.grasp_yaw_search_deg;
-	for (int k = 1; step > 0 && k * step < 180 + 1e-9; ++k) turns.insert(turns.end(), {k * step, -k * step});
+	for (int k = 1; step > 0 && k * step < 180 + 1e-9; ++k)
+		turns.insert(turns.end(), {k * step, -k * step});
 	for (double turn : turns)
 	{
 		const Eigen::Isometry3d T_GinA = r.T_OinA * graspInObject(turn);
 		auto c = check(r.T_OinA, T_GinA, table_z_mm);
 		if (c.feasible() && !preGraspJoints(T_GinA))
-			c.reasons.push_back("no IK solution for the pre-grasp pose (behind or above the grasp)");
+			c.reasons.push_back(
+			    "no IK solution for the pre-grasp pose (behind or above the grasp)");
 		if (turn == 0) r.reasons = c.reasons, r.T_GinA = T_GinA;
 		if (!c.feasible()) continue;
 		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = c.solutions.front().joints;
@@ -129,13 +131,14 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
 	if (o_.retrieval.visual_verification)
 		if (const auto T_OinC0 = reobserve())
 		{
-			const Eigen::Isometry3d T_GinA = arm::objectInArm(o_.dock.T_C0inA, *T_OinC0) *
-			                                 graspInObject(r.grasp_turn_deg);
+			const Eigen::Isometry3d T_GinA =
+			    arm::objectInArm(o_.dock.T_C0inA, *T_OinC0) * graspInObject(r.grasp_turn_deg);
 			const auto j = solve(T_GinA);
 			r.verified = true;
 			r.correction_mm = (T_GinA.translation() - r.T_GinA.translation()).norm();
-			r.correction_deg = Eigen::AngleAxisd(T_GinA.linear().transpose() * r.T_GinA.linear())
-			                       .angle() * 180.0 / M_PI;
+			r.correction_deg =
+			    Eigen::AngleAxisd(T_GinA.linear().transpose() * r.T_GinA.linear()).angle() * 180.0 /
+			    M_PI;
 			if (j) r.T_GinA = T_GinA, r.joints = *j;
 		}
 	moveTo(arm, r.joints, timeline);

@@ -11,7 +11,7 @@ namespace
 /** A table's footprint grown by the clearance, in its own frame (local z along its depth). */
 struct Footprint
 {
-	Eigen::Vector2d centre;  ///< (z, x) in W
+	Eigen::Vector2d centre;          ///< (z, x) in W
 	Eigen::Vector2d axis_z, axis_x;  ///< table's z and x axes in (z, x) coordinates of W
 	double half_z = 0, half_x = 0;
 
@@ -86,9 +86,8 @@ bool clear(const Footprint& f, const Eigen::Vector2d& a, const std::vector<Eigen
 }
 }  // namespace
 
-std::vector<Eigen::Vector2d> detourAroundTables(
-    const world::World& w, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-    double clearance_m)
+std::vector<Eigen::Vector2d> detourAroundTables(const world::World& w, const Eigen::Vector2d& from,
+                                                const Eigen::Vector2d& to, double clearance_m)
 {
 	for (const auto& t : w.tables)
 	{

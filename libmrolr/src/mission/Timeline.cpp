@@ -24,6 +24,9 @@ void Timeline::endStage()
 	stage_.clear();
 }
 
-void Timeline::note(const std::string& text) { events_.push_back({simulated_s_, stage_, text}); }
+void Timeline::note(const std::string& text)
+{
+	events_.push_back({simulated_s_, stage_, text});
+}
 
 }  // namespace mrolr::mission

@@ -18,7 +18,7 @@ namespace mrolr::apps
 {
 class MissionApp
 {
-   public:
+ public:
 	/** Parses the command line (argv[0] first); throws util::UsageError for bad arguments. */
 	void initialize(const std::vector<std::string>& args);
 	/** Loads the configuration (util::ConfigError before anything moves), runs, writes outputs. */

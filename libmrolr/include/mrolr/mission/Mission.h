@@ -46,7 +46,7 @@ struct MissionResult
 
 class Mission
 {
-   public:
+ public:
 	explicit Mission(const MissionOptions& o);
 	~Mission();
 	/** Runs the whole mission; never throws for a mission-level failure (not found, unreachable):
@@ -55,7 +55,7 @@ class Mission
 	/** Progress callback: stage and the latest path sample. */
 	std::function<void(const std::string& stage, const PathSample&)> on_progress;
 
-   private:
+ private:
 	struct Impl;
 	std::unique_ptr<Impl> impl_;
 };

@@ -26,7 +26,7 @@ namespace mrolr::mission
 {
 enum class NavigationMode
 {
-	Slam,  ///< active-vision EKF-SLAM (thesis 5.4–5.7)
+	Slam,          ///< active-vision EKF-SLAM (thesis 5.4–5.7)
 	DeadReckoning  ///< wheel odometry only
 };
 
@@ -42,10 +42,10 @@ struct NamedPose
 struct NavigationOptions
 {
 	int measurements_per_step = 2;  ///< features measured after each motion step
-	int min_mapped_visible = 3;  ///< a new feature is initialised while fewer are visible
+	int min_mapped_visible = 3;     ///< a new feature is initialised while fewer are visible
 	double max_range_m = 8;
 	double true_std_pan_rad = 0.002, true_std_elevation_rad = 0.01, true_std_vergence_rad = 0.002;
-	double measurement_time_s = 1.0;  ///< simulated time per measurement (saccade + search)
+	double measurement_time_s = 1.0;     ///< simulated time per measurement (saccade + search)
 	double waypoint_tolerance_m = 0.03;  ///< correction legs until the estimate is this close
 	int max_correction_legs = 3;
 	double table_clearance_m = 0.45;  ///< distance kept from a table edge when going round it
@@ -65,7 +65,8 @@ struct SearchOptions
 	double fragment_probability = 0.1;
 	bool hide_back_side = true;
 	double max_object_range_m = 2.0;  ///< objects further from C0 are not reconstructed
-	bool render_stereo = true;  ///< render each view's stereo pair into the rawlog (sim::StereoRenderer)
+	bool render_stereo =
+	    true;  ///< render each view's stereo pair into the rawlog (sim::StereoRenderer)
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
@@ -73,9 +74,9 @@ struct SearchOptions
 /** Section [retrieval]: the reach, verification and carry motions (mm) and simulated times. */
 struct RetrievalOptions
 {
-	double approach_mm = 100;  ///< pre-grasp stand-off along the approach axis z_G
-	double lift_mm = 120;  ///< lift after closing the gripper
-	double arm_move_time_s = 3.0;  ///< simulated time per arm move
+	double approach_mm = 100;         ///< pre-grasp stand-off along the approach axis z_G
+	double lift_mm = 120;             ///< lift after closing the gripper
+	double arm_move_time_s = 3.0;     ///< simulated time per arm move
 	bool visual_verification = true;  ///< re-observe and correct before closing (beyond 7.2.2)
 	/** 0: only the model's grasp line; > 0: if it is infeasible, also the grasp turned about O's
 	 * vertical axis in steps of this (for objects symmetric about it), smallest turn first. */
@@ -87,15 +88,15 @@ struct RetrievalOptions
 /** The whole mission configuration. */
 struct MissionOptions
 {
-	std::string config_path;  ///< the mission file itself
+	std::string config_path;       ///< the mission file itself
 	std::string name = "mission";  ///< [mission] name: used in the output folder name
-	std::string world_file;  ///< resolved path of maps/<world>/world.ini
-	world::World world;  ///< as loaded from world_file
+	std::string world_file;        ///< resolved path of maps/<world>/world.ini
+	world::World world;            ///< as loaded from world_file
 	std::string target;  ///< model to fetch, datasets/objects/<target>.ini (default: the model of
 	                     ///< the world's mission target)
-	std::string target_model_file;  ///< resolved object definition of the target
-	std::vector<std::string> route;  ///< waypoint names driven before searching ("world" = all)
-	std::string home_waypoint;  ///< default: the world's home waypoint
+	std::string target_model_file;    ///< resolved object definition of the target
+	std::vector<std::string> route;   ///< waypoint names driven before searching ("world" = all)
+	std::string home_waypoint;        ///< default: the world's home waypoint
 	std::vector<NamedPose> stations;  ///< search stations in order (names or "z x phi_deg")
 	NavigationMode mode = NavigationMode::Slam;
 	bool obstacle_mode = false;
@@ -120,8 +121,8 @@ struct MissionOptions
 	static MissionOptions load(const std::string& path);
 	/** As load(), from an already open configuration (for tests that override keys); relative
 	 * file names are resolved against @p base_dir. */
-	static MissionOptions fromConfig(
-	    const mrpt::config::CConfigFileBase& cfg, const std::string& base_dir);
+	static MissionOptions fromConfig(const mrpt::config::CConfigFileBase& cfg,
+	                                 const std::string& base_dir);
 	void dump(std::ostream& out) const;
 };
 

@@ -35,10 +35,10 @@ struct MappedLandmark
 
 class Navigator
 {
-   public:
+ public:
 	/** @p truth: the true vehicle pose (for the simulated head's measurements only). */
-	Navigator(const MissionOptions& o, hw::BaseDevice& base,
-	          std::function<Eigen::Vector3d()> truth, Timeline& timeline);
+	Navigator(const MissionOptions& o, hw::BaseDevice& base, std::function<Eigen::Vector3d()> truth,
+	          Timeline& timeline);
 	/** Drives to @p goal (z, x, φ in W), going round tables in the way. */
 	void driveTo(const NamedPose& goal);
 	/** The current estimate (SLAM or odometry). */
@@ -49,7 +49,7 @@ class Navigator
 	std::function<void(const PathSample&)> on_step;
 	int measurements = 0, rejected = 0;
 
-   private:
+ private:
 	void driveStraightTo(const Eigen::Vector3d& goal);
 	void execute(const base::PlannedStep& step);
 	void measure();
@@ -72,8 +72,7 @@ class Navigator
 /** Via points that take the straight path from @p from to @p to (z, x in W) round every table of
  * @p w it would cross, keeping @p clearance_m from the table's edges; empty when the path is
  * clear. */
-std::vector<Eigen::Vector2d> detourAroundTables(
-    const world::World& w, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-    double clearance_m);
+std::vector<Eigen::Vector2d> detourAroundTables(const world::World& w, const Eigen::Vector2d& from,
+                                                const Eigen::Vector2d& to, double clearance_m);
 
 }  // namespace mrolr::mission

@@ -37,7 +37,7 @@ struct SearchResult
 	bool found = false;
 	recog::RecognitionResult recognition;
 	geometry::HeadAngles angles;  ///< head angles of the view that recognised
-	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();  ///< recognised, mm
+	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();   ///< recognised, mm
 	Eigen::Isometry3d T_OinC0 = Eigen::Isometry3d::Identity();  ///< recognised, mm
 	std::string instance;  ///< the true object nearest to the recognised pose ("" if none)
 	Eigen::Isometry3d T_OinC0_true = Eigen::Isometry3d::Identity();  ///< mm
@@ -48,7 +48,7 @@ struct SearchResult
 
 class ObjectSearch
 {
-   public:
+ public:
 	/** @p target: the model wire-frame (O, mm) the recogniser looks for. */
 	ObjectSearch(const MissionOptions& o, const model::WireFrame& target,
 	             const std::map<std::string, model::WireFrame>& models);
@@ -68,7 +68,7 @@ class ObjectSearch
 	/** Called with the head angles of every sweep view (e.g. to grab a stereo pair). */
 	std::function<void(const geometry::HeadAngles&)> on_view;
 
-   private:
+ private:
 	void compareWithTruth(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,
 	                      SearchResult& r) const;
 	const MissionOptions& o_;

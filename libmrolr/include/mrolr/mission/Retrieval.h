@@ -6,7 +6,8 @@
  * pose) before the arm moves; the arm goes to a pre-grasp pose approach_mm back along z_G (or above
  * the grasp when that is out of reach), re-observes the object with the head and
  * corrects the grasp (visual verification, beyond the thesis's open loop), closes the gripper and
- * lifts. An unreachable or infeasible grasp is reported with its reasons and the arm never moves. */
+ * lifts. An unreachable or infeasible grasp is reported with its reasons and the arm never moves.
+ */
 #include <mrolr/arm/AnalyticIk.h>
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/MissionOptions.h>
@@ -20,21 +21,21 @@ struct RetrievalResult
 {
 	bool attempted = false;  ///< the arm moved
 	bool feasible = false;
-	std::vector<std::string> reasons;  ///< why not feasible / what failed
+	std::vector<std::string> reasons;                          ///< why not feasible / what failed
 	Eigen::Isometry3d T_OinA = Eigen::Isometry3d::Identity();  ///< mm, from the first recognition
 	Eigen::Isometry3d T_GinA = Eigen::Isometry3d::Identity();  ///< grasp actually used, mm
 	double grasp_turn_deg = 0;  ///< turn of the model's grasp about O's vertical axis
-	arm::RtxJoints joints;  ///< joint solution of the grasp
-	bool verified = false;  ///< the re-observation recognised the object
-	double correction_mm = 0;  ///< |t(T_GinA corrected) − t(T_GinA first)|
+	arm::RtxJoints joints;      ///< joint solution of the grasp
+	bool verified = false;      ///< the re-observation recognised the object
+	double correction_mm = 0;   ///< |t(T_GinA corrected) − t(T_GinA first)|
 	double correction_deg = 0;
 	bool retrieved = false;  ///< the gripper holds the target
-	std::string grasped;  ///< the instance in the gripper
+	std::string grasped;     ///< the instance in the gripper
 };
 
 class Retrieval
 {
-   public:
+ public:
 	/** @p reobserve: a new recognition of the object from the head (returns T_OinC0 in mm, or
 	 * nothing when not recognised); @p grasped: the instance the gripper holds ("" if none). */
 	Retrieval(const MissionOptions& o, const model::WireFrame& target);
@@ -45,7 +46,7 @@ class Retrieval
 	/** The table plane's height in A (mm) for a table top @p top_height_m above the floor. */
 	double tableZinA(double top_height_m) const;
 
-   private:
+ private:
 	arm::GraspCheck check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
 	                      double table_z_mm) const;
 	bool reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,

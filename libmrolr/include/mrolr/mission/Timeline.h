@@ -17,7 +17,7 @@ struct TimelineEvent
 
 class Timeline
 {
-   public:
+ public:
 	/** Adds simulated physical time (motion, head moves, arm moves), seconds. */
 	void advance(double seconds) { simulated_s_ += seconds; }
 	double simulatedSeconds() const { return simulated_s_; }
@@ -38,7 +38,7 @@ class Timeline
 	void note(const std::string& text);
 	const std::vector<TimelineEvent>& events() const { return events_; }
 
-   private:
+ private:
 	double simulated_s_ = 0, compute_s_ = 0, render_s_ = 0, stage_start_s_ = 0;
 	std::string stage_;
 	std::map<std::string, double> stage_s_, stage_compute_s_;
@@ -48,15 +48,15 @@ class Timeline
 /** Measures the wall time of a scope and adds it to a timeline's compute time. */
 class ComputeTimer
 {
-   public:
+ public:
 	explicit ComputeTimer(Timeline& t) : t_(t), start_(std::chrono::steady_clock::now()) {}
 	~ComputeTimer()
 	{
-		t_.addCompute(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_)
-		                  .count());
+		t_.addCompute(
+		    std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
 	}
 
-   private:
+ private:
 	Timeline& t_;
 	std::chrono::steady_clock::time_point start_;
 };

@@ -31,8 +31,8 @@ void printSummary(std::ostream& out, const mission::MissionResult& r, const std:
 	    << (r.returned_home ? "yes" : "no") << " (error " << r.final_position_error_m << " m)\n";
 	if (r.found)
 		out << "  object pose error " << r.search.translation_error_mm << " mm, "
-		    << r.search.rotation_error_deg << " deg; grasp correction "
-		    << r.retrieval.correction_mm << " mm\n";
+		    << r.search.rotation_error_deg << " deg; grasp correction " << r.retrieval.correction_mm
+		    << " mm\n";
 	out << "  simulated " << std::setprecision(1) << r.timeline.simulatedSeconds()
 	    << " s, robot compute " << std::setprecision(3) << r.timeline.computeSeconds()
 	    << " s\n  outputs in " << dir << "\n";
@@ -41,9 +41,10 @@ void printSummary(std::ostream& out, const mission::MissionResult& r, const std:
 
 void MissionApp::initialize(const std::vector<std::string>& args)
 {
-	TCLAP::CmdLine cmd("mrolr-mission: navigate, map, search, recognise, retrieve and return home "
-	                   "(docs/mission.md)",
-	                   ' ', "1");
+	TCLAP::CmdLine cmd(
+	    "mrolr-mission: navigate, map, search, recognise, retrieve and return home "
+	    "(docs/mission.md)",
+	    ' ', "1");
 	TCLAP::ValueArg<std::string> cfg("", "config", "mission .ini (default config/mission_sim.ini)",
 	                                 false, config_path, "FILE", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "output folder (default out/<name>-<timestamp>)",
@@ -70,8 +71,8 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	if (!quiet)
 		m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
 		{
-			progress << "\r[mission] " << std::setw(12) << std::left << stage << " t="
-			         << std::fixed << std::setprecision(0) << std::setw(5) << s.time_s
+			progress << "\r[mission] " << std::setw(12) << std::left << stage << " t=" << std::fixed
+			         << std::setprecision(0) << std::setw(5) << s.time_s
 			         << " s  z=" << std::setprecision(2) << s.estimate.x()
 			         << " x=" << s.estimate.y() << " features=" << s.features << "   "
 			         << std::flush;
