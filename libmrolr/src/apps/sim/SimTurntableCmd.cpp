@@ -4,14 +4,17 @@
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SimTurntable.h>
+#include <mrolr/stereo/HeadCalibration.h>
 
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 
 namespace mrolr::apps
 {
@@ -49,6 +52,41 @@ nlohmann::json calibrationJson(const sim::SimTurntable& t, const geometry::BiSig
 	        {"T_LinC0", matrixJson(head.T_LinC0(a))},
 	        {"T_RinC0", matrixJson(head.T_RinC0(a))}};
 }
+
+std::string joinDoubles(const double* v, int n)
+{
+	std::ostringstream s;
+	s.precision(17);
+	for (int i = 0; i < n; ++i) s << (i ? " " : "") << v[i];
+	return s.str();
+}
+
+/** DIR/turntable.ini as `mrolr-model build --turntable` reads it (docs/model.md): p_T = R_TfromL ·
+ * p_L + t_LinT_mm, L in thesis axes; view k shows the object turned by angles_deg[k] about T's z.
+ */
+void writeModelTurntableIni(const std::string& path, const std::string& object,
+                            const Eigen::Isometry3d& T_TinL, const std::vector<double>& angles_deg,
+                            const std::vector<std::string>& view_names)
+{
+	const Eigen::Isometry3d T_LinT = T_TinL.inverse();  // metres
+	const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> R_TfromL = T_LinT.linear();
+	const Eigen::Vector3d t_LinT_mm = 1000.0 * T_LinT.translation();
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.write("turntable", "object", object);
+	cfg.write("turntable", "calib", std::string("calib.ini"));
+	cfg.write("turntable", "R_TfromL", joinDoubles(R_TfromL.data(), 9));
+	cfg.write("turntable", "t_LinT_mm", joinDoubles(t_LinT_mm.data(), 3));
+	cfg.write("turntable", "views", int(view_names.size()));
+	cfg.write("turntable", "truth", object + "_truth.wf");
+	for (size_t k = 0; k < view_names.size(); ++k)
+	{
+		const std::string sec = "view_" + std::to_string(k);
+		cfg.write(sec, "left", view_names[k] + "_left.png");
+		cfg.write(sec, "right", view_names[k] + "_right.png");
+		cfg.write(sec, "angle_deg", angles_deg[k]);
+	}
+	std::ofstream(path) << cfg.getContent();
+}
 }  // namespace
 
 int SimApp::runTurntable(std::ostream& out)
@@ -62,6 +100,8 @@ int SimApp::runTurntable(std::ostream& out)
 	fs::create_directories(out_path);
 	const auto p = [&](const std::string& n) { return (fs::path(out_path) / n).string(); };
 	const int views = int(std::lround(360.0 / to.step_deg));
+	std::vector<double> angles_deg;
+	std::vector<std::string> view_names;
 	for (int k = 0; k < views; ++k)
 	{
 		const auto t0 = std::chrono::steady_clock::now();
@@ -69,6 +109,8 @@ int SimApp::runTurntable(std::ostream& out)
 		render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		char name[32];
 		std::snprintf(name, sizeof(name), "view_%03d", int(std::lround(table.angleDeg())));
+		angles_deg.push_back(table.angleDeg());
+		view_names.push_back(name);
 		saveImage(img.left, p(std::string(name) + "_left.png"));
 		saveImage(img.right, p(std::string(name) + "_right.png"));
 		files_written.push_back(p(std::string(name) + "_{left,right}.png"));
@@ -80,6 +122,11 @@ int SimApp::runTurntable(std::ostream& out)
 	std::ofstream(p("calibration.json"))
 	    << calibrationJson(table, head, to.step_deg, views).dump(2) << "\n";
 	model::saveWireFrame(sim::objectWireFrame(shape), p(shape.name + "_truth.wf"));
+	stereo::saveStereoCalibration(stereo::calibrationFromHead(head, table.headAngles()),
+	                              p("calib.ini"));
+	writeModelTurntableIni(p("turntable.ini"), shape.name, table.T_TinL(), angles_deg, view_names);
+	files_written.push_back(p("calib.ini"));
+	files_written.push_back(p("turntable.ini"));
 	files_written.push_back(p("calibration.json"));
 	files_written.push_back(p(shape.name + "_truth.wf"));
 	return 0;
