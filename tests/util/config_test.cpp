@@ -95,3 +95,13 @@ TEST(Cli, NegativeNumbersSurviveAndParse)
 	EXPECT_EQ(mrolr::util::parseNumberList("1,-2,3", 3, "pose").at(1), -2.0);
 	EXPECT_THROW(mrolr::util::parseNumberList("1,2", 3, "pose"), mrolr::util::UsageError);
 }
+
+TEST(Cli, ProjectFileFallsBackToTheSourceTree)
+{
+	// A shipped file is found whatever the working directory.
+	const std::string found = mrolr::util::projectFile("config/bisight.ini");
+	EXPECT_TRUE(std::ifstream(found).good()) << found;
+	EXPECT_EQ(mrolr::util::projectFile("no/such/file.ini"), "no/such/file.ini");
+	EXPECT_THROW(mrolr::util::requireProjectFile("no/such/file.ini"), std::runtime_error);
+	EXPECT_EQ(mrolr::util::requireProjectFile(found), found);
+}

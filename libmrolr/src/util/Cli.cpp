@@ -1,6 +1,7 @@
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
+#include <filesystem>
 #include <iostream>
 
 namespace mrolr::util
@@ -53,6 +54,25 @@ int runMain(const std::string& prog, const std::function<int()>& body)
 		std::cerr << prog << ": error: " << e.what() << "\n";
 		return kExitFailure;
 	}
+}
+
+}  // namespace mrolr::util
+
+namespace mrolr::util
+{
+std::string projectFile(const std::string& path)
+{
+	if (path.empty() || std::filesystem::exists(path) || path.front() == '/') return path;
+	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
+	return std::filesystem::exists(in_source) ? in_source : path;
+}
+
+std::string requireProjectFile(const std::string& path)
+{
+	const std::string found = projectFile(path);
+	if (!std::filesystem::exists(found))
+		throw std::runtime_error("file '" + path + "' does not exist");
+	return found;
 }
 
 }  // namespace mrolr::util

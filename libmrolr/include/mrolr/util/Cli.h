@@ -36,3 +36,16 @@ std::vector<double> parseNumberList(const std::string& text, size_t count, const
 int runMain(const std::string& prog, const std::function<int()>& body);
 
 }  // namespace mrolr::util
+
+namespace mrolr::util
+{
+/** A shipped file (config/..., maps/..., datasets/...) as given when it exists from the working
+ * directory (or is absolute), else the same relative path inside the source tree the binary was
+ * built from, else @p path unchanged (so that the caller's "cannot open" names what was asked). */
+std::string projectFile(const std::string& path);
+
+/** As projectFile, but throws std::runtime_error("file '<path>' does not exist") when neither
+ * exists. */
+std::string requireProjectFile(const std::string& path);
+
+}  // namespace mrolr::util

@@ -16,8 +16,7 @@ namespace mrolr::apps
 {
 std::string EkfSimApp::defaultConfigPath()
 {
-	const std::string local = "config/ekf_sim.ini";
-	return std::ifstream(local).good() ? local : std::string(MROLR_SOURCE_DIR) + "/" + local;
+	return util::projectFile("config/ekf_sim.ini");
 }
 
 void EkfSimApp::initialize(const std::vector<std::string>& args)

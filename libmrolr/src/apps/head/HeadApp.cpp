@@ -66,8 +66,7 @@ geometry::HeadAngles anglesAt(const std::vector<double>& v, size_t first)
 
 std::string HeadApp::defaultConfigPath()
 {
-	const std::string local = "config/bisight.ini";
-	return std::ifstream(local).good() ? local : std::string(MROLR_SOURCE_DIR) + "/" + local;
+	return util::projectFile("config/bisight.ini");
 }
 
 void HeadApp::initialize(const std::vector<std::string>& args)

@@ -21,19 +21,10 @@ namespace mrolr::apps
 {
 namespace
 {
-/** A shipped file (config/...) found relative to the working directory or else the source tree. */
-std::string projectFile(const std::string& path)
-{
-	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
-	if (!std::filesystem::exists(path) && std::filesystem::exists(in_source)) return in_source;
-	if (!std::filesystem::exists(path))
-		throw std::runtime_error("configuration file '" + path + "' does not exist");
-	return path;
-}
 
 mrpt::config::CConfigFile openConfig(const std::string& path)
 {
-	return mrpt::config::CConfigFile(projectFile(path));
+	return mrpt::config::CConfigFile(util::requireProjectFile(path));
 }
 
 template <typename Opt>
@@ -129,7 +120,7 @@ int ModelApp::runBuild()
 int ModelApp::runScene()
 {
 	std::optional<geometry::BiSightHead> head;
-	if (head_deg) head.emplace(geometry::BiSightOptions::fromFile(projectFile(bisight_path)));
+	if (head_deg) head.emplace(geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
 	const auto calib = calib_path.empty()
 						   ? stereo::calibrationFromHead(*head, anglesFromDeg(*head_deg))
 						   : stereo::loadStereoCalibration(calib_path);

@@ -22,14 +22,6 @@ namespace mrolr::apps
 namespace
 {
 /** A shipped file (config/...) relative to the working directory, or else to the source tree. */
-std::string projectFile(const std::string& path)
-{
-	const std::string in_source = std::string(MROLR_SOURCE_DIR) + "/" + path;
-	if (!std::filesystem::exists(path) && std::filesystem::exists(in_source)) return in_source;
-	if (!std::filesystem::exists(path))
-		throw std::runtime_error("configuration file '" + path + "' does not exist");
-	return path;
-}
 
 cv::Mat readImage(const std::string& path, int flags)
 {
@@ -55,7 +47,7 @@ void RecognizeApp::loadScenes()
 	if (!scene_paths.empty()) return;
 	const auto calib = stereo::loadStereoCalibration(calib_path);
 	stereo::SceneOptions so;
-	so.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(scene_config_path)), "scene");
+	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)), "scene");
 	const auto s = stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
 	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so);
 	scenes.push_back(model::sceneToWireFrame(s));
@@ -70,7 +62,7 @@ int RecognizeApp::run(std::ostream& out)
 		writeDemo(out);
 		return util::kExitOk;
 	}
-	options.loadFromConfigFile(mrpt::config::CConfigFile(projectFile(config_path)), "recognition");
+	options.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(config_path)), "recognition");
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();
 	for (const auto& m : models)
