@@ -21,7 +21,9 @@ const std::string kLab = std::string(MROLR_SOURCE_DIR) + "/maps/lab/world.ini";
 
 std::string simTurntable(const std::string& object)
 {
-	const auto dir = (fs::path(testing::TempDir()) / ("mrolr_tt_" + object)).string();
+	// One folder per test: ctest runs the tests of this file in parallel processes.
+	const std::string test = testing::UnitTest::GetInstance()->current_test_info()->name();
+	const auto dir = (fs::path(testing::TempDir()) / ("mrolr_tt_" + object + "_" + test)).string();
 	fs::remove_all(dir);
 	apps::SimApp sim;
 	sim.initialize({"mrolr-sim", "--world", kLab, "--turntable", object, "--out", dir, "--json"});
