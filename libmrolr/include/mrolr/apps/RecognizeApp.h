@@ -16,8 +16,17 @@
  *     mrolr-recognize --make-demo DIR
  *
  * writes the ten synthetic lab objects (DIR/models/NAME.wf) and noisy, cluttered table scenes with
- * their truth (DIR/scenes/table_K.wf, DIR/scenes/truth.json) for trying the tool. */
+ * their truth (DIR/scenes/table_K.wf, DIR/scenes/truth.json) for trying the tool.
+ *
+ *     mrolr-recognize --evaluate DIR [--model M.wf ... | --truth-models] [--eval-scenes N]
+ *                     [--eval-seed S] [--config config/recognition.ini] [--json]
+ *
+ * renders the fixed evaluation set of [evaluation] (RecognitionEvaluation.h), reconstructs every
+ * scene, searches every model (default every .wf of datasets/objects; --truth-models: the simulator's
+ * exact wire-frames) and compares with the truth; writes DIR/scene_KK/{left,right,overlay}.png,
+ * scene.wf, calib.ini, truth.json, and DIR/cases.json, DIR/summary.json. */
 
+#include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
 
@@ -45,6 +54,10 @@ class RecognizeApp
 	std::string scene_config_path = "config/model.ini";
 	std::string overlay_png, scene3d_path;
 	std::string demo_dir;  ///< --make-demo
+	std::string evaluate_dir;  ///< --evaluate
+	bool truth_models = false;  ///< --truth-models
+	int eval_scenes = 0;        ///< --eval-scenes (0: [evaluation] scenes)
+	long eval_seed = -1;        ///< --eval-seed (-1: [evaluation] seed)
 	bool json = false;
 	bool help_shown = false;
 
@@ -53,9 +66,16 @@ class RecognizeApp
 	std::vector<model::WireFrame> models;
 	std::vector<model::WireFrame> scenes;           ///< the scene models searched, in order
 	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
+	EvaluationOptions eval_options;                 ///< --evaluate
+	std::vector<EvalCase> eval_cases;
+	EvalSummary eval_summary;
 
  private:
 	void loadScenes();
+	int runEvaluation(std::ostream& out);
+	std::unique_ptr<EvalSceneGenerator> makeGenerator(const EvaluationOptions& eo) const;
+	void loadEvaluationModels(const EvalSceneGenerator& gen);
+	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;
 	void printText(std::ostream& out) const;
 	void printJson(std::ostream& out) const;

@@ -44,6 +44,16 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	TCLAP::SwitchArg js("", "json", "print one JSON object", cmd);
 	Str demo("", "make-demo", "write demo models and scenes into DIR and exit", false, "", "DIR",
 	         cmd);
+	Str evaluate("", "evaluate",
+	             "render the evaluation set ([evaluation] of --config), recognise, compare with "
+	             "the truth; outputs into DIR",
+	             false, "", "DIR", cmd);
+	TCLAP::SwitchArg truth("", "truth-models",
+	                       "--evaluate with the simulator's exact wire-frames as the models", cmd);
+	TCLAP::ValueArg<int> nscenes("", "eval-scenes", "--evaluate: number of scenes", false, 0, "N",
+	                             cmd);
+	TCLAP::ValueArg<long> seed("", "eval-seed", "--evaluate: seed of scene 0", false, -1, "S",
+	                           cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;
@@ -54,7 +64,16 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	config_path = cfg.getValue(), scene_config_path = scfg.getValue();
 	overlay_png = overlay.getValue(), scene3d_path = s3d.getValue(), json = js.getValue();
 	demo_dir = demo.getValue();
+	evaluate_dir = evaluate.getValue(), truth_models = truth.getValue();
+	eval_scenes = nscenes.getValue(), eval_seed = seed.getValue();
+	if (eval_scenes < 0) throw util::UsageError("--eval-scenes must be positive");
 	if (!demo_dir.empty()) return;
+	if (!evaluate_dir.empty())
+	{
+		if (!scene_paths.empty() || !left_png.empty() || !right_png.empty())
+			throw util::UsageError("--evaluate renders its own scenes: no --scene/--left/--right");
+		return;
+	}
 	if (model_paths.empty()) throw util::UsageError("give at least one --model M.wf");
 	requireInputs(*this);
 }

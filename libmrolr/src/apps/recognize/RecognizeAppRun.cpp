@@ -62,6 +62,7 @@ int RecognizeApp::run(std::ostream& out)
 		writeDemo(out);
 		return util::kExitOk;
 	}
+	if (!evaluate_dir.empty()) return runEvaluation(out);
 	options.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(config_path)), "recognition");
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();

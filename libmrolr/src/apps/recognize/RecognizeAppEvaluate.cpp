@@ -1,0 +1,171 @@
+#include "RecognizeOutput.h"
+
+#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/sim/SceneBuilder.h>
+#include <mrolr/util/Cli.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+
+namespace mrolr::apps
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+nlohmann::json caseJson(const EvalCase& c)
+{
+	return {{"scene", c.scene},          {"model", c.model},
+	        {"present", c.present},      {"visible_fraction", c.visible_fraction},
+	        {"found", c.found},          {"correct", c.correct},
+	        {"rot_err_deg", c.rot_err_deg}, {"trans_err_mm", c.trans_err_mm},
+	        {"score", c.score},          {"truth_score", c.truth_score},
+	        {"level", c.level},          {"ms", c.ms}};
+}
+
+nlohmann::json objectJson(const EvalObject& o)
+{
+	recog::RecognitionResult r;
+	r.T_OinS = o.T_OinL;
+	return {{"model", o.model},
+	        {"T_OinL_mm", resultJson(r)["T"]},
+	        {"visible_fraction", o.visible_fraction}};
+}
+
+/** Writes left/right images, the scene wire-frame, its calibration and truth under DIR/scene_K. */
+std::string saveScene(const EvalScene& s, const std::string& dir)
+{
+	char name[32];
+	std::snprintf(name, sizeof(name), "scene_%02d", s.index);
+	const fs::path d = fs::path(dir) / name;
+	fs::create_directories(d);
+	cv::imwrite((d / "left.png").string(), s.left);
+	cv::imwrite((d / "right.png").string(), s.right);
+	model::saveWireFrame(s.scene, (d / "scene.wf").string());
+	mrpt::config::CConfigFile calib((d / "calib.ini").string());
+	s.calib.saveToConfigFile(calib, "stereo_calib");
+	nlohmann::json objects = nlohmann::json::array();
+	for (const auto& o : s.objects) objects.push_back(objectJson(o));
+	std::ofstream((d / "truth.json").string()) << nlohmann::json{{"objects", objects}}.dump(2);
+	return d.string();
+}
+
+std::vector<std::string> defaultModelPaths()
+{
+	std::vector<std::string> out;
+	for (const auto& e : fs::directory_iterator(util::requireProjectFile("datasets/objects")))
+		if (e.path().extension() == ".wf") out.push_back(e.path().string());
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+nlohmann::json summaryJson(const EvalSummary& s)
+{
+	return {{"rate_cases", s.rate_cases},          {"recognised", s.recognised},
+	        {"rate", s.rate},                      {"absent_cases", s.absent_cases},
+	        {"false_positives", s.false_positives}, {"wrong_poses", s.wrong_poses},
+	        {"median_rot_err_deg", s.median_rot_err_deg},
+	        {"median_trans_err_mm", s.median_trans_err_mm},
+	        {"median_ms", s.median_ms},            {"max_ms", s.max_ms},
+	        {"median_absent_ms", s.median_absent_ms}};
+}
+}  // namespace
+
+std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(
+    const EvaluationOptions& eo) const
+{
+	const auto lab = world::World::load(util::requireProjectFile(eo.world));
+	sim::RenderOptions ro;
+	ro.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile("config/sim.ini")),
+	                      "render");
+	stereo::SceneOptions so;
+	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)),
+	                      "scene");
+	const geometry::BiSightHead head(
+	    geometry::BiSightOptions::fromFile(util::requireProjectFile("config/bisight.ini")));
+	return std::make_unique<EvalSceneGenerator>(eo, head, ro, so, sim::loadObjectShapes(lab));
+}
+
+void RecognizeApp::loadEvaluationModels(const EvalSceneGenerator& gen)
+{
+	if (truth_models)
+		for (const auto& [name, shape] : gen.shapes()) models.push_back(gen.truthWireFrame(name));
+	else
+		for (const auto& p : model_paths.empty() ? defaultModelPaths() : model_paths)
+			models.push_back(model::loadWireFrame(p));
+	for (const auto& m : models) gen.truthWireFrame(m.name);  // every model must be an object
+}
+
+int RecognizeApp::runEvaluation(std::ostream& out)
+{
+	const mrpt::config::CConfigFile cfg(util::requireProjectFile(config_path));
+	options.loadFromConfigFile(cfg, "recognition");
+	eval_options.loadFromConfigFile(cfg, "evaluation");
+	if (eval_scenes > 0) eval_options.scenes = eval_scenes;
+	if (eval_seed >= 0) eval_options.seed = static_cast<unsigned>(eval_seed);
+	const auto gen = makeGenerator(eval_options);
+	loadEvaluationModels(*gen);
+	std::vector<recog::Recognizer> recs;
+	std::vector<std::vector<double>> symmetries;
+	for (const auto& m : models)
+	{
+		recs.emplace_back(m, options);
+		symmetries.push_back(symmetryAnglesDeg(gen->truthWireFrame(m.name)));
+	}
+	for (int k = 0; k < eval_options.scenes; ++k)
+	{
+		const EvalScene s = gen->make(k);
+		std::vector<recog::RecognitionResult> found;
+		for (size_t i = 0; i < recs.size(); ++i)
+		{
+			eval_cases.push_back(evaluateCase(recs[i], s, symmetries[i], eval_options));
+			found.push_back(eval_cases.back().result);
+		}
+		const std::string d = saveScene(s, evaluate_dir);
+		cv::Mat colour;
+		cv::cvtColor(s.left, colour, cv::COLOR_GRAY2BGR);
+		writeOverlay(colour, s.calib, {s.scene}, models, found, d + "/overlay.png");
+	}
+	eval_summary = summarize(eval_cases, eval_options);
+	writeEvaluation(out);
+	return util::kExitOk;
+}
+
+void RecognizeApp::writeEvaluation(std::ostream& out) const
+{
+	nlohmann::json cases = nlohmann::json::array();
+	for (const auto& c : eval_cases) cases.push_back(caseJson(c));
+	const nlohmann::json summary = summaryJson(eval_summary);
+	std::ofstream((fs::path(evaluate_dir) / "cases.json").string()) << cases.dump(1) << "\n";
+	std::ofstream((fs::path(evaluate_dir) / "summary.json").string()) << summary.dump(2) << "\n";
+	if (json)
+	{
+		out << nlohmann::json{{"summary", summary}, {"cases", cases}}.dump(2) << "\n";
+		return;
+	}
+	out << std::fixed << std::setprecision(2);
+	for (const auto& c : eval_cases)
+		if (c.present || c.found)
+			out << "scene " << c.scene << " " << c.model << (c.present ? "" : " (absent)")
+			    << ": visible " << c.visible_fraction << ", "
+			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found") << ", score "
+			    << c.score << " (at truth " << c.truth_score << "), level " << c.level << ", err "
+			    << c.rot_err_deg << " deg " << c.trans_err_mm << " mm, " << c.ms << " ms\n";
+	const auto& s = eval_summary;
+	out << "recognised " << s.recognised << "/" << s.rate_cases << " (" << 100 * s.rate
+	    << " %) with visible fraction >= " << eval_options.min_visible_fraction
+	    << "; false positives " << s.false_positives << "/" << s.absent_cases
+	    << "; wrong poses " << s.wrong_poses << "; median errors " << s.median_rot_err_deg
+	    << " deg, " << s.median_trans_err_mm << " mm; per model median " << s.median_ms
+	    << " ms (absent " << s.median_absent_ms << " ms, max " << s.max_ms << " ms)\n";
+}
+
+}  // namespace mrolr::apps
