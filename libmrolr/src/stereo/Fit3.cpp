@@ -201,29 +201,37 @@ std::optional<LineFit3> fitLine3(const std::vector<StereoEdgel>& e, const Rectif
 	return f;
 }
 
-std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
-                                   const FitOptions& o)
+std::optional<cv::RotatedRect> fitEllipse2D(const std::vector<cv::Point2d>& pts,
+                                            const FitOptions& o)
 {
-	if (static_cast<int>(e.size()) < o.min_conic_edgels) return std::nullopt;
-	const cv::RotatedRect el = cv::fitEllipseDirect(imagePoints(e));
+	std::vector<cv::Point2f> p32(pts.begin(), pts.end());
+	const cv::RotatedRect el = cv::fitEllipseDirect(p32);
 	const double big = std::max(el.size.width, el.size.height) / 2;
 	const double small = std::min(el.size.width, el.size.height) / 2;
 	if (!(small > 2) || big > o.max_conic_radius_px) return std::nullopt;
 	std::vector<cv::Point2d> uv;
-	for (const auto& x : e)
+	for (const auto& x : pts)
 	{
-		if (ellipseDistance(el, x.xy_px) > o.conic_tol_px) return std::nullopt;
-		uv.push_back(ellipseFrame(el, x.xy_px));
+		if (ellipseDistance(el, x) > o.conic_tol_px) return std::nullopt;
+		uv.push_back(ellipseFrame(el, x));
 	}
 	const auto t = unwrappedAngles(uv);
-	const double span = std::abs(t.back() - t.front());
-	if (span < o.min_arc_deg * M_PI / 180) return std::nullopt;
-	Eigen::MatrixXd A(e.size(), 3);
-	Eigen::VectorXd d(e.size());
-	for (size_t i = 0; i < e.size(); ++i)
+	if (std::abs(t.back() - t.front()) < o.min_arc_deg * M_PI / 180) return std::nullopt;
+	return el;
+}
+
+std::optional<ConicFit3> conicFromEllipse(const cv::RotatedRect& el,
+                                          const std::vector<cv::Point2d>& arc_px,
+                                          const std::vector<StereoEdgel>& matched,
+                                          const Rectifier& rect, const FitOptions& o)
+{
+	if (matched.size() < 3) return std::nullopt;
+	Eigen::MatrixXd A(matched.size(), 3);
+	Eigen::VectorXd d(matched.size());
+	for (size_t i = 0; i < matched.size(); ++i)
 	{
-		A.row(static_cast<int>(i)) << e[i].xy_px.x, e[i].xy_px.y, 1.0;
-		d[static_cast<int>(i)] = e[i].d_px;
+		A.row(static_cast<int>(i)) << matched[i].xy_px.x, matched[i].xy_px.y, 1.0;
+		d[static_cast<int>(i)] = matched[i].d_px;
 	}
 	const Eigen::Vector3d plane = robustSolve(A, d);
 	std::vector<Eigen::Vector3d> Q, P;
@@ -232,13 +240,24 @@ std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rect
 		const cv::Point2d q = ellipsePoint(el, 2 * M_PI * k / 180);
 		Q.push_back(onPlane(rect, plane, q.x, q.y));
 	}
-	for (const auto& x : e) P.push_back(onPlane(rect, plane, x.xy_px.x, x.xy_px.y));
+	for (const auto& x : arc_px) P.push_back(onPlane(rect, plane, x.x, x.y));
 	ConicFit3 c = ellipseIn3D(Q);
 	setArc(c, P);
-	c.edgels = static_cast<int>(e.size());
-	c.rms_mm = conicRms(c, e);
+	c.edgels = static_cast<int>(matched.size());
+	c.rms_mm = conicRms(c, matched);
 	if (c.rms_mm > o.max_rms_mm) return std::nullopt;
 	return c;
+}
+
+std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
+                                   const FitOptions& o)
+{
+	if (static_cast<int>(e.size()) < o.min_conic_edgels) return std::nullopt;
+	std::vector<cv::Point2d> px;
+	for (const auto& x : e) px.push_back(x.xy_px);
+	const auto el = fitEllipse2D(px, o);
+	if (!el) return std::nullopt;
+	return conicFromEllipse(*el, px, e, rect, o);
 }
 
 }  // namespace mrolr::stereo

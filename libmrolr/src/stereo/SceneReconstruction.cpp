@@ -4,6 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
@@ -18,6 +19,42 @@ cv::Mat toGrey8(const cv::Mat& img)
 	if (img.channels() == 4) cv::cvtColor(img, g, cv::COLOR_BGRA2GRAY);
 	if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
 	return g;
+}
+
+double pointToSegment(const Eigen::Vector3d& p, const LineFit3& l)
+{
+	const Eigen::Vector3d ab = l.p2 - l.p1;
+	const double t = std::clamp((p - l.p1).dot(ab) / std::max(ab.squaredNorm(), 1e-12), 0.0, 1.0);
+	return (l.p1 + t * ab - p).norm();
+}
+
+/** Does an existing line already cover @p l (its ends and middle within tol_mm)? */
+bool coveredLine(const std::vector<LineFit3>& lines, const LineFit3& l, double tol)
+{
+	for (const auto& k : lines)
+		if (pointToSegment(l.p1, k) <= tol && pointToSegment(l.p2, k) <= tol &&
+		    pointToSegment(0.5 * (l.p1 + l.p2), k) <= tol)
+			return true;
+	return false;
+}
+
+/** Adds the piece features that the 3D strings did not find; returns how many. */
+size_t addNewFeatures(StereoScene& scene, const std::vector<LineFit3>& lines,
+                      const std::vector<ConicFit3>& conics, double tol)
+{
+	size_t n = 0;
+	for (const auto& l : lines)
+		if (!coveredLine(scene.lines, l, tol)) scene.lines.push_back(l), ++n;
+	for (const auto& c : conics)
+	{
+		auto same = [&](const ConicFit3& k) { return (k.centre - c.centre).norm() <= tol; };
+		auto it = std::find_if(scene.conics.begin(), scene.conics.end(), same);
+		if (it == scene.conics.end())
+			scene.conics.push_back(c), ++n;
+		else if (c.t2 - c.t1 > it->t2 - it->t1)
+			*it = c, ++n;  // the longer arc
+	}
+	return n;
 }
 
 bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
@@ -44,6 +81,7 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	    util::readDouble(cfg, section, "horizontal_corner_radius_px", horizontal.corner_radius_px);
 	horizontal.min_right_support = util::readDouble(cfg, section, "horizontal_min_right_support",
 	                                                horizontal.min_right_support);
+	segments.loadFromConfigFile(cfg, section);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -56,6 +94,7 @@ void SceneOptions::dump(std::ostream& out) const
 	    << "\nhorizontal_max_angle_deg = " << horizontal.max_angle_deg
 	    << "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
 	    << "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
+	segments.dump(out);
 }
 
 std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
@@ -92,6 +131,14 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	const auto h = recoverHorizontalLines(ls, rs, matches, rect, rr.size(), o.fit, o.horizontal);
 	scene.horizontal_lines = h.size();
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
+	if (!o.segments.enabled) return scene;
+	const auto lp = segmentImageStrings(ls, lr, o.fit), rp = segmentImageStrings(rs, rr, o.fit);
+	std::vector<LineFit3> lines;
+	std::vector<ConicFit3> conics;
+	reconstructPieces({ls, lp, rp, matches, rect.disparityAtDepth(o.max_depth_mm),
+	                   rect.disparityAtDepth(o.min_depth_mm)},
+	                  rect, o.fit, o.segments, lines, conics);
+	scene.piece_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
 	return scene;
 }
 

@@ -76,6 +76,20 @@ std::optional<LineFit3> fitLine3(const std::vector<StereoEdgel>& e, const Rectif
 std::optional<ConicFit3> fitConic3(const std::vector<StereoEdgel>& e, const Rectifier& rect,
                                    const FitOptions& o);
 
+/** The 2D ellipse through image points given in order (px), or nothing unless the points lie
+ * within conic_tol_px of it, span at least min_arc_deg and its semi-axes lie in
+ * (2, max_conic_radius_px]. */
+std::optional<cv::RotatedRect> fitEllipse2D(const std::vector<cv::Point2d>& pts,
+                                            const FitOptions& o);
+
+/** A 3D conic from its 2D image ellipse @p el (rectified left image), the disparity plane of the
+ * matched edgels @p matched (at least 3, spread over the arc), and the arc covered by the ordered
+ * image points @p arc_px; nothing if the fit is worse than max_rms_mm. */
+std::optional<ConicFit3> conicFromEllipse(const cv::RotatedRect& el,
+                                          const std::vector<cv::Point2d>& arc_px,
+                                          const std::vector<StereoEdgel>& matched,
+                                          const Rectifier& rect, const FitOptions& o);
+
 /** Line and conic segments of one 3D edge string: top-down splitting in the image (a piece that is
  * straight within line_tol_px is a line, one that is elliptical within conic_tol_px over
  * min_arc_deg is a conic, anything else splits at the farthest edgel from its chord). */

@@ -7,6 +7,7 @@
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
 #include <mrolr/stereo/HorizontalEdges.h>
+#include <mrolr/stereo/SegmentStereo.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -26,6 +27,7 @@ struct SceneOptions
 	MatchOptions match;
 	FitOptions fit;
 	HorizontalOptions horizontal;
+	SegmentStereoOptions segments;  ///< piece stereo (SegmentStereo.h) adds what 3D strings miss
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -38,6 +40,7 @@ struct StereoScene
 	std::vector<ConicFit3> conics;
 	size_t left_strings = 0, right_strings = 0, matches = 0, strings3d = 0;
 	size_t horizontal_lines = 0;  ///< lines recovered from their corners (HorizontalEdges.h)
+	size_t piece_features = 0;    ///< lines and conics added by piece stereo (SegmentStereo.h)
 };
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after

@@ -1,0 +1,236 @@
+#include <mrolr/stereo/SegmentStereo.h>
+#include <mrolr/util/Config.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <ostream>
+
+namespace mrolr::stereo
+{
+namespace
+{
+using MatchIndex = std::map<std::pair<int, int>, const EdgeMatch*>;
+
+/** A candidate segment pair and its 3D line. */
+struct Pair
+{
+	size_t left = 0, right = 0;
+	double cost = 0;
+	LineFit3 line;
+	cv::Point3d e1, e2;  ///< left image ends (x, y px) and their disparities (px)
+};
+
+double angleOf(const ImagePiece& p)
+{
+	return std::atan2(p.b.y - p.a.y, p.b.x - p.a.x);
+}
+
+double angleDiffDeg(const ImagePiece& l, const ImagePiece& r)
+{
+	double d = std::abs(angleOf(l) - angleOf(r));
+	if (d > M_PI) d = 2 * M_PI - d;
+	return std::min(d, M_PI - d) * 180 / M_PI;
+}
+
+bool nearScanline(const ImagePiece& p, double deg)
+{
+	const cv::Point2d v = p.b - p.a;
+	return std::abs(v.y) <= std::tan(deg * M_PI / 180) * std::abs(v.x);
+}
+
+double xAtRow(const ImagePiece& p, double y)
+{
+	return p.a.x + (p.b.x - p.a.x) * (y - p.a.y) / (p.b.y - p.a.y);
+}
+
+/** Ends (left image point, disparity) of a matched pair of segments across the scanlines: the
+ * rows both segments cover (the overlap of their epipolar extents). */
+bool pairEnds(const ImagePiece& l, const ImagePiece& r, const SegmentStereoOptions& o,
+              cv::Point3d& e1, cv::Point3d& e2)
+{
+	if (nearScanline(l, o.horizontal_deg) || nearScanline(r, o.horizontal_deg)) return false;
+	const double y0 = std::max(l.a.y, r.a.y), y1 = std::min(l.b.y, r.b.y);
+	const double shorter = std::min(l.b.y - l.a.y, r.b.y - r.a.y);
+	if (y1 - y0 < o.min_row_overlap * shorter) return false;
+	e1 = {xAtRow(l, y0), y0, xAtRow(l, y0) - xAtRow(r, y0)};
+	e2 = {xAtRow(l, y1), y1, xAtRow(l, y1) - xAtRow(r, y1)};
+	return true;
+}
+
+/** Median disparity of the point matches inside a left piece (NaN if none). */
+double pointDisparity(const ImagePiece& p, const MatchIndex& m)
+{
+	std::vector<double> d;
+	for (size_t i = p.lo; i < p.hi; ++i)
+	{
+		const auto it = m.find({p.string, static_cast<int>(i)});
+		if (it != m.end()) d.push_back(it->second->disparity_px);
+	}
+	if (d.empty()) return std::nan("");
+	std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+	return d[d.size() / 2];
+}
+
+std::optional<Pair> tryPair(const PieceStereoInput& in, size_t i, size_t j, double d_points,
+                            const Rectifier& rect, const SegmentStereoOptions& o)
+{
+	const ImagePiece &l = in.left_pieces[i], &r = in.right_pieces[j];
+	const double ang = angleDiffDeg(l, r);
+	const double side =
+	    std::min(std::abs(l.side_left - r.side_left), std::abs(l.side_right - r.side_right));
+	cv::Point3d e1, e2;
+	if (ang > o.max_angle_diff_deg || side > o.max_side_diff_grey || !pairEnds(l, r, o, e1, e2))
+		return std::nullopt;
+	const auto inRange = [&](double d) { return d >= in.d_min_px && d <= in.d_max_px; };
+	const double len = std::hypot(e2.x - e1.x, e2.y - e1.y);
+	if (!inRange(e1.z) || !inRange(e2.z) || len < 2 ||
+	    std::abs(e2.z - e1.z) > o.max_disparity_gradient * len)
+		return std::nullopt;
+	Pair p{i, j, ang / o.max_angle_diff_deg + side / o.max_side_diff_grey, {}, e1, e2};
+	if (!std::isnan(d_points)) p.cost += std::abs(0.5 * (e1.z + e2.z) - d_points) / 2;
+	p.line = {rect.pointInLeftCamera(e1.x, e1.y, e1.z), rect.pointInLeftCamera(e2.x, e2.y, e2.z), 0,
+	          static_cast<int>(l.hi - l.lo)};
+	return p;
+}
+
+/** For each left line piece its best segment pair (a right segment may serve several collinear
+ * left pieces: the two images split an edge differently). */
+std::vector<std::optional<Pair>> matchSegments(const PieceStereoInput& in, const MatchIndex& m,
+                                               const Rectifier& rect, const SegmentStereoOptions& o)
+{
+	std::vector<std::optional<Pair>> best(in.left_pieces.size());
+	for (size_t i = 0; i < in.left_pieces.size(); ++i)
+	{
+		if (!in.left_pieces[i].is_line) continue;
+		const double dp = pointDisparity(in.left_pieces[i], m);
+		for (size_t j = 0; j < in.right_pieces.size(); ++j)
+			if (in.right_pieces[j].is_line)
+				if (auto p = tryPair(in, i, j, dp, rect, o);
+				    p && (!best[i] || p->cost < best[i]->cost))
+					best[i] = p;
+	}
+	return best;
+}
+
+/** Disparity at a corner: the nearest end of a matched segment within corner_radius_px of q. */
+double cornerDisparity(const cv::Point2d& q, const std::vector<std::optional<Pair>>& pairs,
+                       const SegmentStereoOptions& o)
+{
+	double best = o.corner_radius_px, d = std::nan("");
+	for (const auto& p : pairs)
+		if (p)
+			for (const auto& e : {p->e1, p->e2})
+				if (const double r = std::hypot(e.x - q.x, e.y - q.y); r <= best) best = r, d = e.z;
+	return d;
+}
+
+/** Is there a right segment near the scanline direction along the predicted right segment a → b? */
+bool rightSegmentAlong(const PieceStereoInput& in, cv::Point2d a, cv::Point2d b,
+                       const SegmentStereoOptions& o)
+{
+	const cv::Point2d mid = 0.5 * (a + b);
+	for (const auto& r : in.right_pieces)
+	{
+		if (!r.is_line || !nearScanline(r, o.horizontal_deg)) continue;
+		const cv::Point2d v = (r.b - r.a) / cv::norm(r.b - r.a);
+		const double t = (mid - r.a).dot(v);
+		if (t >= 0 && t <= cv::norm(r.b - r.a) && std::abs((mid - r.a).cross(v)) <= 1.5 &&
+		    std::abs((b - a).cross(v)) <= o.max_angle_diff_deg * M_PI / 180 * cv::norm(b - a))
+			return true;
+	}
+	return false;
+}
+
+/** A left piece along the scanlines placed from the disparities at its two corners. */
+std::optional<LineFit3> horizontalLine(const PieceStereoInput& in, const ImagePiece& l,
+                                       const std::vector<std::optional<Pair>>& pairs,
+                                       const Rectifier& rect, const SegmentStereoOptions& o)
+{
+	const double da = cornerDisparity(l.a, pairs, o), db = cornerDisparity(l.b, pairs, o);
+	if (std::isnan(da) || std::isnan(db) ||
+	    !rightSegmentAlong(in, l.a - cv::Point2d(da, 0), l.b - cv::Point2d(db, 0), o))
+		return std::nullopt;
+	return LineFit3{rect.pointInLeftCamera(l.a.x, l.a.y, da),
+	                rect.pointInLeftCamera(l.b.x, l.b.y, db), 0, static_cast<int>(l.hi - l.lo)};
+}
+
+std::vector<StereoEdgel> matchedEdgels(const ImagePiece& p, const MatchIndex& m,
+                                       const Rectifier& rect)
+{
+	std::vector<StereoEdgel> out;
+	for (size_t i = p.lo; i < p.hi; ++i)
+	{
+		const auto it = m.find({p.string, static_cast<int>(i)});
+		if (it == m.end()) continue;
+		const cv::Point2d xy(it->second->x_left_px, it->second->y_px);
+		out.push_back({xy, it->second->disparity_px,
+		               rect.pointInLeftCamera(xy.x, xy.y, it->second->disparity_px)});
+	}
+	return out;
+}
+}  // namespace
+
+void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const FitOptions& fit,
+                       const SegmentStereoOptions& o, std::vector<LineFit3>& lines,
+                       std::vector<ConicFit3>& conics)
+{
+	MatchIndex m;
+	for (const auto& x : in.matches) m[{x.string, x.edgel}] = &x;
+	const auto pairs = matchSegments(in, m, rect, o);
+	for (size_t i = 0; i < in.left_pieces.size(); ++i)
+	{
+		const ImagePiece& p = in.left_pieces[i];
+		if (pairs[i])
+		{
+			lines.push_back(pairs[i]->line);
+			continue;
+		}
+		if (p.is_line && nearScanline(p, o.horizontal_deg))
+			if (auto h = horizontalLine(in, p, pairs, rect, o))
+			{
+				lines.push_back(*h);
+				continue;
+			}
+		if (p.is_line) continue;  // left to the 3D strings of the point matches
+		const auto e = matchedEdgels(p, m, rect);
+		if (static_cast<int>(e.size()) >= o.min_conic_matches)
+		{
+			if (auto c = conicFromEllipse(p.ellipse, piecePoints(in.left_strings, p), e, rect, fit))
+				conics.push_back(*c);
+		}
+	}
+}
+
+void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                              const std::string& section)
+{
+	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
+	enabled = util::readBool(cfg, section, "segment_stereo", enabled);
+	rd("segment_max_angle_diff_deg", max_angle_diff_deg);
+	rd("segment_min_row_overlap", min_row_overlap);
+	rd("segment_max_side_diff_grey", max_side_diff_grey);
+	rd("segment_horizontal_deg", horizontal_deg);
+	rd("segment_corner_radius_px", corner_radius_px);
+	rd("segment_duplicate_mm", duplicate_mm);
+	rd("segment_max_disparity_gradient", max_disparity_gradient);
+	min_conic_matches = static_cast<int>(
+	    util::readInt(cfg, section, "segment_min_conic_matches", min_conic_matches));
+	util::requireInRange(cfg, section, "segment_min_row_overlap", min_row_overlap, 0, 1);
+	util::requireInRange(cfg, section, "segment_min_conic_matches", min_conic_matches, 3, 1e6);
+}
+
+void SegmentStereoOptions::dump(std::ostream& out) const
+{
+	out << "segment_stereo = " << enabled << "\nsegment_max_angle_diff_deg = " << max_angle_diff_deg
+	    << "\nsegment_min_row_overlap = " << min_row_overlap
+	    << "\nsegment_max_side_diff_grey = " << max_side_diff_grey
+	    << "\nsegment_horizontal_deg = " << horizontal_deg
+	    << "\nsegment_corner_radius_px = " << corner_radius_px
+	    << "\nsegment_duplicate_mm = " << duplicate_mm
+	    << "\nsegment_max_disparity_gradient = " << max_disparity_gradient
+	    << "\nsegment_min_conic_matches = " << min_conic_matches << "\n";
+}
+
+}  // namespace mrolr::stereo
