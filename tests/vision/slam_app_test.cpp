@@ -53,7 +53,8 @@ TEST(SlamApp, KnownFeatureIsReFoundAtHome)
 	int refound = 0;
 	for (size_t k = app.steps.size() - 6; k < app.steps.size(); ++k)
 	{
-		const auto& r = app.steps[k].record;
+		ASSERT_EQ(app.steps[k].records.size(), 1u);  // live: one decision per step
+		const auto& r = app.steps[k].records.front();
 		if (r.label != "fire_sign") continue;
 		EXPECT_LT(r.measurement.left.score, 0.9);
 		refound += r.measurement.found && r.accepted;
@@ -83,6 +84,6 @@ TEST(SlamApp, RenderedLabHeadBeatsDeadReckoning)
 	EXPECT_GE(s.features, 4);
 	SlamApp bad;
 	EXPECT_THROW(
-		bad.initialize({"mrolr-slam", "--world", "w.ini", "--live", "--head", "cardboard"}),
-		mrolr::util::UsageError);
+	    bad.initialize({"mrolr-slam", "--world", "w.ini", "--live", "--head", "cardboard"}),
+	    mrolr::util::UsageError);
 }

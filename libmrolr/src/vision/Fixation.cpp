@@ -1,4 +1,5 @@
 #include <mrolr/vision/Fixation.h>
+#include <mrolr/vision/PairAcquisition.h>
 
 #include <sstream>
 
@@ -82,35 +83,14 @@ Acquisition acquireFeature(StereoHeadDevice& device, const BiSightHead& head, co
                            const VisionOptions& o)
 {
 	Acquisition a;
-	const StereoImages im = device.grab();
-	const auto corner = bestCornerInBox(im.left, box, o.patch_size_px, o.min_corner_eigenvalue);
-	if (!corner)
+	const PairAcquisition pair = acquireInPair(device.grab(), head, box, o);
+	a.corner = pair.corner, a.patch = pair.patch, a.right_match = pair.right_match;
+	if (!pair.ok)
 	{
-		a.failure = "no Shi-Tomasi feature above min_corner_eigenvalue in the search box";
+		a.failure = pair.failure;
 		return a;
 	}
-	a.corner = *corner;
-	a.patch = extractPatch(im.left, corner->uv, o.patch_size_px);
-	try
-	{
-		const EpipolarBand band = epipolarBand(head, im.angles, corner->uv, o.epipolar_min_depth_m,
-		                                       o.epipolar_max_depth_m, o.epipolar_band_px);
-		a.right_match = searchEpipolar(im.right, a.patch, band, o.nssd_threshold);
-		if (!a.right_match.found)
-		{
-			a.failure =
-			    notFound("right", a.right_match, o.nssd_threshold) + " along the epipolar line";
-			return a;
-		}
-		const StereoPixels px{corner->uv.x(), corner->uv.y(), a.right_match.uv.x(),
-		                      a.right_match.uv.y()};
-		a.fixation = fixateOnPatch(device, head, a.patch, head.triangulatePoint(px, im.angles), o);
-	}
-	catch (const geometry::GeometryError& e)
-	{
-		a.failure = std::string("cannot triangulate the new feature: ") + e.what();
-		return a;
-	}
+	a.fixation = fixateOnPatch(device, head, a.patch, pair.p_GinC0, o);
 	a.ok = a.fixation.locked;
 	if (!a.ok) a.failure = "fixation failed: " + a.fixation.failure;
 	return a;

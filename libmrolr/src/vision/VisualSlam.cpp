@@ -3,6 +3,7 @@
 #include <mrolr/slam/FeatureVisibility.h>
 #include <mrolr/vision/Fixation.h>
 #include <mrolr/vision/VisualSlam.h>
+#include "StageTimer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,14 +13,7 @@ namespace mrolr::vision
 {
 namespace
 {
-/** Milliseconds since @p t0, and resets t0 to now. */
-double lap(std::chrono::steady_clock::time_point& t0)
-{
-	const auto now = std::chrono::steady_clock::now();
-	const double ms = std::chrono::duration<double, std::milli>(now - t0).count();
-	t0 = now;
-	return ms;
-}
+using detail::lap;
 
 constexpr double kDuplicateDistance_m = 0.2;  ///< a new feature this close to a mapped one is it
 }  // namespace
@@ -102,20 +96,24 @@ void VisualSlam::acquireFeatures(StereoHeadDevice& device, CycleRecord& r)
 	{
 		device.moveTo({a, tilt, 0, 0});
 		const Acquisition acq = acquireFeature(device, head_, box, options_);
-		if (!acq.ok) continue;
-		const Eigen::Vector3d h =
-		    geometry::idealHeadMeasure(acq.fixation.p_GinC0, head_.options().interocular_m);
-		const auto init =
-		    slam::initialiseFromMeasurement(filter_.vehicle(), h, filter_.options().head.constants);
-		if (isDuplicate(init.p_FinW)) continue;
-		const std::string label = "F" + std::to_string(next_label_++);
-		filter_.initialiseFeature(label, h);
-		patches_.push_back(acq.patch);
-		r.added.push_back(label);
-		++added_;
+		if (!acq.ok || !addFeature(acq.fixation.p_GinC0, acq.patch, r)) continue;
 		if (static_cast<int>(visibleFeatures().size()) >= filter_.options().min_visible_features)
 			return;
 	}
+}
+
+bool VisualSlam::addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r)
+{
+	const Eigen::Vector3d h = geometry::idealHeadMeasure(p_GinC0, head_.options().interocular_m);
+	const auto init =
+	    slam::initialiseFromMeasurement(filter_.vehicle(), h, filter_.options().head.constants);
+	if (isDuplicate(init.p_FinW)) return false;
+	const std::string label = "F" + std::to_string(next_label_++);
+	filter_.initialiseFeature(label, h);
+	patches_.push_back(patch.clone());
+	r.added.push_back(label);
+	++added_;
+	return true;
 }
 
 void VisualSlam::selectFeature(CycleRecord& r)
@@ -157,13 +155,19 @@ void VisualSlam::measureSelected(StereoHeadDevice& device, CycleRecord& r)
 		matchInRegions(images, head_, patches_[r.feature], options_, NssdMethod::OpenCv, m);
 		r.times.match_ms = lap(t0);
 	}
-	if (m.found)
+	applyMeasurement(r);
+	r.times.update_ms = lap(t0);
+}
+
+void VisualSlam::applyMeasurement(CycleRecord& r)
+{
+	if (r.measurement.found)
 	{
-		const slam::UpdateReport rep = filter_.update({slam::Observation{r.feature, m.h}});
+		const slam::UpdateReport rep =
+		    filter_.update({slam::Observation{r.feature, r.measurement.h}});
 		r.accepted = !rep.accepted.empty();
 	}
 	filter_.recordAttempt(r.feature, r.accepted);
-	r.times.update_ms = lap(t0);
 }
 
 void VisualSlam::deleteFailed(CycleRecord& r)

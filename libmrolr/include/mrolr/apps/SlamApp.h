@@ -43,12 +43,29 @@ struct SlamRunOptions
 	void dump(std::ostream& out) const;
 };
 
-/** One step of the run, for the trajectory CSV. */
+/** One step of the run (a rawlog frame in replay), for the trajectory CSV. */
 struct SlamStepLog
 {
 	Eigen::Vector3d x_true, x_est, x_dr;  ///< (z, x, φ), metres and radians
 	Eigen::Vector3d var_est;              ///< diagonal of the vehicle covariance
-	vision::CycleRecord record;
+	/** What the cycle decided: one record live, one per feature measured in replay. */
+	std::vector<vision::CycleRecord> records;
+};
+
+/** A mapped feature at the end of the run (W: metres, m²). */
+struct MapFeature
+{
+	std::string label;
+	bool known = false;
+	Eigen::Vector3d p_FinW = Eigen::Vector3d::Zero();
+	Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+};
+
+/** A landmark of the world file (ground truth, W, metres), for the 3D scene. */
+struct TrueLandmark
+{
+	std::string name;
+	Eigen::Vector3d p_LinW = Eigen::Vector3d::Zero();
 };
 
 /** Figures of a run (the --json summary). */
@@ -79,11 +96,14 @@ class SlamApp
 
 	// Results (set by run)
 	std::vector<SlamStepLog> steps;
-	std::vector<std::string> map_lines;  ///< map.csv rows
+	std::vector<MapFeature> map;
+	std::vector<TrueLandmark> true_landmarks;  ///< the world's, when a world file was given
 	SlamSummary summary;
 
  private:
 	void runLive();
+	void runReplay();
+	void recordMap(slam::ActiveSlamFilter& filter, const vision::VisualSlam& vslam);
 	void runAcquireKnown(std::ostream& out);
 	void writeOutputs() const;
 	void printSummary(std::ostream& out) const;

@@ -66,6 +66,19 @@ class VisualSlam
 	/** Measures feature @p i now, without motion or selection (e.g. re-finding a known feature when
 	 * the robot is back home, 5.6.2). Returns found = false if it is not visible. */
 	CycleRecord measureFeature(size_t i, StereoHeadDevice& device);
+	/** One frame of a recorded run (rawlog replay), where the head cannot be steered: predict with
+	 * the odometry control @p u; then, if there is a pair (@p images may be null), acquire new
+	 * features in it while fewer than min_visible_features are in view (boxes of acquire_box_px
+	 * at the principal point and one box to its left and right, no fixation), and measure every
+	 * mapped feature whose prediction falls inside both images, largest Vs (eq 5.147) first, each
+	 * in its search ellipses (eqs 5.37–5.39) at the recorded angles. Returns one record per
+	 * feature measured, or a single record with measured = false. */
+	std::vector<CycleRecord> replayFrame(const base::WheelControl& u, const StereoImages* images);
+
+	/** Indices of the visible features (5.2.1) whose predicted image positions lie inside both
+	 * images of size @p size with the head at @p angles, patch included. */
+	std::vector<size_t> featuresInView(const geometry::HeadAngles& angles, const cv::Size& size);
+
 	/** Indices of the features the head could measure from the current estimate (5.2.1, 5.7). */
 	std::vector<size_t> visibleFeatures();
 
@@ -75,6 +88,11 @@ class VisualSlam
 
  private:
 	void acquireFeatures(StereoHeadDevice& device, CycleRecord& r);
+	void acquireInFrame(const StereoImages& images, CycleRecord& r);
+	/** Adds the feature triangulated at @p p_GinC0 with @p patch unless a mapped one is there. */
+	bool addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r);
+	CycleRecord measureInFrame(size_t i, const StereoImages& images);
+	void applyMeasurement(CycleRecord& r);
 	bool isDuplicate(const Eigen::Vector3d& p_FinW);
 	void selectFeature(CycleRecord& r);
 	void measureSelected(StereoHeadDevice& device, CycleRecord& r);

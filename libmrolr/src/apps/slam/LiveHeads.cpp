@@ -38,14 +38,6 @@ class SyntheticLiveHead : public LiveHead
 	vision::SyntheticWorld world_;
 };
 
-cv::Mat toGray(const mrpt::img::CImage& img)
-{
-	cv::Mat m = img.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), g;
-	if (m.channels() == 1) return m.clone();
-	cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-	return g;
-}
-
 /** sim::SimHead (hw::HeadDevice) rendering the lab, seen through vision::StereoHeadDevice. */
 class LabLiveHead : public LiveHead
 {
@@ -82,6 +74,14 @@ class LabLiveHead : public LiveHead
 	sim::SimHead sim_head_;
 };
 }  // namespace
+
+cv::Mat toGray(const mrpt::img::CImage& img)
+{
+	cv::Mat m = img.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), g;
+	if (m.channels() == 1) return m.clone();
+	cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
+	return g;
+}
 
 std::unique_ptr<LiveHead> makeLiveHead(const std::string& kind, const world::World& w,
                                        const geometry::BiSightHead& head, int texture_px,

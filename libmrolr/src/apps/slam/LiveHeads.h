@@ -6,7 +6,9 @@
 #include <mrolr/vision/SyntheticWorld.h>
 #include <mrolr/world/World.h>
 
+#include <mrpt/img/CImage.h>
 #include <Eigen/Core>
+#include <opencv2/core.hpp>
 
 #include <memory>
 #include <string>
@@ -19,6 +21,9 @@ class LiveHead : public vision::StereoHeadDevice
  public:
 	virtual void setVehicle(const Eigen::Vector3d& x_true) = 0;
 };
+
+/** An 8-bit greyscale copy of @p img (colour images are converted). */
+cv::Mat toGray(const mrpt::img::CImage& img);
 
 /** "synthetic" (textured points, @p texture_px, @p noise_grey, @p seed) or "lab" (CFBORender of the
  * world's room, patches, tables and objects); throws std::invalid_argument for another name. */

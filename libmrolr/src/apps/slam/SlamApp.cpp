@@ -13,8 +13,9 @@ namespace mrolr::apps
 void SlamApp::initialize(const std::vector<std::string>& args)
 {
 	TCLAP::CmdLine cmd("mrolr-slam: vision-driven EKF-SLAM on a simulated world", ' ', "1");
-	TCLAP::ValueArg<std::string> world("", "world", "world file (maps/<name>/world.ini)", false, "",
-	                                   "FILE", cmd);
+	TCLAP::ValueArg<std::string> world(
+	    "", "world", "world file (maps/<name>/world.ini); optional with --rawlog (true landmarks)",
+	    false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> config("", "config", "SLAM configuration", false,
 	                                    std::string(MROLR_SOURCE_DIR) + "/config/slam.ini", "FILE",
 	                                    cmd);
@@ -50,6 +51,8 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	known_names = util::splitFields(knownArg.getValue());
 	if (int(live) + int(acquire_known) + int(!rawlog_path.empty()) != 1)
 		throw util::UsageError("give exactly one of --live, --acquire-known and --rawlog FILE");
+	if (!rawlog_path.empty() && head_kind != "synthetic")
+		throw util::UsageError("--head applies to --live and --acquire-known, not to --rawlog");
 	if (rawlog_path.empty() && world_path.empty())
 		throw util::UsageError("--live and --acquire-known need --world FILE");
 }
@@ -68,10 +71,13 @@ SlamSummary summarise(const std::vector<SlamStepLog>& steps, SlamSummary s)
 	{
 		se_slam += std::pow(planarError(st.x_est, st.x_true), 2);
 		se_dr += std::pow(planarError(st.x_dr, st.x_true), 2);
-		s.measurements += st.record.measured;
-		s.matched += st.record.measurement.found;
-		s.accepted += st.record.accepted;
-		s.mean_times += st.record.times;
+		for (const auto& r : st.records)
+		{
+			s.measurements += r.measured;
+			s.matched += r.measurement.found;
+			s.accepted += r.accepted;
+			s.mean_times += r.times;
+		}
 	}
 	const double n = std::max<size_t>(steps.size(), 1);
 	s.cycles = static_cast<int>(steps.size());
@@ -124,16 +130,27 @@ int SlamApp::run(std::ostream& out)
 		runAcquireKnown(out);
 		return util::kExitOk;
 	}
-	if (!live)
-		throw std::runtime_error(
-		    "--rawlog replay of mrolr-sim rawlogs is not implemented yet; use --live");
-	steps.clear();
+	steps.clear(), true_landmarks.clear();
 	summary = SlamSummary();
-	runLive();
+	if (live)
+		runLive();
+	else
+		runReplay();
 	summary = summarise(steps, summary);
 	if (!out_dir.empty()) writeOutputs();
 	printSummary(out);
 	return util::kExitOk;
+}
+
+void SlamApp::recordMap(slam::ActiveSlamFilter& filter, const vision::VisualSlam& vslam)
+{
+	summary.features_added = vslam.featuresAdded();
+	summary.features_deleted = vslam.featuresDeleted();
+	summary.features = static_cast<int>(filter.numFeatures());
+	map.clear();
+	for (size_t i = 0; i < filter.numFeatures(); ++i)
+		map.push_back({filter.info(i).label, filter.info(i).known, filter.feature(i),
+		               filter.featureCovariance(i)});
 }
 
 void SlamApp::printSummary(std::ostream& out) const

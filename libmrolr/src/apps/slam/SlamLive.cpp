@@ -8,6 +8,7 @@
 #include <mrolr/vision/SyntheticWorld.h>
 #include <mrolr/world/World.h>
 #include "LiveHeads.h"
+#include "SlamSetup.h"
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -22,41 +23,6 @@ namespace mrolr::apps
 namespace
 {
 constexpr int kHomeMeasurements = 3;  ///< measurements of each known feature at the end
-
-mrpt::config::CConfigFile openConfig(const std::string& path)
-{
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the configuration file");
-	return mrpt::config::CConfigFile(path);
-}
-
-/** Everything a live run needs, read from the config files. */
-struct LiveSetup
-{
-	SlamRunOptions run;
-	vision::VisionOptions vision;
-	slam::SlamOptions slam;
-	base::LabmateOptions labmate;
-	base::TrajectoryOptions trajectory;
-	geometry::BiSightOptions bisight;
-};
-
-LiveSetup loadSetup(const std::string& config_path)
-{
-	LiveSetup s;
-	const auto cfg = openConfig(config_path);
-	s.run.loadFromConfigFile(cfg, "slam_run");
-	s.vision.loadFromConfigFile(cfg, "vision");
-	s.slam.loadFromConfigFile(cfg, "slam");
-	const auto dir = std::filesystem::path(config_path).parent_path();
-	const auto bisight = openConfig((dir / s.run.bisight_config_file).string());
-	s.bisight.loadFromConfigFile(bisight, "bisight");
-	s.slam.head.loadFromConfigFile(bisight, "bisight");
-	const auto labmate = openConfig((dir / s.run.labmate_config_file).string());
-	s.labmate.loadFromConfigFile(labmate, "labmate");
-	s.trajectory.loadFromConfigFile(labmate, "trajectory");
-	return s;
-}
 
 /** The true wheels: noisy, and the left wheel slips during bursts. */
 class TrueWheels
@@ -114,7 +80,7 @@ std::string knownFeaturesPath(const world::World& w)
  * head of @p device (5.6.2). Throws for a name that is not a landmark of the world. */
 std::vector<vision::KnownFeature> acquireKnown(const world::World& w, LiveHead& device,
                                                const geometry::BiSightHead& head,
-                                               const LiveSetup& s, const Eigen::Vector3d& x0,
+                                               const SlamSetup& s, const Eigen::Vector3d& x0,
                                                const std::vector<std::string>& names = {})
 {
 	for (const auto& n : names)
@@ -136,7 +102,7 @@ std::vector<vision::KnownFeature> acquireKnown(const world::World& w, LiveHead& 
 
 void SlamApp::runAcquireKnown(std::ostream& out)
 {
-	const LiveSetup s = loadSetup(config_path);
+	const SlamSetup s = loadSetup(config_path);
 	const world::World w = world::World::load(world_path);
 	const geometry::BiSightHead head(s.bisight);
 	const auto head_device =
@@ -152,7 +118,7 @@ void SlamApp::runAcquireKnown(std::ostream& out)
 namespace
 {
 void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w, LiveHead& device,
-                      const geometry::BiSightHead& head, const LiveSetup& s,
+                      const geometry::BiSightHead& head, const SlamSetup& s,
                       const Eigen::Vector3d& x0, const std::string& head_kind)
 {
 	const std::string path = knownFeaturesPath(w);
@@ -172,8 +138,9 @@ void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w, LiveHead
 
 void SlamApp::runLive()
 {
-	const LiveSetup s = loadSetup(config_path);
+	const SlamSetup s = loadSetup(config_path);
 	const world::World w = world::World::load(world_path);
+	for (const auto& l : w.landmarks) true_landmarks.push_back({l.name, l.p_LinW});
 	const geometry::BiSightHead head(s.bisight);
 	const base::LabmateModel model(s.labmate);
 	const auto head_device =
@@ -189,8 +156,11 @@ void SlamApp::runLive()
 	Eigen::Vector3d x_true = x0, x_dr = x0;
 	auto log = [&](vision::CycleRecord rec)
 	{
-		steps.push_back({x_true, filter.vehicle(), x_dr, filter.vehicleCovariance().diagonal(),
-		                 std::move(rec)});
+		steps.push_back({x_true,
+		                 filter.vehicle(),
+		                 x_dr,
+		                 filter.vehicleCovariance().diagonal(),
+		                 {std::move(rec)}});
 	};
 	log(vslam.step({}, device));
 	for (size_t k = 1; k < w.waypoints.size(); ++k)
@@ -209,19 +179,7 @@ void SlamApp::runLive()
 	for (size_t i = 0; i < filter.numFeatures(); ++i)
 		if (filter.info(i).known)
 			for (int k = 0; k < kHomeMeasurements; ++k) log(vslam.measureFeature(i, device));
-	summary.features_added = vslam.featuresAdded();
-	summary.features_deleted = vslam.featuresDeleted();
-	summary.features = static_cast<int>(filter.numFeatures());
-	map_lines.clear();
-	for (size_t i = 0; i < filter.numFeatures(); ++i)
-	{
-		const Eigen::Vector3d p = filter.feature(i);
-		const Eigen::Vector3d sd = filter.featureCovariance(i).diagonal().cwiseSqrt();
-		std::ostringstream line;
-		line << filter.info(i).label << "," << filter.info(i).known << "," << p.x() << "," << p.y()
-		     << "," << p.z() << "," << sd.x() << "," << sd.y() << "," << sd.z();
-		map_lines.push_back(line.str());
-	}
+	recordMap(filter, vslam);
 }
 
 }  // namespace mrolr::apps

@@ -1,5 +1,7 @@
-// mrolr-slam --out DIR: trajectory.csv, map.csv, decisions.csv and paths.png.
+// mrolr-slam --out DIR: trajectory.csv, map.csv, decisions.csv, paths.png, decisions.rawlog and
+// slam.3Dscene.
 #include <mrolr/apps/SlamApp.h>
+#include "SlamRecordings.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -42,15 +44,17 @@ void writeDecisions(const std::string& dir, const std::vector<SlamStepLog>& step
 	     "added,deleted\n";
 	for (size_t k = 0; k < steps.size(); ++k)
 	{
-		const auto& r = steps[k].record;
-		const auto& m = r.measurement;
-		f << k << "," << r.label << "," << r.vs << "," << m.ellipse_left.centre.x() << ","
-		  << m.ellipse_left.centre.y() << "," << m.ellipse_left.area() << "," << m.left.score << ","
-		  << m.right.score << "," << m.found << "," << r.accepted << ",";
-		for (const auto& a : r.added) f << a << " ";
-		f << ",";
-		for (const auto& d : r.deleted) f << d << " ";
-		f << "\n";
+		for (const auto& r : steps[k].records)
+		{
+			const auto& m = r.measurement;
+			f << k << "," << r.label << "," << r.vs << "," << m.ellipse_left.centre.x() << ","
+			  << m.ellipse_left.centre.y() << "," << m.ellipse_left.area() << "," << m.left.score
+			  << "," << m.right.score << "," << m.found << "," << r.accepted << ",";
+			for (const auto& a : r.added) f << a << " ";
+			f << ",";
+			for (const auto& d : r.deleted) f << d << " ";
+			f << "\n";
+		}
 	}
 }
 
@@ -84,8 +88,16 @@ void SlamApp::writeOutputs() const
 	writeDecisions(out_dir, steps);
 	auto f = openOut(out_dir, "map.csv");
 	f << "label,known,X,Y,Z,sd_X,sd_Y,sd_Z\n";
-	for (const auto& line : map_lines) f << line << "\n";
+	for (const auto& m : map)
+	{
+		const Eigen::Vector3d sd = m.cov.diagonal().cwiseSqrt();
+		f << m.label << "," << m.known << "," << m.p_FinW.x() << "," << m.p_FinW.y() << ","
+		  << m.p_FinW.z() << "," << sd.x() << "," << sd.y() << "," << sd.z() << "\n";
+	}
 	writePlot(out_dir, steps);
+	const std::filesystem::path dir(out_dir);
+	writeDecisionRawlog((dir / "decisions.rawlog").string(), steps);
+	writeSlamScene((dir / "slam.3Dscene").string(), steps, map, true_landmarks);
 }
 
 }  // namespace mrolr::apps
