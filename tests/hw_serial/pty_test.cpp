@@ -242,6 +242,21 @@ TEST(PtyFaults, ADeviceThatStopsAnsweringGivesATimeoutAndNeverHangs)
 	expectSameOdometry(serial->odometry(), rig.direct.odometry(), 1);
 }
 
+TEST(PtyFaults, ADeviceThatHangsAfterNRepliesAnswersExactlyN)
+{
+	BaseRig rig;
+	auto serial = rig.driver(100, 1);
+	FaultOptions f;
+	f.silent_after_replies = 2;
+	rig.pty.emulator().setFaults(f);
+	rig.stepBoth(*serial, {0.1, 0.1, 0.5});
+	expectSameOdometry(serial->odometry(), rig.direct.odometry(), 1);
+	const size_t executed = rig.pty.emulator().executed();
+	const auto e = expectSerialError([&] { serial->step({0.1, 0.1, 0.5}); });
+	EXPECT_EQ(e.kind(), Kind::Timeout);
+	EXPECT_EQ(rig.pty.emulator().executed(), executed);  // the third request was not executed
+}
+
 TEST(PtyFaults, AHungUpPortIsReportedAsADisconnect)
 {
 	BaseRig rig;

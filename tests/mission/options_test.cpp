@@ -48,9 +48,37 @@ TEST(MissionOptions, DefaultConfigLoads)
 	EXPECT_FALSE(o.world.objects.empty());
 }
 
-TEST(MissionOptions, SerialDriverIsNotAvailableYet)
+TEST(MissionOptions, SerialDriverNeedsItsPortAndBaud)
 {
-	expectError("device.arm", "driver", "serial", "not available yet");
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("device.arm", "driver", "serial");  // mission_sim.ini has no port for it
+	EXPECT_NE(errorOf(cfg).find("[device.arm] port: missing"), std::string::npos) << errorOf(cfg);
+	cfg.write("device.arm", "driver", "sim");
+	cfg.write("device.head", "driver", "serial");
+	cfg.write("device.head", "port", "/dev/ttyS9");
+	EXPECT_NE(errorOf(cfg).find("[device.head] baud"), std::string::npos) << errorOf(cfg);
+	cfg.write("device.head", "baud", "9600");
+	cfg.write("device.head", "retries", "-1");
+	EXPECT_NE(errorOf(cfg).find("[device.head] retries"), std::string::npos) << errorOf(cfg);
+	cfg.write("device.head", "retries", "2");
+	const auto o = test::optionsFrom(cfg);
+	EXPECT_TRUE(o.devices.head.serial);
+	EXPECT_FALSE(o.devices.base.serial);
+	EXPECT_EQ(o.devices.head.link.port, "/dev/ttyS9");
+	EXPECT_EQ(o.devices.head.link.link.retries, 2);
+	EXPECT_EQ(o.devices.head.link.link.device, "device.head");
+}
+
+TEST(MissionOptions, TheShippedHardwareConfigLoadsWithSerialDevices)
+{
+	const auto o = MissionOptions::load(test::configDir() + "/mission_hw.ini");
+	for (const auto* d : {&o.devices.base, &o.devices.head, &o.devices.arm})
+	{
+		EXPECT_TRUE(d->serial) << d->section;
+		EXPECT_EQ(d->link.link.device, d->section);
+		EXPECT_NE(d->port_key.find("mission_hw.ini [" + d->section + "] port"), std::string::npos);
+	}
+	EXPECT_EQ(o.target, test::optionsFrom(test::defaultMissionConfig()).target);
 }
 
 TEST(MissionOptions, UnknownDriverNamesTheChoices)

@@ -69,13 +69,14 @@ void DeviceEmulator::serveLine(ProtocolServer& server, const AssembledLine& line
 bool DeviceEmulator::silent()
 {
 	std::lock_guard<std::mutex> lock(mutex_);
-	return faults_.silent;
+	return faults_.silent || faults_.silent_after_replies == 0;
 }
 
 std::string DeviceEmulator::applyFaults(std::string reply, int& delay_ms)
 {
 	std::lock_guard<std::mutex> lock(mutex_);
 	delay_ms = faults_.reply_delay_ms;
+	if (faults_.silent_after_replies > 0) --faults_.silent_after_replies;
 	if (faults_.garbage_replies > 0)
 	{
 		--faults_.garbage_replies;

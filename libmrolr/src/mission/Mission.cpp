@@ -1,12 +1,10 @@
-// The mission's state machine (thesis fig 5.8.1.5) on the simulated devices.
-#include <mrolr/arm/RtxKinematics.h>
+// The mission's state machine (thesis fig 5.8.1.5) on the devices of the mission's factory.
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/Mission.h>
+#include <mrolr/mission/MissionDevices.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SceneBuilder.h>
-#include <mrolr/sim/SimArm.h>
-#include <mrolr/sim/SimBase.h>
-#include <mrolr/sim/StereoRenderer.h>
 #include <mrolr/world/ObjectShape.h>
 
 #include <chrono>
@@ -37,6 +35,11 @@ Eigen::Isometry3d metres(Eigen::Isometry3d T_mm)
 	T_mm.translation() /= 1000.0;
 	return T_mm;
 }
+
+std::shared_ptr<SimulatedLab> labFor(const MissionOptions& o, std::shared_ptr<SimulatedLab> lab)
+{
+	return lab ? lab : std::make_shared<SimulatedLab>(o);
+}
 }  // namespace
 
 struct Mission::Impl
@@ -44,40 +47,38 @@ struct Mission::Impl
 	const MissionOptions& o;
 	MissionResult r;
 	std::map<std::string, model::WireFrame> models;
-	std::map<std::string, Eigen::Isometry3d> poses;  ///< true object poses (sim::SimArm moves them)
-	sim::SimBase base;
+	std::shared_ptr<SimulatedLab> lab;  ///< the truth behind the devices
+	MissionDevices dev;                 ///< sim or serial (driver = ...)
+	std::map<std::string, Eigen::Isometry3d>& poses;  ///< true object poses (the arm moves them)
+	sim::SimBase& base;                               ///< the true base (truth only, no commands)
 	std::mt19937 rng;
 	std::unique_ptr<Navigator> nav;
 	std::unique_ptr<ObjectSearch> search;
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
-	std::unique_ptr<sim::StereoRenderer> renderer;  ///< built at the first sweep view
-	sim::LabScene lab;
 	bool render_failed = false;
 	std::string carried;  ///< instance standing on the base after retrieval
 	Eigen::Isometry3d T_OinC0_carried = Eigen::Isometry3d::Identity();  ///< m
 
-	explicit Impl(const MissionOptions& opts)
+	Impl(const MissionOptions& opts, std::shared_ptr<SimulatedLab> simulated)
 	    : o(opts),
-	      base(base::LabmateModel(opts.labmate), opts.sim_base, start(opts)),
+	      lab(labFor(opts, std::move(simulated))),
+	      dev(opts.devices, *lab),
+	      poses(lab->objectPoses()),
+	      base(lab->base()),
 	      rng(opts.seed + 7)
 	{
 	}
-	static Eigen::Vector3d start(const MissionOptions& opts)
-	{
-		return opts.route.empty() ? Eigen::Vector3d::Zero()
-		                          : waypoint(opts, opts.route[0]).xv_zxphi;
-	}
-	Eigen::Isometry3d trueC0() const
-	{
-		return geometry::T_C0inW(base.truePose(), o.bisight.head_height_m);
-	}
+	Eigen::Isometry3d trueC0() const { return lab->trueC0(); }
 	WorldObjects objects() const
 	{
 		WorldObjects out;
 		for (const auto& p : o.world.objects) out[p.name] = {p.model, poses.at(p.name)};
 		return out;
 	}
-	void grabStereo(const geometry::HeadAngles& angles);
+	void lookAt(const geometry::HeadAngles& angles);
+	void grabStereo();
+	void stopSafely(const hw::SerialDeviceError& e);
+	void runStages();
 	void loadTarget();
 	void navigate();
 	bool searchStation(const NamedPose& station);
@@ -92,42 +93,38 @@ void Mission::Impl::loadTarget()
 	r.timeline.beginStage("load_target");
 	ComputeTimer t(r.timeline);
 	models = loadModels(o);
-	for (const auto& p : o.world.objects) poses[p.name] = placedObjects(o.world).at(p.name).T_OinW;
 	search = std::make_unique<ObjectSearch>(o, models.at(o.target), models);
-	if (o.search.render_stereo)
-		search->on_view = [this](const geometry::HeadAngles& a)
-		{
-			if (render_failed) return;
-			try
-			{
-				grabStereo(a);
-			}
-			catch (const std::exception& e)
-			{  // the recording loses its images, the mission goes on (and says so)
-				r.timeline.note(std::string("stereo rendering failed, no more images: ") +
-				                e.what());
-				render_failed = true;
-			}
-		};
+	search->on_view = [this](const geometry::HeadAngles& a) { lookAt(a); };
 	r.timeline.note("target model " + o.target + ": " +
 	                std::to_string(models.at(o.target).lines.size()) + " lines, " +
 	                std::to_string(models.at(o.target).conics.size()) + " conics");
 }
 
-void Mission::Impl::grabStereo(const geometry::HeadAngles& angles)
+void Mission::Impl::lookAt(const geometry::HeadAngles& angles)
+{
+	dev.head().moveTo(angles);
+	if (!o.search.render_stereo || render_failed) return;
+	try
+	{
+		grabStereo();
+	}
+	catch (const hw::SerialDeviceError&)
+	{
+		throw;  // the head stopped answering: the mission stops
+	}
+	catch (const std::exception& e)
+	{  // the recording loses its images, the mission goes on (and says so)
+		r.timeline.note(std::string("stereo rendering failed, no more images: ") + e.what());
+		render_failed = true;
+	}
+}
+
+void Mission::Impl::grabStereo()
 {
 	const auto t0 = std::chrono::steady_clock::now();
-	if (!renderer)
-	{
-		lab = sim::buildLabScene(o.world);
-		renderer = std::make_unique<sim::StereoRenderer>(geometry::BiSightHead(o.bisight),
-		                                                 sim::RenderOptions());
-	}
-	for (const auto& [name, T] : poses)
-		if (auto gl = lab.scene->getByName("object." + name))
-			gl->setPose(geometry::cameraPoseToMrpt(T));
-	const auto frame = renderer->render(*lab.scene, trueC0(), angles, r.shots.size());
-	StereoShot shot{nav->path().back(), angles, frame.left, frame.right};
+	auto images = dev.head().grab();
+	StereoShot shot{nav->path().back(), images.angles, std::move(images.left),
+	                std::move(images.right)};
 	shot.state.time_s = r.timeline.simulatedSeconds();
 	r.shots.push_back(std::move(shot));
 	r.timeline.addRender(
@@ -138,7 +135,7 @@ void Mission::Impl::navigate()
 {
 	r.timeline.beginStage("navigate");
 	nav = std::make_unique<Navigator>(
-	    o, base, [this] { return base.truePose(); }, r.timeline);
+	    o, dev.base(), [this] { return base.truePose(); }, r.timeline);
 	nav->on_step = [this](const PathSample& s)
 	{
 		if (!carried.empty()) poses[carried] = trueC0() * T_OinC0_carried;
@@ -173,11 +170,8 @@ void Mission::Impl::retrieve()
 {
 	r.timeline.beginStage("retrieve");
 	// Simulated docking: the arm base stands at the known T_C0inA from the true head centre.
-	const Eigen::Isometry3d T_AinW = trueC0() * metres(o.dock.T_C0inA.inverse());
-	arm::RtxKinematics kin(o.rtx);
-	auto T_GinW = [T_AinW, kin](const hw::ArmJoints& j)
-	{ return T_AinW * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
-	sim::SimArm arm(T_GinW, o.sim_arm, poses);
+	lab->dockArm();
+	const auto& arm = lab->arm();  // truth: what the gripper holds
 	const auto angles = r.search.angles;
 	auto reobserve = [&]() -> std::optional<Eigen::Isometry3d>
 	{
@@ -188,8 +182,8 @@ void Mission::Impl::retrieve()
 	const Eigen::Vector3d p_OinW = (trueC0() * metres(r.search.T_OinC0)).translation();
 	Retrieval retrieval(o, models.at(o.target));
 	r.retrieval = retrieval.run(
-	    r.search.T_OinC0, tableHeightNear(p_OinW), arm, reobserve, [&] { return arm.grasped(); },
-	    r.timeline);
+	    r.search.T_OinC0, tableHeightNear(p_OinW), dev.arm(), reobserve,
+	    [&] { return arm.grasped(); }, r.timeline);
 	r.retrieved = r.retrieval.retrieved && arm.grasped() == r.search.instance;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieved) return;
@@ -215,22 +209,61 @@ void Mission::Impl::finish()
 	const Eigen::Vector3d truth = base.truePose();
 	r.final_position_error_m = (truth.head<2>() - r.home.head<2>()).norm();
 	r.final_heading_error_deg = std::abs(base::wrapAngle(truth.z() - r.home.z())) * 180 / M_PI;
-	r.final_estimate_error_m = (nav->estimate().head<2>() - truth.head<2>()).norm();
 	r.dead_reckoning_error_m = (base.odometry().xv_zxphi.head<2>() - truth.head<2>()).norm();
 	r.returned_home = r.final_position_error_m <= o.home_tolerance_m;
-	r.path = nav->path();
-	r.map = nav->map();
-	r.measurements = nav->measurements;
-	r.measurements_rejected = nav->rejected;
+	r.links = dev.links();
 	r.final_objects = objects();
-	r.success = r.found && r.retrieved && r.returned_home;
+	if (nav)  // no device I/O here: a device may have failed
+	{
+		r.path = nav->path();
+		r.final_estimate_error_m = (r.path.back().estimate.head<2>() - truth.head<2>()).norm();
+		r.map = nav->map();
+		r.measurements = nav->measurements;
+		r.measurements_rejected = nav->rejected;
+	}
+	r.success = r.found && r.retrieved && r.returned_home && !r.stopped;
 	if (r.failure.empty() && !r.found)
 		r.failure = "target '" + o.target + "' not found at any of " +
 		            std::to_string(r.stations_searched) + " search stations";
 	if (r.failure.empty() && !r.returned_home) r.failure = "did not return home within tolerance";
 }
 
-Mission::Mission(const MissionOptions& o) : impl_(std::make_unique<Impl>(o)) {}
+void Mission::Impl::runStages()
+{
+	loadTarget();
+	navigate();
+	for (const auto& station : o.stations)
+		if ((r.found = searchStation(station))) break;
+	if (r.found)
+	{
+		r.found_instance = r.search.instance;
+		retrieve();
+	}
+	goHome();
+}
+
+void Mission::Impl::stopSafely(const hw::SerialDeviceError& e)
+{
+	r.stopped = true;
+	r.failure = std::string("stopped: ") + e.what();
+	r.timeline.note(r.failure);
+	// Steps are discrete (the base stands still between them); a zero step makes sure of it.
+	try
+	{
+		dev.base().step({0, 0, 0});
+		r.timeline.note("base stopped");
+	}
+	catch (const std::exception& stop_error)
+	{
+		r.timeline.note(std::string("could not command the base to stop: ") + stop_error.what());
+	}
+	r.timeline.endStage();
+}
+
+Mission::Mission(const MissionOptions& o, std::shared_ptr<SimulatedLab> lab)
+    : impl_(std::make_unique<Impl>(o, std::move(lab)))
+{
+}
 Mission::~Mission() = default;
 
 MissionResult Mission::run()
@@ -238,16 +271,14 @@ MissionResult Mission::run()
 	auto& m = *impl_;
 	m.progress = &on_progress;
 	m.r.target = m.o.target;
-	m.loadTarget();
-	m.navigate();
-	for (const auto& station : m.o.stations)
-		if ((m.r.found = m.searchStation(station))) break;
-	if (m.r.found)
+	try
 	{
-		m.r.found_instance = m.r.search.instance;
-		m.retrieve();
+		m.runStages();
 	}
-	m.goHome();
+	catch (const hw::SerialDeviceError& e)
+	{  // a device stopped answering: stop where we are, keep what was recorded
+		m.stopSafely(e);
+	}
 	m.finish();
 	return m.r;
 }

@@ -169,25 +169,10 @@ void readModelFiles(const CConfigFileBase& cfg, const std::string& dir, MissionO
 }
 }  // namespace
 
-void checkDeviceDrivers(const CConfigFileBase& cfg)
-{
-	for (const std::string dev : {"base", "head", "arm"})
-	{
-		const std::string section = "device." + dev;
-		const auto driver = util::readString(cfg, section, "driver");
-		if (driver == "serial")
-			throw util::ConfigError(util::describeKey(cfg, section, "driver") + ": the serial " +
-			                        dev + " driver is not available yet (use driver = sim)");
-		if (driver != "sim")
-			throw util::ConfigError(util::describeKey(cfg, section, "driver") + ": '" + driver +
-			                        "' is not one of sim, serial");
-	}
-}
-
 MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std::string& base_dir)
 {
 	MissionOptions o;
-	checkDeviceDrivers(cfg);
+	o.devices.loadFromConfigFile(cfg);
 	readMissionSection(cfg, base_dir, o);
 	readModelFiles(cfg, base_dir, o);
 	o.dock.loadFromConfigFile(cfg, "arm_mount");

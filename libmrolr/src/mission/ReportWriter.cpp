@@ -56,6 +56,14 @@ json timelineJson(const Timeline& t)
 		events.push_back({{"t_s", e.time_s}, {"stage", e.stage}, {"event", e.text}});
 	return events;
 }
+
+json linksJson(const std::vector<LinkReport>& links)
+{
+	json out = json::array();
+	for (const auto& l : links)
+		out.push_back({{"device", l.section}, {"port", l.port}, {"resends", l.resends}});
+	return out;
+}
 }  // namespace
 
 json reportJson(const MissionResult& r, const MissionOptions& o)
@@ -64,6 +72,8 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	json j = {{"mission", o.name},
 	          {"success", r.success},
 	          {"failure", r.failure},
+	          {"stopped", r.stopped},
+	          {"serial_links", linksJson(r.links)},
 	          {"target", r.target},
 	          {"found", r.found},
 	          {"found_instance", r.found_instance},
@@ -124,7 +134,10 @@ std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
 		  << ") |\n| grasp correction (mm) | " << r.retrieval.correction_mm << " |\n";
 	s << "| simulated time (s) | " << r.timeline.simulatedSeconds() << " |\n"
 	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n"
-	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n\n## Stages\n\n"
+	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n";
+	for (const auto& l : r.links)
+		s << "| serial " << l.section << " | " << l.port << ", " << l.resends << " resends |\n";
+	s << "\n## Stages\n\n"
 	  << "| stage | simulated s | compute s |\n|---|---|---|\n";
 	for (const auto& [name, sec] : r.timeline.stageSeconds())
 	{

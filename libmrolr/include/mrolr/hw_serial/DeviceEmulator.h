@@ -26,6 +26,8 @@ struct FaultOptions
 	int garbage_replies = 0;           ///< the next N replies are replaced by binary garbage
 	double drop_byte_probability = 0;  ///< each byte of every reply is lost with this chance
 	bool silent = false;  ///< requests are read, neither executed nor answered (a hung device)
+	/** -1: off; N >= 0: the device answers N more requests, then goes silent (hangs mid-run). */
+	int silent_after_replies = -1;
 	unsigned seed = 1;    ///< for drop_byte_probability
 };
 

@@ -2,7 +2,9 @@
 /** The fetch mission (thesis 5.8, fig 5.8.1.5, 7.2): load the target model → drive the route →
  * at each search station sweep the head and recognise → dock, check and grasp with visual
  * verification → drive home; home empty-handed when the target is found nowhere. Runs on the
- * simulated devices (area sim); docs/mission.md lists what is simulated and how. */
+ * devices of its factory (MissionDevices: simulated or serial); perception is simulated from the
+ * SimulatedLab's truth; docs/mission.md lists what is simulated and how. */
+#include <mrolr/mission/MissionDevices.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/Navigator.h>
 #include <mrolr/mission/ObjectSearch.h>
@@ -27,6 +29,11 @@ struct MissionResult
 {
 	bool success = false, found = false, retrieved = false, returned_home = false;
 	std::string failure;  ///< reason when not successful
+	/** A device failed (stopped answering, garbage, disconnect): the mission stopped where it
+	 * was, the base commanded to stand still and the arm not moved again; failure names the
+	 * device section and its port. */
+	bool stopped = false;
+	std::vector<LinkReport> links;  ///< serial devices: port and resends
 	std::string target, found_instance, found_at_station;
 	int stations_searched = 0;
 	double final_position_error_m = 0, final_heading_error_deg = 0;
@@ -47,7 +54,10 @@ struct MissionResult
 class Mission
 {
  public:
-	explicit Mission(const MissionOptions& o);
+	/** Builds the devices of o.devices now (serial ports opened and checked; util::ConfigError
+	 * names the port key otherwise) around @p lab (default: a new SimulatedLab(o)); pass the lab
+	 * that a SerialEmulation serves so that the mission's truth is the one behind the ports. */
+	explicit Mission(const MissionOptions& o, std::shared_ptr<SimulatedLab> lab = nullptr);
 	~Mission();
 	/** Runs the whole mission; never throws for a mission-level failure (not found, unreachable):
 	 * those are reported in the result. */

@@ -9,6 +9,7 @@
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/base/TrajectoryPlanner.h>
 #include <mrolr/geometry/BiSightOptions.h>
+#include <mrolr/mission/DeviceOptions.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
@@ -111,6 +112,7 @@ struct MissionOptions
 	arm::RtxOptions rtx;
 	arm::GraspFeasibilityOptions grasp;
 	arm::ArmMount dock;  ///< known T_C0inA of the simulated docking (section [arm_mount])
+	DeviceOptions devices;  ///< [device.base|head|arm]: sim or serial (and the serial links)
 	sim::SimBaseOptions sim_base;
 	sim::SimArmOptions sim_arm;
 	NavigationOptions navigation;
@@ -125,10 +127,5 @@ struct MissionOptions
 	                                 const std::string& base_dir);
 	void dump(std::ostream& out) const;
 };
-
-/** Device drivers: `driver = sim | serial` in [device.base], [device.head], [device.arm]. Only
- * `sim` exists so far: `serial` throws util::ConfigError naming the key ("not available yet"),
- * anything else names the accepted values. */
-void checkDeviceDrivers(const mrpt::config::CConfigFileBase& cfg);
 
 }  // namespace mrolr::mission

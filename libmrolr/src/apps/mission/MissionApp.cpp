@@ -1,8 +1,15 @@
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/apps/TclapSupport.h>
 #include <mrolr/mission/MissionOutputs.h>
+#include <mrolr/mission/SerialEmulation.h>
+#include <mrolr/util/Config.h>
 
+#include <mrpt/config/CConfigFile.h>
+
+#include <array>
 #include <ctime>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -33,9 +40,20 @@ void printSummary(std::ostream& out, const mission::MissionResult& r, const std:
 		out << "  object pose error " << r.search.translation_error_mm << " mm, "
 		    << r.search.rotation_error_deg << " deg; grasp correction " << r.retrieval.correction_mm
 		    << " mm\n";
+	for (const auto& l : r.links)
+		out << "  serial " << l.section << " on " << l.port << ": " << l.resends << " resends\n";
 	out << "  simulated " << std::setprecision(1) << r.timeline.simulatedSeconds()
 	    << " s, robot compute " << std::setprecision(3) << r.timeline.computeSeconds()
 	    << " s\n  outputs in " << dir << "\n";
+}
+/** "section.key=value" → (section, key, value); the key is after the last '.' before '='. */
+std::array<std::string, 3> splitOverride(const std::string& text)
+{
+	const auto eq = text.find('=');
+	const auto dot = eq == std::string::npos ? std::string::npos : text.rfind('.', eq);
+	if (dot == std::string::npos || dot == 0 || dot + 1 == eq)
+		throw util::UsageError("--set '" + text + "': expected SECTION.KEY=VALUE");
+	return {text.substr(0, dot), text.substr(dot + 1, eq - dot - 1), text.substr(eq + 1)};
 }
 }  // namespace
 
@@ -51,6 +69,17 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 	                                 false, "", "DIR", cmd);
 	TCLAP::SwitchArg js("", "json", "print report.json instead of the summary", cmd);
 	TCLAP::SwitchArg q("", "quiet", "no progress line", cmd);
+	TCLAP::MultiArg<std::string> set("", "set", "override a key of the mission file", false,
+	                                 "SECTION.KEY=VALUE", cmd);
+	TCLAP::SwitchArg emu("", "serial-emulation",
+	                     "serve the simulated devices on pseudo-terminals and drive them through "
+	                     "the serial drivers",
+	                     cmd);
+	TCLAP::ValueArg<int> delay("", "emulate-delay-ms", "emulated devices reply this late", false, 0,
+	                           "N", cmd);
+	TCLAP::ValueArg<double> drop("", "emulate-drop-probability",
+	                             "emulated devices lose each reply byte with this chance", false, 0,
+	                             "P", cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;
@@ -60,14 +89,51 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 	out_dir = out.getValue();
 	json = js.getValue();
 	quiet = q.getValue();
+	overrides = set.getValue();
+	for (const auto& o : overrides) splitOverride(o);
+	serial_emulation = emu.getValue();
+	emulation_faults.reply_delay_ms = delay.getValue();
+	emulation_faults.drop_byte_probability = drop.getValue();
+	if (delay.getValue() < 0 || delay.getValue() > 10000)
+		throw util::UsageError("--emulate-delay-ms must be within [0, 10000]");
+	if (!(drop.getValue() >= 0 && drop.getValue() <= 0.5))
+		throw util::UsageError("--emulate-drop-probability must be within [0, 0.5]");
+	if (!serial_emulation && (delay.isSet() || drop.isSet()))
+		throw util::UsageError("--emulate-* options need --serial-emulation");
+}
+
+mission::MissionOptions MissionApp::loadOptions() const
+{
+	if (overrides.empty()) return mission::MissionOptions::load(config_path);
+	if (!std::ifstream(config_path).good())
+		throw util::ConfigError("cannot open mission configuration '" + config_path + "'");
+	mrpt::config::CConfigFile cfg(config_path);
+	for (const auto& o : overrides)
+	{
+		const auto [section, key, value] = splitOverride(o);
+		cfg.write(section, key, value);
+	}
+	cfg.discardSavingChanges();  // never write the overrides back into the file
+	auto options = mission::MissionOptions::fromConfig(
+	    cfg, std::filesystem::path(config_path).parent_path().string());
+	options.config_path = config_path;
+	return options;
 }
 
 int MissionApp::run(std::ostream& out, std::ostream& progress)
 {
 	if (help_shown) return 0;
-	options = mission::MissionOptions::load(config_path);
+	options = loadOptions();
+	std::shared_ptr<mission::SimulatedLab> lab;
+	std::unique_ptr<mission::SerialEmulation> emulation;
+	if (serial_emulation)
+	{
+		lab = std::make_shared<mission::SimulatedLab>(options);
+		emulation = std::make_unique<mission::SerialEmulation>(*lab, emulation_faults);
+		emulation->useIn(options);
+	}
 	if (out_dir.empty()) out_dir = "out/" + options.name + "-" + utcStamp();
-	mission::Mission m(options);
+	mission::Mission m(options, lab);
 	if (!quiet)
 		m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
 		{

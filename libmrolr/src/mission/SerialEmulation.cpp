@@ -1,0 +1,39 @@
+// The simulated lab's devices on pseudo-terminals for the serial end-to-end mission.
+#include <mrolr/mission/SerialEmulation.h>
+
+namespace mrolr::mission
+{
+namespace
+{
+void useSerial(DeviceChoice& d, const std::string& port, const hw::LinkOptions& defaults)
+{
+	if (!d.serial)
+	{
+		d.link.baud = 115200;
+		d.link.link = defaults;
+	}
+	d.serial = true;
+	d.link.port = port;
+	d.link.link.device = d.section;
+	d.port_key = "[" + d.section + "] port (serial emulation)";
+}
+}  // namespace
+
+SerialEmulation::SerialEmulation(SimulatedLab& lab, const hw::FaultOptions& faults)
+    : base_handler_(lab.base()), head_handler_(lab.head()), arm_handler_(lab.arm())
+{
+	base_ = std::make_unique<hw::PtyEmulator>(base_handler_, faults);
+	head_ = std::make_unique<hw::PtyEmulator>(head_handler_, faults);
+	arm_ = std::make_unique<hw::PtyEmulator>(arm_handler_, faults);
+}
+
+SerialEmulation::~SerialEmulation() = default;
+
+void SerialEmulation::useIn(MissionOptions& o, const hw::LinkOptions& defaults) const
+{
+	useSerial(o.devices.base, base_->slavePath(), defaults);
+	useSerial(o.devices.head, head_->slavePath(), defaults);
+	useSerial(o.devices.arm, arm_->slavePath(), defaults);
+}
+
+}  // namespace mrolr::mission
