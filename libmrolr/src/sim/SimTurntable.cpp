@@ -3,6 +3,7 @@
 #include <mrolr/sim/SimTurntable.h>
 #include <mrolr/util/Config.h>
 
+#include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CCylinder.h>
 
 #include <ostream>
@@ -17,6 +18,12 @@ void SimTurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
 	axis_distance_m = readDouble(cfg, section, "axis_distance_m", axis_distance_m);
 	top_below_c0_m = readDouble(cfg, section, "top_below_c0_m", top_below_c0_m);
 	disc_radius_m = readDouble(cfg, section, "disc_radius_m", disc_radius_m);
+	disc_grey = readDouble(cfg, section, "disc_grey", disc_grey);
+	backdrop_grey = readDouble(cfg, section, "backdrop_grey", backdrop_grey);
+	backdrop_behind_m = readDouble(cfg, section, "backdrop_behind_m", backdrop_behind_m);
+	requireInRange(cfg, section, "disc_grey", disc_grey, 0, 1);
+	requireInRange(cfg, section, "backdrop_grey", backdrop_grey, 0, 1);
+	requireInRange(cfg, section, "backdrop_behind_m", backdrop_behind_m, 0.05, 10);
 	requireInRange(cfg, section, "step_deg", step_deg, 1, 180);
 	requireInRange(cfg, section, "axis_distance_m", axis_distance_m, 0.2, 5);
 	requireInRange(cfg, section, "disc_radius_m", disc_radius_m, 0.01, 1);
@@ -25,7 +32,9 @@ void SimTurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase
 void SimTurntableOptions::dump(std::ostream& out) const
 {
 	out << "step_deg = " << step_deg << "\naxis_distance_m = " << axis_distance_m
-	    << "\ntop_below_c0_m = " << top_below_c0_m << "\ndisc_radius_m = " << disc_radius_m << "\n";
+	    << "\ntop_below_c0_m = " << top_below_c0_m << "\ndisc_radius_m = " << disc_radius_m
+	    << "\ndisc_grey = " << disc_grey << "\nbackdrop_grey = " << backdrop_grey
+	    << "\nbackdrop_behind_m = " << backdrop_behind_m << "\n";
 }
 
 SimTurntable::SimTurntable(StereoRenderer& renderer, const world::ObjectShape& shape,
@@ -35,13 +44,26 @@ SimTurntable::SimTurntable(StereoRenderer& renderer, const world::ObjectShape& s
 	const double r = options.disc_radius_m;
 	auto disc = mrpt::opengl::CCylinder::Create(float(r), float(r), 0.02f, 64);
 	disc->setPose(geometry::cameraPoseToMrpt(T_TinC0() * Eigen::Translation3d(0, 0, -0.02)));
-	disc->setColor(0.12f, 0.12f, 0.13f);
+	const float g = float(options.disc_grey);
+	disc->setColor(g, g, g);
 	scene_->insert(disc);
+	if (options.backdrop_grey > 0) scene_->insert(backdrop());
 	object_ = objectVisual(shape);
 	scene_->insert(object_);
 	const Eigen::Vector3d mid = T_TinC0() * Eigen::Vector3d(0, 0, shape.heightMm() * 5e-4);
 	angles_ = renderer_.head().fixate(mid);
 	placeObject();
+}
+
+mrpt::opengl::CBox::Ptr SimTurntable::backdrop() const
+{
+	// a 3 m wide, 2 m high screen standing behind the axis, facing the head (C0 axes: z forward)
+	const double z = options_.axis_distance_m + options_.backdrop_behind_m;
+	auto b = mrpt::opengl::CBox::Create(mrpt::math::TPoint3D(z, -1.5, -1.0),
+	                                    mrpt::math::TPoint3D(z + 0.01, 1.5, 1.0));
+	const float g = float(options_.backdrop_grey);
+	b->setColor(g, g, g);
+	return b;
 }
 
 Eigen::Isometry3d SimTurntable::T_TinC0() const

@@ -9,6 +9,7 @@
 #include <mrolr/world/ObjectShape.h>
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 
@@ -23,6 +24,9 @@ struct SimTurntableOptions
 	double axis_distance_m = 0.6;  ///< from C0 to the rotation axis, horizontally
 	double top_below_c0_m = 0.3;   ///< disc top below the head centre C0
 	double disc_radius_m = 0.15;
+	double disc_grey = 0.7;      ///< grey level 0..1 of the disc (a light rig: dark objects show)
+	double backdrop_grey = 0.5;  ///< grey of a screen behind the object (0 = none, black)
+	double backdrop_behind_m = 0.5;  ///< screen distance behind the rotation axis
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -56,6 +60,7 @@ class SimTurntable : public hw::TurntableDevice
 	double angle_deg_ = 0;
 	uint64_t frames_ = 0;
 	void placeObject();
+	mrpt::opengl::CBox::Ptr backdrop() const;
 };
 
 }  // namespace mrolr::sim
