@@ -3,13 +3,17 @@
 // (cv::ppf_match_3d::PPF3DDetector, the peer a user would otherwise pick) fed points with
 // tangents sampled every 3 mm from the same wire-frames. The summary prints the ratios and the
 // pose errors of both against the scene's truth, measured in the same run.
+#include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
+#include <mrolr/util/Cli.h>
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SyntheticObjects.h>
 #include <mrolr/recog/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 
 #include <benchmark/benchmark.h>
+#include <mrpt/config/CConfigFile.h>
 #include <opencv2/surface_matching.hpp>
 
 #include <cstdio>
@@ -17,10 +21,19 @@
 #include <memory>
 
 using namespace mrolr::recog;
+namespace model = mrolr::model;
 
 namespace
 {
 constexpr int kTarget = 1;  // the cup
+constexpr int kAbsent = 7;  // the wedge: left out of the absent-model scene
+
+RecognitionOptions withSkip(bool skip)
+{
+	RecognitionOptions o = RecognitionOptions::defaults();
+	o.skip_hopeless_levels = skip;
+	return o;
+}
 
 struct Fixture
 {
@@ -29,6 +42,8 @@ struct Fixture
 	std::vector<std::unique_ptr<Recognizer>> recognizers;
 	cv::Mat ppf_scene;
 	std::unique_ptr<cv::ppf_match_3d::PPF3DDetector> ppf;
+	model::WireFrame absent_scene;  ///< the nine objects other than kAbsent
+	std::unique_ptr<Recognizer> absent_skip, absent_full;
 
 	Fixture()
 	{
@@ -40,6 +55,11 @@ struct Fixture
 		ppf_scene = pointsWithTangents(scene.scene);
 		ppf = std::make_unique<cv::ppf_match_3d::PPF3DDetector>(0.03, 0.05);
 		ppf->trainModel(pointsWithTangents(objects[kTarget]));
+		std::vector<model::WireFrame> others = objects;
+		others.erase(others.begin() + kAbsent);
+		absent_scene = makeTableScene(others, -1, 9, n, 2025).scene;
+		absent_skip = std::make_unique<Recognizer>(objects[kAbsent], withSkip(true));
+		absent_full = std::make_unique<Recognizer>(objects[kAbsent], withSkip(false));
 	}
 
 	/** N × 6 float matrix (x y z tx ty tz) of samples every 3 mm, as PPF3DDetector expects. */
@@ -61,6 +81,69 @@ Fixture& fixture()
 	return f;
 }
 
+/** Scene 0 of the rendered evaluation set (config/recognition.ini [evaluation]) and the first
+ * lab model (datasets/objects) that is not in it, with PPF trained on that model. */
+struct RenderedFixture
+{
+	mrolr::apps::EvalScene scene;
+	model::WireFrame absent;
+	std::unique_ptr<Recognizer> skip, full;
+	cv::Mat ppf_scene;
+	std::unique_ptr<cv::ppf_match_3d::PPF3DDetector> ppf;
+
+	RenderedFixture()
+	{
+		mrolr::apps::RecognizeApp app;
+		const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile(app.config_path));
+		mrolr::apps::EvaluationOptions eo;
+		eo.loadFromConfigFile(cfg, "evaluation");
+		scene = app.makeGenerator(eo)->make(0);
+		for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",
+		                         "hole_punch", "large_cup", "stapler"})
+			if (!scene.find(name) && absent.name.empty())
+				absent = model::loadWireFrame(
+				    mrolr::util::requireProjectFile(std::string("datasets/objects/") + name + ".wf"));
+		skip = std::make_unique<Recognizer>(absent, withSkip(true));
+		full = std::make_unique<Recognizer>(absent, withSkip(false));
+		ppf_scene = Fixture::pointsWithTangents(scene.scene);
+		ppf = std::make_unique<cv::ppf_match_3d::PPF3DDetector>(0.03, 0.05);
+		ppf->trainModel(Fixture::pointsWithTangents(absent));
+	}
+};
+
+RenderedFixture& rendered()
+{
+	static RenderedFixture f;
+	return f;
+}
+
+/** The absent model in the rendered, reconstructed scene: with (1) and without (0) skips. */
+void BM_RecogAbsentRendered(benchmark::State& state)
+{
+	auto& f = rendered();
+	const auto& rec = state.range(0) ? *f.skip : *f.full;
+	RecognitionResult r;
+	for (auto _ : state) benchmark::DoNotOptimize(r = rec.recognize(f.scene.scene));
+	state.counters["found"] = r.found;
+	state.counters["levels_skipped"] = r.levels_skipped;
+	state.counters["segments"] =
+	    static_cast<double>(f.scene.scene.lines.size() + f.scene.scene.conics.size());
+}
+BENCHMARK(BM_RecogAbsentRendered)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_PpfAbsentRendered(benchmark::State& state)
+{
+	auto& f = rendered();
+	for (auto _ : state)
+	{
+		std::vector<cv::ppf_match_3d::Pose3DPtr> results;
+		f.ppf->match(f.ppf_scene, results, 1.0 / 10.0, 0.05);
+		benchmark::DoNotOptimize(results);
+	}
+	state.counters["points"] = f.ppf_scene.rows;
+}
+BENCHMARK(BM_PpfAbsentRendered)->Unit(benchmark::kMillisecond);
+
 void BM_RecogOneModel(benchmark::State& state)
 {
 	auto& f = fixture();
@@ -77,6 +160,18 @@ void BM_RecogDatabase10(benchmark::State& state)
 		for (const auto& r : f.recognizers) benchmark::DoNotOptimize(r->recognize(f.scene.scene));
 }
 BENCHMARK(BM_RecogDatabase10)->Unit(benchmark::kMillisecond);
+
+/** A model absent from the scene, with (1) and without (0) the support bound's skips. */
+void BM_RecogAbsentModel(benchmark::State& state)
+{
+	auto& f = fixture();
+	const auto& rec = state.range(0) ? *f.absent_skip : *f.absent_full;
+	RecognitionResult r;
+	for (auto _ : state) benchmark::DoNotOptimize(r = rec.recognize(f.absent_scene));
+	state.counters["found"] = r.found;
+	state.counters["levels_skipped"] = r.levels_skipped;
+}
+BENCHMARK(BM_RecogAbsentModel)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_RecogModelTables(benchmark::State& state)
 {
@@ -151,6 +246,13 @@ int main(int argc, char** argv)
 	auto get = [&](const char* n) { return reporter.ms.count(n) ? reporter.ms[n] : 0.0; };
 	const double one = get("BM_RecogOneModel"), db = get("BM_RecogDatabase10"),
 	             ppf = get("BM_PpfMatchOneModel");
+	const double abs0 = get("BM_RecogAbsentModel/0"), abs1 = get("BM_RecogAbsentModel/1");
+	const double rend0 = get("BM_RecogAbsentRendered/0"), rend1 = get("BM_RecogAbsentRendered/1"),
+	             rppf = get("BM_PpfAbsentRendered");
+	std::printf("absent model (CPU time): synthetic scene %.2f ms without skips, %.2f ms with; "
+	            "rendered scene %.2f ms without, %.2f ms with, PPF %.2f ms; ratio MROLR (with "
+	            "skips) / PPF on the rendered scene = %.3f\n",
+	            abs0, abs1, rend0, rend1, rppf, rppf > 0 ? rend1 / rppf : 0.0);
 	std::printf(
 	    "summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
 	    "time ratio MROLR/PPF = %.3f\n",

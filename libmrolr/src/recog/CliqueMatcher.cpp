@@ -149,7 +149,7 @@ bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, b
 
 std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
                                      const OrientedScene& scene, const LevelParams& p,
-                                     int max_nodes)
+                                     int max_nodes, const FocusFilter& focus_ok)
 {
 	const auto& clique = model.cliques().at(clique_index);
 	const Tolerance tol = toleranceOf(p);
@@ -159,6 +159,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 	std::vector<CliqueMatch> out;
 	for (size_t o : gatedFor(mfocus, scene, p, true))
 	{
+		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
 		for (size_t k = 0; k < clique.members.size(); ++k)

@@ -55,6 +55,20 @@ void conicConic(const Feature& a, const Feature& b, PairRelation& r)
 	r.ax2 = -w.dot(b.u);
 }
 
+/** The distances and intervals of the relation (everything but the angle). */
+void relateGeometry(const Feature& a, const Feature& b, bool parallel, PairRelation& r)
+{
+	r.parallel = parallel;
+	if (a.isLine() && b.isLine())
+		parallel ? lineLineParallel(a, b, r) : lineLineSkew(a, b, r);
+	else if (a.isLine())
+		lineConic(a, b, r);
+	else if (b.isLine())
+		lineConic(b, a, r);
+	else
+		conicConic(a, b, r);
+}
+
 bool within(double scene, double model, double tol)
 {
 	return std::abs(scene - model) <= tol;
@@ -108,15 +122,7 @@ PairRelation relate(const Feature& a, const Feature& b, bool parallel)
 	r.alpha = angleBetween(a.u, b.u);
 	r.cos_alpha = std::cos(r.alpha);
 	r.sin_alpha = std::sin(r.alpha);
-	r.parallel = parallel;
-	if (a.isLine() && b.isLine())
-		parallel ? lineLineParallel(a, b, r) : lineLineSkew(a, b, r);
-	else if (a.isLine())
-		lineConic(a, b, r);
-	else if (b.isLine())
-		lineConic(b, a, r);
-	else
-		conicConic(a, b, r);
+	relateGeometry(a, b, parallel, r);
 	return r;
 }
 
@@ -133,7 +139,8 @@ bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, con
 {
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
 	if (!angleWithin(sa.u.dot(sb.u), m, tol)) return false;
-	const PairRelation s = relate(sa, sb, m.parallel);
+	PairRelation s;  // the angle was checked above: no trigonometry in the matcher's inner loop
+	relateGeometry(sa, sb, m.parallel, s);
 	if (ma.isLine() && mb.isLine()) return consistentLineLine(m, s, tol);
 	if (ma.isLine() || mb.isLine()) return consistentLineConic(m, s, tol);
 	return consistentConicConic(m, s, tol);

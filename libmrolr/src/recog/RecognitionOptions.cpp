@@ -117,6 +117,7 @@ void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	                     1000);
 	verify_rotation_deg = util::readDouble(cfg, section, "verify_rotation_deg");
 	util::requireInRange(cfg, section, "verify_rotation_deg", verify_rotation_deg, 0.01, 90);
+	skip_hopeless_levels = util::readBool(cfg, section, "skip_hopeless_levels", true);
 }
 
 void RecognitionOptions::dump(std::ostream& out) const
@@ -132,7 +133,8 @@ void RecognitionOptions::dump(std::ostream& out) const
 	    << "\nrefine_iterations = " << refine_iterations
 	    << "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
 	    << "\nverify_position_error_mm = " << verify_position_error_mm
-	    << "\nverify_rotation_deg = " << verify_rotation_deg << "\n";
+	    << "\nverify_rotation_deg = " << verify_rotation_deg
+	    << "\nskip_hopeless_levels = " << (skip_hopeless_levels ? "true" : "false") << "\n";
 }
 
 }  // namespace mrolr::recog

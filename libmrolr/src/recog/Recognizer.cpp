@@ -1,10 +1,13 @@
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/PoseEstimation.h>
 #include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/SupportBound.h>
 #include <mrolr/recog/TransformCluster.h>
 #include <mrolr/recog/Verification.h>
 
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <chrono>
 #include <stdexcept>
 
@@ -33,12 +36,13 @@ void addPoses(const std::vector<Correspondence>& cs, const RecognitionOptions& o
 }
 
 std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const OrientedScene& scene,
-                                         const RecognitionOptions& o, const LevelParams& p)
+                                         const RecognitionOptions& o, const LevelParams& p,
+                                         const FocusFilter& focus_ok)
 {
 	std::vector<PoseHypothesis> hyps;
 	for (size_t c = 0; c < model.cliques().size(); ++c)
 	{
-		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes);
+		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes, focus_ok);
 		for (size_t k = 0; k < matches.size() && k < kMatchesPerClique; ++k)
 			addPoses(correspondencesOf(model, scene, matches[k]), o, p,
 			         static_cast<double>(matches[k].matches.size()), hyps);
@@ -47,14 +51,23 @@ std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const Oriented
 }
 
 /** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
+double verifyBeta_mm(const LevelParams& p, const RecognitionOptions& o)
+{
+	return std::min(2 * p.position_error_mm, o.verify_position_error_mm);
+}
+
+double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
+{
+	return std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
+}
+
 std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(const ModelTable& model,
                                                                  const std::vector<Feature>& scene,
                                                                  Eigen::Isometry3d T,
                                                                  const LevelParams& p,
                                                                  const RecognitionOptions& o)
 {
-	const double beta = std::min(2 * p.position_error_mm, o.verify_position_error_mm);
-	const double theta = std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
+	const double beta = verifyBeta_mm(p, o), theta = verifyTheta_rad(p, o);
 	const int iterations = o.refine_iterations;
 	VerificationResult v = verifyPose(model, scene, T, beta, theta, p.length_threshold_mm);
 	for (int i = 0; i < iterations; ++i)
@@ -97,7 +110,7 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 	RecognitionResult best;
 	best.model = table_.name();
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-	const auto hyps = hypothesesAt(table_, os, opts_, p);
+	const auto hyps = hypothesesAt(table_, os, opts_, p, focusFilter(os, level));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	VerificationResult bestV;
@@ -126,17 +139,60 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 	RecognitionResult best;
 	best.model = table_.name();
 	size_t last = opts_.levels.size();
+	int skipped = 0;
+	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
+		if (bound_mm < opts_.levels[l].verify_min_score * modelLength_mm(l))
+		{
+			++skipped;
+			continue;
+		}
 		RecognitionResult r = recognizeAtLevel(scene, l);
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
+	best.levels_skipped = skipped;
 	best.ms =
 	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	return best;
+}
+
+double Recognizer::supportBound_mm(const std::vector<Feature>& scene) const
+{
+	double beta = 0, theta = 0;
+	for (const auto& p : opts_.levels)
+		beta = std::max(beta, verifyBeta_mm(p, opts_)),
+		theta = std::max(theta, verifyTheta_rad(p, opts_));
+	return SupportBound(table_, beta, theta).supportBound_mm(scene);
+}
+
+FocusFilter Recognizer::focusFilter(const OrientedScene& os, size_t level) const
+{
+	if (!opts_.skip_hopeless_levels) return {};
+	const LevelParams& p = opts_.levels[level];
+	auto bound = std::make_shared<SupportBound>(table_, verifyBeta_mm(p, opts_),
+	                                            verifyTheta_rad(p, opts_));
+	auto memo = std::make_shared<std::map<std::pair<size_t, size_t>, bool>>();
+	const double need_mm = p.verify_min_score * modelLength_mm(level);
+	return [bound, memo, need_mm, &os, beta = p.position_error_mm](size_t f, size_t s)
+	{
+		const auto [it, fresh] = memo->try_emplace({f, s}, true);
+		if (fresh)
+			it->second =
+			    bound->focusSupportBound_mm(os.features, f, os.features[s], beta) >= need_mm;
+		return it->second;
+	};
+}
+
+double Recognizer::modelLength_mm(size_t level) const
+{
+	double len = 0;
+	for (const auto& f : table_.features())
+		if (f.len_mm >= opts_.levels[level].length_threshold_mm) len += f.len_mm;
+	return len;
 }
 
 RecognitionResult Recognizer::recognize(const model::WireFrame& scene) const

@@ -130,6 +130,8 @@ struct EvalCase
 	double rot_err_deg = -1, trans_err_mm = -1;  ///< -1 unless present and found
 	double score = 0, truth_score = 0;  ///< verified score found / at the true pose (present)
 	int level = 0;
+	int levels_skipped = 0;  ///< levels the support bound skipped
+	double score_bound = 0;  ///< SupportBound over the coarsest level's model length
 	double ms = 0;
 	recog::RecognitionResult result;  ///< the recogniser's answer
 };

@@ -61,6 +61,10 @@ class RecognizeApp
 	bool json = false;
 	bool help_shown = false;
 
+	/** The scene generator of --evaluate with the app's scene options (--scene-config) and the
+	 * shipped head (config/bisight.ini) and render options (config/sim.ini [render]). */
+	std::unique_ptr<EvalSceneGenerator> makeGenerator(const EvaluationOptions& eo) const;
+
 	// Results (set by run)
 	recog::RecognitionOptions options;
 	std::vector<model::WireFrame> models;
@@ -73,7 +77,6 @@ class RecognizeApp
  private:
 	void loadScenes();
 	int runEvaluation(std::ostream& out);
-	std::unique_ptr<EvalSceneGenerator> makeGenerator(const EvaluationOptions& eo) const;
 	void loadEvaluationModels(const EvalSceneGenerator& gen);
 	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;

@@ -7,6 +7,7 @@
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
 
+#include <functional>
 #include <vector>
 
 namespace mrolr::recog
@@ -47,10 +48,15 @@ struct CliqueMatch
  * at least length_ratio times it; conic radii within 2 beta + 5 %. */
 bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus);
 
+/** Says whether a focus match (model feature index, index into OrientedScene::features) is worth
+ * searching; empty = every one. */
+using FocusFilter = std::function<bool(size_t model_focus, size_t scene_feature)>;
+
 /** All matches of clique @p clique_index with at least p.clique_size features, largest and
- * strongest first. @p max_nodes bounds the search per focus candidate. */
+ * strongest first. @p max_nodes bounds the search per focus candidate; focus candidates that
+ * @p focus_ok rejects are not searched. */
 std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
                                      const OrientedScene& scene, const LevelParams& p,
-                                     int max_nodes);
+                                     int max_nodes, const FocusFilter& focus_ok = {});
 
 }  // namespace mrolr::recog

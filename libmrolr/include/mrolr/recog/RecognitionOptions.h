@@ -43,9 +43,11 @@ struct RecognitionOptions
 	 * verify_rotation_deg). Capped so that coarse matching levels do not loosen verification. */
 	double verify_position_error_mm = 3;
 	double verify_rotation_deg = 3;
-	int verify_clusters = 20;
+	int verify_clusters = 20;  ///< heaviest clusters of clique transforms verified per level
 	int confirm_levels = 1;  ///< levels run after the first recognition; the best answer is kept
-	                         ///< ///< heaviest clusters of clique transforms verified per level
+	/** Skip a level whose SupportBound (no pose can reach its verify_min_score) says it cannot
+	 * verify: the answer is unchanged, an absent model costs less. Optional key, default true. */
+	bool skip_hopeless_levels = true;
 
 	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
 	static RecognitionOptions defaults();

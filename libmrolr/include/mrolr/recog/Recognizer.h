@@ -5,6 +5,7 @@
  * recognition; and the search over the scene models of a pan sweep. Unlike the thesis, every
  * answer carries a confidence and an absent object is reported as not found. */
 
+#include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
 
@@ -30,6 +31,7 @@ struct RecognitionResult
 	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
 	int scene_index = -1;        ///< which scene of a sweep held it (-1 when not found)
 	double ms = 0;               ///< wall time of the search (ms)
+	int levels_skipped = 0;      ///< levels skipped: SupportBound says they cannot verify
 };
 
 class Recognizer
@@ -41,7 +43,8 @@ class Recognizer
 
 	/** Runs the levels fine to coarse on one scene; after the first level that recognises, runs
 	 * options().confirm_levels more and keeps the best-ranked answer (a coarser level can find the
-	 * clique that a nearly symmetric object's true pose needs). */
+	 * clique that a nearly symmetric object's true pose needs). With skip_hopeless_levels, levels
+	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run. */
 	RecognitionResult recognize(const model::WireFrame& scene) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene) const;
 
@@ -53,10 +56,20 @@ class Recognizer
 	 * recognised ends the search. */
 	RecognitionResult searchSweep(const std::vector<model::WireFrame>& scenes) const;
 
+	/** SupportBound of the scene for the most permissive verification tolerances of all levels
+	 * (mm of model length). */
+	double supportBound_mm(const std::vector<Feature>& scene) const;
+	/** Model length counted by verification at @p level (features >= its length threshold). */
+	double modelLength_mm(size_t level) const;
+
 	const ModelTable& table() const { return table_; }
 	const RecognitionOptions& options() const { return opts_; }
 
  private:
+	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
+	 * verify_min_score (empty unless skip_hopeless_levels). */
+	FocusFilter focusFilter(const OrientedScene& os, size_t level) const;
+
 	ModelTable table_;
 	RecognitionOptions opts_;
 	Eigen::Vector3d centroid_O_;

@@ -28,7 +28,9 @@ nlohmann::json caseJson(const EvalCase& c)
 	        {"found", c.found},          {"correct", c.correct},
 	        {"rot_err_deg", c.rot_err_deg}, {"trans_err_mm", c.trans_err_mm},
 	        {"score", c.score},          {"truth_score", c.truth_score},
-	        {"level", c.level},          {"ms", c.ms}};
+	        {"level", c.level},          {"levels_skipped", c.levels_skipped},
+	        {"score_bound", c.score_bound},
+	        {"ms", c.ms}};
 }
 
 nlohmann::json objectJson(const EvalObject& o)
