@@ -96,7 +96,7 @@ void BM_MeasurementCycle(benchmark::State& state)
 	filter.reset();
 	vision::SyntheticWorld device(head, labLandmarks(), 2.0, 5);
 	vision::VisualSlam vslam(filter, head,
-	                         vision::VisionOptions::fromFile(kRoot + "/config/slam.ini"));
+	                         vision::VisionOptions::fromFile(kRoot + "/config/slam.ini"), model);
 	vslam.step({}, device);
 	vision::CycleTimes sum;
 	int k = 0, measured = 0;

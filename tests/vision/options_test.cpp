@@ -26,6 +26,7 @@ TEST(VisionOptions, DumpRoundTrips)
 	VisionOptions a;
 	a.nssd_threshold = 0.7;
 	a.fixation_max_attempts = 9;
+	a.selection = Selection::Saccade;
 	std::ostringstream s;
 	s << "[v]\n";
 	a.dump(s);
@@ -55,6 +56,17 @@ TEST(VisionOptions, ErrorsNameTheKey)
 	catch (const mrolr::util::ConfigError& e)
 	{
 		EXPECT_NE(std::string(e.what()).find("patch_size_px"), std::string::npos) << e.what();
+	}
+	const auto sel = text.find("selection = largest_vs");
+	mrpt::config::CConfigFileMemory badSelection(text.substr(0, sel) + "selection = random\n");
+	try
+	{
+		o.loadFromConfigFile(badSelection, "v");
+		FAIL() << "an unknown selection was accepted";
+	}
+	catch (const mrolr::util::ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("selection"), std::string::npos) << e.what();
 	}
 	mrpt::config::CConfigFileMemory missing("[v]\nnssd_threshold = 0.9\n");
 	EXPECT_THROW(o.loadFromConfigFile(missing, "v"), mrolr::util::ConfigError);

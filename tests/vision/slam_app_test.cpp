@@ -87,3 +87,57 @@ TEST(SlamApp, RenderedLabHeadBeatsDeadReckoning)
 	    bad.initialize({"mrolr-slam", "--world", "w.ini", "--live", "--head", "cardboard"}),
 	    mrolr::util::UsageError);
 }
+
+namespace
+{
+/** config/slam.ini with [vision] selection replaced, in a folder with the files it names. */
+std::string configWithSelection(const std::string& selection)
+{
+	const auto dir = std::filesystem::temp_directory_path() / ("mrolr_slam_sel_" + selection);
+	std::filesystem::create_directories(dir);
+	for (const char* f : {"bisight.ini", "labmate.ini"})
+		std::filesystem::copy_file(kRoot + "/config/" + f, dir / f,
+		                           std::filesystem::copy_options::overwrite_existing);
+	std::ifstream in(kRoot + "/config/slam.ini");
+	std::ofstream out(dir / "slam.ini");
+	for (std::string line; std::getline(in, line);)
+		out << (line.rfind("selection =", 0) == 0 ? "selection = " + selection : line) << "\n";
+	return (dir / "slam.ini").string();
+}
+}  // namespace
+
+TEST(SlamApp, SaccadeSelectionSkipsTheMeasurementsASaccadeCosts)
+{
+	const SlamApp app = runApp({"--config", configWithSelection("saccade")});
+	const auto& s = app.summary;
+	EXPECT_EQ(s.selection, "saccade");
+	EXPECT_LE(s.slam_final_position_error_m, 0.05);
+	EXPECT_GE(s.dr_final_position_error_m, 3 * s.slam_final_position_error_m);
+	std::vector<mrolr::vision::CycleRecord> r;
+	for (const auto& st : app.steps)
+		if (!st.at_home) r.insert(r.end(), st.records.begin(), st.records.end());
+	int decided = 0;
+	for (size_t k = 0; k < r.size(); ++k)
+	{
+		if (!(r[k].saccade && r[k].waiting)) continue;
+		++decided;
+		const size_t lost = static_cast<size_t>(r[k].measurements_lost);
+		ASSERT_GE(lost, 1u);
+		for (size_t j = k + 1; j < std::min(k + lost, r.size()); ++j)
+		{
+			EXPECT_TRUE(r[j].waiting) << "cycle " << j << " measured during a saccade";
+			EXPECT_EQ(r[j].label, r[k].label);
+		}
+	}
+	EXPECT_GT(decided, 0);
+}
+
+TEST(SlamApp, LargestVsSelectionOnlyCountsSaccadeCosts)
+{
+	const SlamApp app = runApp({"--config", configWithSelection("largest_vs")});
+	EXPECT_EQ(app.summary.selection, "largest_vs");
+	EXPECT_GT(app.summary.saccades, 0);
+	EXPECT_GE(app.summary.measurements_lost_to_saccades, app.summary.saccades);
+	for (const auto& st : app.steps)
+		for (const auto& rec : st.records) EXPECT_FALSE(rec.waiting);
+}

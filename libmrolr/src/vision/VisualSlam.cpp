@@ -27,8 +27,8 @@ CycleTimes& CycleTimes::operator+=(const CycleTimes& o)
 }
 
 VisualSlam::VisualSlam(slam::ActiveSlamFilter& filter, const geometry::BiSightHead& head,
-                       const VisionOptions& options)
-    : filter_(filter), head_(head), options_(options)
+                       const VisionOptions& options, const base::LabmateModel& model)
+    : filter_(filter), head_(head), options_(options), model_(model)
 {
 }
 
@@ -39,7 +39,8 @@ void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d
 	patches_.push_back(patch.clone());
 }
 
-CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& device)
+CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& device,
+                             const std::vector<base::WheelControl>& upcoming)
 {
 	CycleRecord r;
 	auto t0 = std::chrono::steady_clock::now();
@@ -48,9 +49,17 @@ CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& devi
 	if (static_cast<int>(visibleFeatures().size()) < filter_.options().min_visible_features)
 		acquireFeatures(device, r);
 	r.times.manage_ms = lap(t0);
-	selectFeature(r);
+	bool measure = false;
+	if (options_.selection == Selection::Saccade)
+		measure = selectBySaccade(r, upcoming);
+	else
+	{
+		selectFeature(r);
+		noteSaccade(r);
+		measure = r.measured;
+	}
 	r.times.select_ms = lap(t0);
-	if (r.measured) measureSelected(device, r);
+	if (measure) measureSelected(device, r);
 	deleteFailed(r);
 	return r;
 }
@@ -63,6 +72,7 @@ CycleRecord VisualSlam::measureFeature(size_t i, StereoHeadDevice& device)
 	r.measured = true, r.feature = i, r.label = filter_.info(i).label;
 	r.vs = slam::innovationVolume(filter_.innovationCovariance(i),
 	                              filter_.options().innovation_volume_sigma);
+	noteSaccade(r);
 	measureSelected(device, r);
 	return r;
 }
@@ -113,6 +123,7 @@ bool VisualSlam::addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch
 	patches_.push_back(patch.clone());
 	r.added.push_back(label);
 	++added_;
+	tracked_ = label, head_h_ = h;  // acquisition ends fixated on it
 	return true;
 }
 

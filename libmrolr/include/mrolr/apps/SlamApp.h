@@ -50,6 +50,7 @@ struct SlamStepLog
 	Eigen::Vector3d var_est;              ///< diagonal of the vehicle covariance
 	/** What the cycle decided: one record live, one per feature measured in replay. */
 	std::vector<vision::CycleRecord> records;
+	bool at_home = false;  ///< a known feature re-measured back home (5.6.2), not a route step
 };
 
 /** A mapped feature at the end of the run (W: metres, m²). */
@@ -76,6 +77,10 @@ struct SlamSummary
 	int features = 0, features_added = 0, features_deleted = 0;
 	int measurements = 0, matched = 0, accepted = 0;
 	double match_success_rate = 0;
+	/** Saccades to another feature (5.7) and the measurements they cost: skipped for real with
+	 * [vision] selection = saccade, counted only with largest_vs. */
+	int saccades = 0, measurements_lost_to_saccades = 0;
+	std::string selection;  ///< largest_vs | saccade (live), replay
 	int cycles = 0;
 	vision::CycleTimes mean_times;  ///< per cycle, ms
 };

@@ -10,6 +10,13 @@
 
 namespace mrolr::vision
 {
+/** How the live cycle picks the feature to measure (thesis 5.7). */
+enum class Selection
+{
+	LargestVs,  ///< the visible feature with the largest Vs (eq 5.147) at every step
+	Saccade     ///< 5.7 steps 1–4 (slam::decideSaccade): saccades cost measurements
+};
+
 /** Patch size, NSSD threshold, search regions and the fixation loop. Defaults are the thesis's. */
 struct VisionOptions
 {
@@ -27,6 +34,9 @@ struct VisionOptions
 	double acquire_pan_deg = 30;   ///< new features are sought at pan +this, 0, −this (5.7)
 	double acquire_tilt_deg = 10;  ///< … with the head tilted up by this
 	int acquire_box_px = 200;  ///< side of the central left-image box searched for a new feature
+	/** Key `selection = largest_vs | saccade`. With saccade, the measurements a saccade loses
+	 * (head speed model of [slam]) are really skipped. */
+	Selection selection = Selection::LargestVs;
 
 	/** Reads every key above from @p section; all keys are required. */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

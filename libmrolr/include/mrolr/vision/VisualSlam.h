@@ -45,6 +45,12 @@ struct CycleRecord
 	FeatureMeasurement measurement;           ///< ellipses, matches, scores, measured h
 	bool accepted = false;                    ///< matched and passed the χ² gate
 	std::vector<std::string> added, deleted;  ///< map changes in this cycle
+	/** The head turned to another feature than the last one measured (5.7). */
+	bool saccade = false;
+	/** Measurements that saccade costs (5.7 step 1, slam::measurementsLostBySaccade). Skipped for
+	 * real with selection = saccade; only counted with largest_vs. */
+	int measurements_lost = 0;
+	bool waiting = false;  ///< no measurement: the head is still saccading (selection = saccade)
 	CycleTimes times;
 };
 
@@ -53,15 +59,18 @@ struct CycleRecord
 class VisualSlam
 {
  public:
+	/** @p model is the base model the saccade decision predicts with (5.7 step 3). */
 	VisualSlam(slam::ActiveSlamFilter& filter, const geometry::BiSightHead& head,
-	           const VisionOptions& options);
+	           const VisionOptions& options, const base::LabmateModel& model);
 
 	/** A known feature (5.6.2) at @p p_FinW (W, metres) with its saved patch. */
 	void addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
 	                     const cv::Mat& patch);
 
-	/** One cycle after the base moved by @p u (dt_s = 0: no motion, measure only). */
-	CycleRecord step(const base::WheelControl& u, StereoHeadDevice& device);
+	/** One cycle after the base moved by @p u (dt_s = 0: no motion, measure only). @p upcoming:
+	 * the next planned controls, for the saccade decision (selection = saccade). */
+	CycleRecord step(const base::WheelControl& u, StereoHeadDevice& device,
+	                 const std::vector<base::WheelControl>& upcoming = {});
 
 	/** Measures feature @p i now, without motion or selection (e.g. re-finding a known feature when
 	 * the robot is back home, 5.6.2). Returns found = false if it is not visible. */
@@ -95,6 +104,9 @@ class VisualSlam
 	void applyMeasurement(CycleRecord& r);
 	bool isDuplicate(const Eigen::Vector3d& p_FinW);
 	void selectFeature(CycleRecord& r);
+	/** 5.7 steps 1–4; false when the head is (still) saccading and nothing is measured. */
+	bool selectBySaccade(CycleRecord& r, const std::vector<base::WheelControl>& upcoming);
+	void noteSaccade(CycleRecord& r);
 	void measureSelected(StereoHeadDevice& device, CycleRecord& r);
 	void deleteFailed(CycleRecord& r);
 
@@ -102,7 +114,12 @@ class VisualSlam
 	geometry::BiSightHead head_;
 	VisionOptions options_;
 	std::vector<cv::Mat> patches_;
+	base::LabmateModel model_;
 	int added_ = 0, deleted_ = 0, next_label_ = 1;
+	std::string tracked_;  ///< label of the feature the head fixates now
+	Eigen::Vector3d head_h_ = Eigen::Vector3d::Zero();  ///< its ideal-head angles (eq 5.40), rad
+	std::string pending_;  ///< selection = saccade: the feature the head is moving to
+	int waiting_ = 0;      ///< cycles until the head arrives there
 };
 
 }  // namespace mrolr::vision

@@ -77,6 +77,8 @@ SlamSummary summarise(const std::vector<SlamStepLog>& steps, SlamSummary s)
 			s.matched += r.measurement.found;
 			s.accepted += r.accepted;
 			s.mean_times += r.times;
+			s.saccades += r.saccade;
+			s.measurements_lost_to_saccades += r.measurements_lost;
 		}
 	}
 	const double n = std::max<size_t>(steps.size(), 1);
@@ -110,6 +112,9 @@ nlohmann::json toJson(const SlamSummary& s)
 	        {"accepted", s.accepted},
 	        {"match_success_rate", s.match_success_rate},
 	        {"cycles", s.cycles},
+	        {"selection", s.selection},
+	        {"saccades", s.saccades},
+	        {"measurements_lost_to_saccades", s.measurements_lost_to_saccades},
 	        {"ms_per_cycle",
 	         {{"processing", t.processingMs()},
 	          {"predict", t.predict_ms},

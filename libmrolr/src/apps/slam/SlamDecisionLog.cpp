@@ -73,7 +73,9 @@ std::string decisionText(size_t step, const vision::CycleRecord& r)
 	writeEllipse(s, "ellipse_right_px", m.ellipse_right);
 	s << " n_sigma=" << m.ellipse_left.n_sigma << " score_left=" << m.left.score
 	  << " score_right=" << m.right.score << " found=" << m.found << " accepted=" << r.accepted
-	  << " added=" << joined(r.added) << " deleted=" << joined(r.deleted);
+	  << " added=" << joined(r.added) << " deleted=" << joined(r.deleted)
+	  << " saccade=" << r.saccade << " measurements_lost=" << r.measurements_lost
+	  << " waiting=" << r.waiting;
 	return s.str();
 }
 

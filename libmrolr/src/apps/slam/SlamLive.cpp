@@ -150,36 +150,41 @@ void SlamApp::runLive()
 	slam::ActiveSlamFilter filter(s.slam, model);
 	filter.reset(x0);
 	device.setVehicle(x0);
-	vision::VisualSlam vslam(filter, head, s.vision);
+	vision::VisualSlam vslam(filter, head, s.vision, model);
 	addKnownFeatures(vslam, w, device, head, s, x0, head_kind);
 	TrueWheels wheels(s.run);
 	Eigen::Vector3d x_true = x0, x_dr = x0;
-	auto log = [&](vision::CycleRecord rec)
+	auto log = [&](vision::CycleRecord rec, bool at_home = false)
 	{
 		steps.push_back({x_true,
 		                 filter.vehicle(),
 		                 x_dr,
 		                 filter.vehicleCovariance().diagonal(),
-		                 {std::move(rec)}});
+		                 {std::move(rec)},
+		                 at_home});
 	};
 	log(vslam.step({}, device));
 	for (size_t k = 1; k < w.waypoints.size(); ++k)
 	{
 		const auto& wp = w.waypoints[k];
-		for (const auto& step :
-		     base::planLeg(filter.vehicle(), {wp.z_m, wp.x_m, wp.phi_rad}, model, s.trajectory))
+		const auto leg =
+		    base::planLeg(filter.vehicle(), {wp.z_m, wp.x_m, wp.phi_rad}, model, s.trajectory);
+		for (size_t j = 0; j < leg.size(); ++j)
 		{
-			x_true = model.move(x_true, wheels.perturb(step));
-			x_dr = model.move(x_dr, step.u);
+			x_true = model.move(x_true, wheels.perturb(leg[j]));
+			x_dr = model.move(x_dr, leg[j].u);
 			device.setVehicle(x_true);
-			log(vslam.step(step.u, device));
+			std::vector<base::WheelControl> upcoming;
+			for (size_t n = j + 1; n < leg.size(); ++n) upcoming.push_back(leg[n].u);
+			log(vslam.step(leg[j].u, device, upcoming));
 		}
 	}
 	// Back home: re-find the known features (5.6.2), which removes the drift of the route.
 	for (size_t i = 0; i < filter.numFeatures(); ++i)
 		if (filter.info(i).known)
-			for (int k = 0; k < kHomeMeasurements; ++k) log(vslam.measureFeature(i, device));
+			for (int k = 0; k < kHomeMeasurements; ++k) log(vslam.measureFeature(i, device), true);
 	recordMap(filter, vslam);
+	summary.selection = s.vision.selection == vision::Selection::Saccade ? "saccade" : "largest_vs";
 }
 
 }  // namespace mrolr::apps

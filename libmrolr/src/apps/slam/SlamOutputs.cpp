@@ -41,7 +41,7 @@ void writeDecisions(const std::string& dir, const std::vector<SlamStepLog>& step
 	auto f = openOut(dir, "decisions.csv");
 	f << "step,feature,vs,ellipse_u,ellipse_v,ellipse_area_px2,score_left,score_right,found,"
 	     "accepted,"
-	     "added,deleted\n";
+	     "added,deleted,saccade,measurements_lost,waiting\n";
 	for (size_t k = 0; k < steps.size(); ++k)
 	{
 		for (const auto& r : steps[k].records)
@@ -53,7 +53,7 @@ void writeDecisions(const std::string& dir, const std::vector<SlamStepLog>& step
 			for (const auto& a : r.added) f << a << " ";
 			f << ",";
 			for (const auto& d : r.deleted) f << d << " ";
-			f << "\n";
+			f << "," << r.saccade << "," << r.measurements_lost << "," << r.waiting << "\n";
 		}
 	}
 }

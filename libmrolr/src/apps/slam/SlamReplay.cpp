@@ -58,7 +58,7 @@ void SlamApp::runReplay()
 	const base::LabmateModel model(s.labmate);
 	slam::ActiveSlamFilter filter(s.slam, model);
 	filter.reset(records.front().odometry_zxphi);  // the start pose defines W
-	vision::VisualSlam vslam(filter, head, s.vision);
+	vision::VisualSlam vslam(filter, head, s.vision, model);
 	for (size_t k = 0; k < records.size(); ++k)
 	{
 		const io::RawlogRecord& r = records[k];
@@ -79,6 +79,7 @@ void SlamApp::runReplay()
 		                 filter.vehicleCovariance().diagonal(), std::move(recs)});
 	}
 	recordMap(filter, vslam);
+	summary.selection = "replay";  // every mapped feature in the recorded view is measured
 }
 
 }  // namespace mrolr::apps
