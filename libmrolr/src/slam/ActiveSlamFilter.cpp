@@ -17,8 +17,8 @@ ActiveSlamFilter::ActiveSlamFilter(const SlamOptions& options, const base::Labma
 	m_gate = chi2Quantile(options.gate_probability, 3);
 	KF_options.use_analytic_observation_jacobian = true;
 	KF_options.use_analytic_transition_jacobian = true;
-	KF_options.method = options.update_method == UpdateMethod::Batch ? mrpt::bayes::kfEKFNaive
-	                                                                 : mrpt::bayes::kfEKFAlaDavison;
+	// MRPT runs the predictions and the batch update; sequential and postponed updates are ours.
+	KF_options.method = mrpt::bayes::kfEKFNaive;
 	reset();
 }
 
@@ -51,6 +51,11 @@ UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
 	synchronise();
 	m_report = {};
 	if (z.empty()) return m_report;
+	if (m_options.update_method == UpdateMethod::Sequential)
+	{
+		updateSequential(z);
+		return m_report;
+	}
 	m_pending = z;
 	m_skipPrediction = true;
 	runOneKalmanIteration();

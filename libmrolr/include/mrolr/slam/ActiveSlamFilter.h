@@ -4,8 +4,9 @@
  * State x = (x_v, y_1 … y_n): the vehicle (z, x, φ) in W and 3D point features (X, Y, Z) in W
  * (eqs 5.29–5.30); measurement h = (pan, elevation, vergence) of an ideal head at C0 (eq 5.40);
  * control u = (v1, v2) of the Labmate base (eq 5.11). Prediction uses the Labmate model with its
- * analytic Jacobian and Q (eqs 5.32–5.34); updates are sequential scalar (eqs 5.42–5.45, MRPT's
- * kfEKFAlaDavison), batch (MRPT's kfEKFNaive) or Davison's postponed update (appendix C), chosen
+ * analytic Jacobian and Q (eqs 5.32–5.34); updates are sequential scalar (eqs 5.42–5.45, written
+ * here because MRPT 2.5's kfEKFAlaDavison does not correct the later components' innovations for
+ * the earlier ones), batch (MRPT's kfEKFNaive) or Davison's postponed update (appendix C), chosen
  * by SlamOptions::update_method. Every measurement is gated by its NIS; P is symmetrised after
  * every update (MRPT's batch update P ← (I − KH)P is not symmetric in floating point). */
 
@@ -139,6 +140,20 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	/** Records x_{k|k−1}, the vehicle estimate right after a prediction (FEJ's linearisation). */
 	void notePrediction(const Eigen::Vector3d& x_v_predicted);
 	void appendFeature(const Eigen::Vector3d& y, const Eigen::MatrixXd& P_new, FeatureInfo info);
+	/** One observation linearised at the prior state: active block, H, innovation and NIS. */
+	struct PriorLinearisation
+	{
+		size_t feature = 0;
+		Eigen::Matrix<double, 6, 1> a0;  ///< (x_v, y_i) at the prior
+		Eigen::Matrix<double, 3, 6> H;
+		Eigen::Vector3d nu;
+		double nis = 0;
+	};
+	PriorLinearisation linearisePrior(const Observation& z) const;
+	/** The three scalar updates of one gated observation (eqs 5.42–5.45). */
+	void applyScalarUpdates(const PriorLinearisation& l);
+	/** Sequential scalar updates of all observations (FilterSequential.cpp). */
+	void updateSequential(const std::vector<Observation>& z);
 	bool postponedApplies(const std::vector<Observation>& z) const;
 	UpdateReport updatePostponed(const Observation& z);
 	void predictPostponed();

@@ -15,7 +15,7 @@ namespace mrolr::slam
 /** How measurements update the filter. */
 enum class UpdateMethod
 {
-	Sequential,  ///< one scalar component at a time (eqs 5.42–5.45; MRPT kfEKFAlaDavison)
+	Sequential,  ///< one scalar component at a time (eqs 5.42–5.45; FilterSequential.cpp)
 	Batch,       ///< all components at once (MRPT kfEKFNaive)
 	Postponed    ///< Davison's postponed update while one feature is tracked (appendix C)
 };
