@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mrolr::stereo
 {
@@ -146,18 +147,29 @@ void setArc(ConicFit3& c, const std::vector<Eigen::Vector3d>& P)
 	c.t2 -= shift;
 }
 
+/** RMS distance (mm) of the edgels from the arc over the inliers (within 3 median distances, at
+ * least 1 mm): stereo mismatches along the scanline parts of a rim must not veto a good conic.
+ * Infinity when fewer than half the edgels are inliers. */
 double conicRms(const ConicFit3& c, const std::vector<StereoEdgel>& e)
 {
 	std::vector<Eigen::Vector3d> s;
 	for (int i = 0; i < 720; ++i) s.push_back(c.pointAt(c.t1 + (c.t2 - c.t1) * i / 719.0));
-	double sum = 0;
+	std::vector<double> d;
 	for (const auto& x : e)
 	{
 		double best = 1e300;
 		for (const auto& q : s) best = std::min(best, (q - x.p_L_mm).squaredNorm());
-		sum += best;
+		d.push_back(std::sqrt(best));
 	}
-	return std::sqrt(sum / static_cast<double>(e.size()));
+	std::vector<double> sorted = d;
+	std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(d.size() / 2),
+	                 sorted.end());
+	const double limit = std::max(1.0, 3 * sorted[d.size() / 2]);
+	double sum = 0;
+	size_t n = 0;
+	for (double x : d)
+		if (x <= limit) sum += x * x, ++n;
+	return 2 * n < d.size() ? std::numeric_limits<double>::infinity() : std::sqrt(sum / n);
 }
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace mrolr::stereo
 {
@@ -79,6 +80,30 @@ void split(const std::vector<cv::Point2d>& p, int s, size_t lo, size_t hi, const
 	split(p, s, lo, worst, g, o, out);
 	split(p, s, worst, hi, g, o, out);
 }
+/** Joins neighbouring pieces of one string into one arc while their union is elliptical: the
+ * top-down split cuts a rim at its lowest point, and a quarter of an ellipse is too short for a
+ * reliable fit. */
+void mergeArcs(const std::vector<cv::Point2d>& p, const FitOptions& o,
+               std::vector<ImagePiece>& pieces)
+{
+	for (size_t i = 0; i + 1 < pieces.size();)
+	{
+		ImagePiece &a = pieces[i], &b = pieces[i + 1];
+		std::optional<cv::RotatedRect> el;
+		if ((!a.is_line || !b.is_line) && b.lo <= a.hi)
+			el = fitEllipse2D(
+			    {p.begin() + static_cast<long>(a.lo), p.begin() + static_cast<long>(b.hi)}, o);
+		if (!el)
+		{
+			++i;
+			continue;
+		}
+		a.is_line = false;
+		a.ellipse = *el;
+		a.hi = b.hi;
+		pieces.erase(pieces.begin() + static_cast<long>(i) + 1);
+	}
+}
 }  // namespace
 
 std::vector<cv::Point2d> piecePoints(const std::vector<EdgeString>& strings, const ImagePiece& p)
@@ -96,7 +121,10 @@ std::vector<ImagePiece> segmentImageStrings(const std::vector<EdgeString>& strin
 	{
 		std::vector<cv::Point2d> p;
 		for (const auto& e : strings[s]) p.push_back(e.p);
-		split(p, static_cast<int>(s), 0, p.size(), grey, o, out);
+		std::vector<ImagePiece> pieces;
+		split(p, static_cast<int>(s), 0, p.size(), grey, o, pieces);
+		mergeArcs(p, o, pieces);
+		out.insert(out.end(), pieces.begin(), pieces.end());
 	}
 	return out;
 }

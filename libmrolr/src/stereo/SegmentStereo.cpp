@@ -170,6 +170,85 @@ std::vector<StereoEdgel> matchedEdgels(const ImagePiece& p, const MatchIndex& m,
 	}
 	return out;
 }
+/** Top and bottom points (extreme rows) of an image ellipse. */
+std::pair<cv::Point2d, cv::Point2d> rowExtremes(const cv::RotatedRect& el)
+{
+	const double th = el.angle * M_PI / 180, a = el.size.width / 2, b = el.size.height / 2;
+	const double phi = std::atan2(b * std::cos(th), a * std::sin(th));  // dy/dphi = 0
+	auto at = [&](double f)
+	{
+		return cv::Point2d(
+		    el.center.x + a * std::cos(f) * std::cos(th) - b * std::sin(f) * std::sin(th),
+		    el.center.y + a * std::cos(f) * std::sin(th) + b * std::sin(f) * std::cos(th));
+	};
+	const cv::Point2d p = at(phi), q = at(phi + M_PI);
+	return p.y < q.y ? std::pair(p, q) : std::pair(q, p);
+}
+
+/** The two columns where row y crosses an image ellipse (ascending), or false. */
+bool rowCrossing(const cv::RotatedRect& el, double y, double& x1, double& x2)
+{
+	const double th = el.angle * M_PI / 180, a = el.size.width / 2, b = el.size.height / 2;
+	const double A = a * std::sin(th), B = b * std::cos(th), C = y - el.center.y;
+	const double R = std::hypot(A, B);
+	if (R <= 0 || std::abs(C) >= R) return false;
+	const double base = std::atan2(B, A), off = std::acos(C / R);
+	auto x = [&](double f)
+	{ return el.center.x + a * std::cos(f) * std::cos(th) - b * std::sin(f) * std::sin(th); };
+	x1 = x(base - off);
+	x2 = x(base + off);
+	if (x1 > x2) std::swap(x1, x2);
+	return true;
+}
+
+/** The right arc piece whose ellipse has its extreme rows where the left one has them (within
+ * 2 px) at a disparity in range, or nullptr. */
+const ImagePiece* rightEllipse(const PieceStereoInput& in, const ImagePiece& l)
+{
+	const auto [lt, lb] = rowExtremes(l.ellipse);
+	double best = 2;
+	const ImagePiece* out = nullptr;
+	for (const auto& r : in.right_pieces)
+	{
+		if (r.is_line) continue;
+		const auto [rt, rb] = rowExtremes(r.ellipse);
+		const double err = std::max(std::abs(lt.y - rt.y), std::abs(lb.y - rb.y));
+		const double dt = lt.x - rt.x, db = lb.x - rb.x;
+		if (err < best && dt >= in.d_min_px && dt <= in.d_max_px && db >= in.d_min_px &&
+		    db <= in.d_max_px)
+			best = err, out = &r;
+	}
+	return out;
+}
+
+/** Stereo samples of a conic from its two image ellipses: on every row the left and right
+ * crossings of the left ellipse correspond to those of the right one, and the extreme rows
+ * (epipolar tangencies) correspond exactly, so the whole conic has disparities even where it runs
+ * along the scanlines. Empty without a matching right ellipse. */
+std::vector<StereoEdgel> ellipsePairSamples(const PieceStereoInput& in, const ImagePiece& l,
+                                            const Rectifier& rect)
+{
+	std::vector<StereoEdgel> out;
+	const ImagePiece* r = rightEllipse(in, l);
+	if (!r) return out;
+	const auto [lt, lb] = rowExtremes(l.ellipse);
+	const auto [rt, rb] = rowExtremes(r->ellipse);
+	auto add = [&](double x, double y, double d) {
+		out.push_back({{x, y}, d, rect.pointInLeftCamera(x, y, d)});
+	};
+	add(lt.x, lt.y, lt.x - rt.x);
+	add(lb.x, lb.y, lb.x - rb.x);
+	const int n = 40;
+	for (int k = 1; k < n; ++k)
+	{
+		const double y = lt.y + (lb.y - lt.y) * k / n;
+		double l1, l2, r1, r2;
+		if (!rowCrossing(l.ellipse, y, l1, l2) || !rowCrossing(r->ellipse, y, r1, r2)) continue;
+		add(l1, y, l1 - r1);
+		add(l2, y, l2 - r2);
+	}
+	return out;
+}
 }  // namespace
 
 void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const FitOptions& fit,
@@ -194,11 +273,12 @@ void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const 
 				continue;
 			}
 		if (p.is_line) continue;  // left to the 3D strings of the point matches
-		const auto e = matchedEdgels(p, m, rect);
+		auto e = ellipsePairSamples(in, p, rect);
+		if (e.empty()) e = matchedEdgels(p, m, rect);
+		const auto arc = piecePoints(in.left_strings, p);
 		if (static_cast<int>(e.size()) >= o.min_conic_matches)
 		{
-			if (auto c = conicFromEllipse(p.ellipse, piecePoints(in.left_strings, p), e, rect, fit))
-				conics.push_back(*c);
+			if (auto c = conicFromEllipse(p.ellipse, arc, e, rect, fit)) conics.push_back(*c);
 		}
 	}
 }

@@ -39,7 +39,7 @@ struct LineFit3
 
 /** A fitted 3D conic arc with model::Conic3's parametrisation (centre, unit normal, unit major
  * axis, semi-axes a >= b, arc t1 < t2 of x(t) = c + a cos t · major + b sin t · (normal × major)).
- */
+ * rms_mm: RMS distance of the inlier edgels (within 3 median distances) from the arc. */
 struct ConicFit3
 {
 	Eigen::Vector3d centre = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::UnitZ(),
