@@ -101,11 +101,50 @@ TEST(SerialMission, ThroughPtysWithDelaysAndLostBytesItIsTheSimulatedMission)
 	EXPECT_EQ(serial.retrieval.joints.toMmDeg(), sim.retrieval.joints.toMmDeg());
 	EXPECT_EQ(serial.shots.size(), sim.shots.size());
 	ASSERT_EQ(serial.links.size(), 3u);
+	EXPECT_TRUE(serial.links[2].lab_behind_port);
 	EXPECT_GT(totalResends(serial), 0);  // the lost bytes were noticed and resent
 	EXPECT_TRUE(sim.links.empty());
 	EXPECT_GT(rig.emulation->base().emulator().executed(), serial.path.size());
 	EXPECT_GE(rig.emulation->head().emulator().executed(), static_cast<size_t>(sim.search.views));
 	EXPECT_TRUE(rig.lab->arm().gripperClosed());
+}
+
+TEST(SerialMission, DevicesNotServedByTheMissionsLabAreShadowedByIt)
+{
+	// The emulators serve a lab of their own, as `mrolr-serial emulate` in another process does.
+	const auto o_external = defaults();
+	SimulatedLab external(o_external);
+	SerialEmulation emulation(external);
+	auto o = defaults();
+	emulation.useIn(o, quickLinks());
+	for (auto* d : {&o.devices.base, &o.devices.head, &o.devices.arm}) d->lab_behind_port = false;
+	auto lab = std::make_shared<SimulatedLab>(o);
+	const auto r = Mission(o, lab).run();
+	EXPECT_TRUE(r.success) << r.failure;
+	// Same seeds: the devices behind the ports and the mission's shadow lab moved alike.
+	EXPECT_EQ(external.truePose(), lab->truePose());
+	EXPECT_EQ(external.arm().joints(), lab->arm().joints());
+	EXPECT_EQ(external.head().angles().pan, lab->head().angles().pan);
+	ASSERT_EQ(r.links.size(), 3u);
+	EXPECT_FALSE(r.links[0].lab_behind_port);
+	EXPECT_GT(emulation.base().emulator().executed(), r.path.size());
+}
+
+TEST(SerialMission, AnArmThatRefusesAJointLimitStopsTheMission)
+{
+	auto o_external = defaults();
+	o_external.sim_arm.max[0] = 1;  // d1: the arm behind the port allows less than planned
+	SimulatedLab external(o_external);
+	SerialEmulation emulation(external);
+	auto o = defaults();
+	emulation.useIn(o, quickLinks());
+	for (auto* d : {&o.devices.base, &o.devices.head, &o.devices.arm}) d->lab_behind_port = false;
+	const auto r = Mission(o, std::make_shared<SimulatedLab>(o)).run();
+	EXPECT_TRUE(r.stopped);
+	EXPECT_FALSE(r.retrieved);
+	EXPECT_NE(r.failure.find("refused a command"), std::string::npos) << r.failure;
+	EXPECT_NE(r.failure.find("d1"), std::string::npos) << r.failure;
+	EXPECT_FALSE(external.arm().gripperClosed());
 }
 
 TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)

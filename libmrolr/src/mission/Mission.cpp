@@ -77,7 +77,7 @@ struct Mission::Impl
 	}
 	void lookAt(const geometry::HeadAngles& angles);
 	void grabStereo();
-	void stopSafely(const hw::SerialDeviceError& e);
+	void stopSafely(const std::string& why);
 	void runStages();
 	void loadTarget();
 	void navigate();
@@ -242,10 +242,10 @@ void Mission::Impl::runStages()
 	goHome();
 }
 
-void Mission::Impl::stopSafely(const hw::SerialDeviceError& e)
+void Mission::Impl::stopSafely(const std::string& why)
 {
 	r.stopped = true;
-	r.failure = std::string("stopped: ") + e.what();
+	r.failure = "stopped: " + why;
 	r.timeline.note(r.failure);
 	// Steps are discrete (the base stands still between them); a zero step makes sure of it.
 	try
@@ -277,7 +277,11 @@ MissionResult Mission::run()
 	}
 	catch (const hw::SerialDeviceError& e)
 	{  // a device stopped answering: stop where we are, keep what was recorded
-		m.stopSafely(e);
+		m.stopSafely(e.what());
+	}
+	catch (const std::exception& e)
+	{  // e.g. a device refused a joint limit the plan did not expect
+		m.stopSafely(std::string("a device refused a command: ") + e.what());
 	}
 	m.finish();
 	return m.r;

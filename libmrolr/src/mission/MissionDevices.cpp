@@ -20,31 +20,121 @@ auto connect(const DeviceChoice& d, Make make)
 		throw util::ConfigError(d.port_key + ": cannot use '" + d.link.port + "': " + e.what());
 	}
 }
+
+/** A serial base whose steps are also given to the lab's base (its truth then follows). */
+class ShadowedBase : public hw::BaseDevice
+{
+ public:
+	ShadowedBase(std::unique_ptr<hw::BaseDevice> serial, hw::BaseDevice& lab)
+	    : serial_(std::move(serial)), lab_(lab)
+	{
+	}
+	void step(const base::WheelControl& u) override
+	{
+		serial_->step(u);
+		lab_.step(u);
+	}
+	hw::Odometry odometry() const override { return serial_->odometry(); }
+
+ private:
+	std::unique_ptr<hw::BaseDevice> serial_;
+	hw::BaseDevice& lab_;
+};
+
+class ShadowedHead : public hw::HeadDevice
+{
+ public:
+	ShadowedHead(std::unique_ptr<hw::HeadDevice> serial, hw::HeadDevice& lab)
+	    : serial_(std::move(serial)), lab_(lab)
+	{
+	}
+	double moveTo(const geometry::HeadAngles& target) override
+	{
+		const double settle_s = serial_->moveTo(target);
+		lab_.moveTo(target);
+		return settle_s;
+	}
+	geometry::HeadAngles angles() const override { return serial_->angles(); }
+	hw::StereoImages grab() override { return serial_->grab(); }
+
+ private:
+	std::unique_ptr<hw::HeadDevice> serial_;
+	hw::HeadDevice& lab_;
+};
+
+class ShadowedArm : public hw::ArmDevice
+{
+ public:
+	ShadowedArm(std::unique_ptr<hw::ArmDevice> serial, hw::ArmDevice& lab)
+	    : serial_(std::move(serial)), lab_(lab)
+	{
+	}
+	void moveTo(const hw::ArmJoints& joints) override
+	{
+		serial_->moveTo(joints);
+		lab_.moveTo(joints);
+	}
+	hw::ArmJoints joints() const override { return serial_->joints(); }
+	void setGripper(bool closed) override
+	{
+		serial_->setGripper(closed);
+		lab_.setGripper(closed);
+	}
+	bool gripperClosed() const override { return serial_->gripperClosed(); }
+
+ private:
+	std::unique_ptr<hw::ArmDevice> serial_;
+	hw::ArmDevice& lab_;
+};
+
+/** The serial driver itself when the lab's device is behind its port, else a shadowed one. */
+template <typename Shadowed, typename Device>
+std::unique_ptr<Device> shadowUnlessBehind(const DeviceChoice& d, std::unique_ptr<Device> serial,
+                                           Device& lab)
+{
+	if (d.lab_behind_port) return serial;
+	return std::make_unique<Shadowed>(std::move(serial), lab);
+}
 }  // namespace
 
 std::unique_ptr<hw::SerialClient> MissionDevices::open(const DeviceChoice& d)
 {
 	auto client = hw::openSerialClient(d.link);
-	links_.push_back({d.section, d.link.port, client.get()});
+	links_.push_back({d.section, d.link.port, client.get(), d.lab_behind_port});
 	return client;
+}
+
+void MissionDevices::makeBase(const DeviceChoice& d, SimulatedLab& lab)
+{
+	std::unique_ptr<hw::BaseDevice> serial =
+	    connect(d, [&] { return std::make_unique<hw::SerialBase>(open(d)); });
+	own_base_ = shadowUnlessBehind<ShadowedBase, hw::BaseDevice>(d, std::move(serial), lab.base());
+	base_ = own_base_.get();
+}
+
+void MissionDevices::makeHead(const DeviceChoice& d, SimulatedLab& lab)
+{
+	auto images = [&lab] { return lab.head().grab(); };
+	std::unique_ptr<hw::HeadDevice> serial =
+	    connect(d, [&] { return std::make_unique<hw::SerialHead>(open(d), images); });
+	own_head_ = shadowUnlessBehind<ShadowedHead, hw::HeadDevice>(d, std::move(serial), lab.head());
+	head_ = own_head_.get();
+}
+
+void MissionDevices::makeArm(const DeviceChoice& d, SimulatedLab& lab)
+{
+	std::unique_ptr<hw::ArmDevice> serial =
+	    connect(d, [&] { return std::make_unique<hw::SerialArm>(open(d)); });
+	own_arm_ = shadowUnlessBehind<ShadowedArm, hw::ArmDevice>(d, std::move(serial), lab.arm());
+	arm_ = own_arm_.get();
 }
 
 MissionDevices::MissionDevices(const DeviceOptions& o, SimulatedLab& lab)
 {
 	base_ = &lab.base(), head_ = &lab.head(), arm_ = &lab.arm();
-	if (o.base.serial)
-		base_ = (own_base_ = connect(o.base, [&]
-		                             { return std::make_unique<hw::SerialBase>(open(o.base)); }))
-		            .get();
-	auto images = [&lab] { return lab.head().grab(); };
-	if (o.head.serial)
-		head_ = (own_head_ = connect(o.head, [&]
-		                             { return std::make_unique<hw::SerialHead>(open(o.head), images); }))
-		            .get();
-	if (o.arm.serial)
-		arm_ = (own_arm_ = connect(o.arm, [&]
-		                           { return std::make_unique<hw::SerialArm>(open(o.arm)); }))
-		           .get();
+	if (o.base.serial) makeBase(o.base, lab);
+	if (o.head.serial) makeHead(o.head, lab);
+	if (o.arm.serial) makeArm(o.arm, lab);
 }
 
 MissionDevices::~MissionDevices() = default;
@@ -52,7 +142,8 @@ MissionDevices::~MissionDevices() = default;
 std::vector<LinkReport> MissionDevices::links() const
 {
 	std::vector<LinkReport> out;
-	for (const auto& l : links_) out.push_back({l.section, l.port, l.client->resends()});
+	for (const auto& l : links_)
+		out.push_back({l.section, l.port, l.client->resends(), l.lab_behind_port});
 	return out;
 }
 

@@ -61,7 +61,10 @@ json linksJson(const std::vector<LinkReport>& links)
 {
 	json out = json::array();
 	for (const auto& l : links)
-		out.push_back({{"device", l.section}, {"port", l.port}, {"resends", l.resends}});
+		out.push_back({{"device", l.section},
+		               {"port", l.port},
+		               {"resends", l.resends},
+		               {"emulated_lab_device", l.lab_behind_port}});
 	return out;
 }
 }  // namespace

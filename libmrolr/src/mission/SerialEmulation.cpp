@@ -13,6 +13,7 @@ void useSerial(DeviceChoice& d, const std::string& port, const hw::LinkOptions& 
 		d.link.link = defaults;
 	}
 	d.serial = true;
+	d.lab_behind_port = true;
 	d.link.port = port;
 	d.link.link.device = d.section;
 	d.port_key = "[" + d.section + "] port (serial emulation)";

@@ -19,6 +19,10 @@ struct DeviceChoice
 	bool serial = false;  ///< driver = serial (else sim)
 	hw::SerialLinkConfig link;  ///< read only when serial
 	std::string port_key;       ///< "<file> [section] port", for errors about the port
+	/** The port is served by an emulator around the SimulatedLab's own device (SerialEmulation).
+	 * Otherwise (real hardware, or emulators in another process) every command is also given to
+	 * the lab's device, so that the simulated perception follows the commanded motion. */
+	bool lab_behind_port = false;
 
 	/** Reads `driver` (sim | serial; anything else names the choices) and the link keys. */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

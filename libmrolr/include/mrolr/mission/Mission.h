@@ -29,9 +29,9 @@ struct MissionResult
 {
 	bool success = false, found = false, retrieved = false, returned_home = false;
 	std::string failure;  ///< reason when not successful
-	/** A device failed (stopped answering, garbage, disconnect): the mission stopped where it
-	 * was, the base commanded to stand still and the arm not moved again; failure names the
-	 * device section and its port. */
+	/** A device failed (stopped answering, garbage, disconnect: failure names the device section
+	 * and its port) or refused a command (a joint limit): the mission stopped where it was, the
+	 * base commanded to stand still and the arm not moved again. */
 	bool stopped = false;
 	std::vector<LinkReport> links;  ///< serial devices: port and resends
 	std::string target, found_instance, found_at_station;

@@ -3,7 +3,10 @@
  * simulated lab's own device (`driver = sim`) or a serial driver on the configured port
  * (`driver = serial`, hw_serial/SerialDrivers.h). The mission drives them through the hw::
  * interfaces only. The head's stereo pairs are not on the serial line (docs/serial.md): the serial
- * head grabs them from the lab's renderer (the frame grabber of the simulated robot). */
+ * head grabs them from the lab's renderer (the frame grabber of the simulated robot). When a
+ * serial port is not served by the lab's own device (DeviceChoice::lab_behind_port), each command
+ * also goes to the lab's device (a shadow), so the simulated perception sees the commanded motion;
+ * the replies (odometry, angles, joints) are the serial device's. */
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/DeviceOptions.h>
 #include <mrolr/mission/SimulatedLab.h>
@@ -24,6 +27,7 @@ struct LinkReport
 {
 	std::string section, port;
 	int resends = 0;  ///< requests that had to be sent again (lost, late or damaged replies)
+	bool lab_behind_port = false;  ///< DeviceChoice::lab_behind_port
 };
 
 class MissionDevices
@@ -42,11 +46,15 @@ class MissionDevices
 
  private:
 	std::unique_ptr<hw::SerialClient> open(const DeviceChoice& d);
+	void makeBase(const DeviceChoice& d, SimulatedLab& lab);
+	void makeHead(const DeviceChoice& d, SimulatedLab& lab);
+	void makeArm(const DeviceChoice& d, SimulatedLab& lab);
 
 	struct Link
 	{
 		std::string section, port;
 		const hw::SerialClient* client;
+		bool lab_behind_port;
 	};
 	std::vector<Link> links_;
 	std::unique_ptr<hw::BaseDevice> own_base_;
