@@ -47,7 +47,11 @@ size_t addNewFeatures(StereoScene& scene, const std::vector<LineFit3>& lines,
 		if (!coveredLine(scene.lines, l, tol)) scene.lines.push_back(l), ++n;
 	for (const auto& c : conics)
 	{
-		auto same = [&](const ConicFit3& k) { return (k.centre - c.centre).norm() <= tol; };
+		auto same = [&](const ConicFit3& k)
+		{
+			return (k.centre - c.centre).norm() <= tol && std::abs(k.a - c.a) <= tol &&
+			       std::abs(k.b - c.b) <= tol && std::abs(k.normal.dot(c.normal)) > 0.95;
+		};
 		auto it = std::find_if(scene.conics.begin(), scene.conics.end(), same);
 		if (it == scene.conics.end())
 			scene.conics.push_back(c), ++n;
@@ -136,7 +140,7 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	std::vector<LineFit3> lines;
 	std::vector<ConicFit3> conics;
 	reconstructPieces({ls, lp, rp, matches, rect.disparityAtDepth(o.max_depth_mm),
-	                   rect.disparityAtDepth(o.min_depth_mm)},
+	                   rect.disparityAtDepth(o.min_depth_mm), &rs},
 	                  rect, o.fit, o.segments, lines, conics);
 	scene.piece_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
 	return scene;

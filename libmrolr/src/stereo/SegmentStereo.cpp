@@ -201,51 +201,80 @@ bool rowCrossing(const cv::RotatedRect& el, double y, double& x1, double& x2)
 	return true;
 }
 
-/** The right arc piece whose ellipse has its extreme rows where the left one has them (within
- * 2 px) at a disparity in range, or nullptr. */
-const ImagePiece* rightEllipse(const PieceStereoInput& in, const ImagePiece& l)
+bool nearPoints(const cv::Point2d& q, const std::vector<cv::Point2d>& pts)
 {
-	const auto [lt, lb] = rowExtremes(l.ellipse);
+	for (const auto& p : pts)
+		if (cv::norm(p - q) <= 1.5) return true;
+	return false;
+}
+
+/** A left or right image arc: its ellipse and its edgels. */
+struct Arc
+{
+	const cv::RotatedRect* el;
+	std::vector<cv::Point2d> pts;
+};
+
+/** Largest row difference of the extreme points seen on both arcs (the row difference of the
+ * centres when neither extreme is seen on both). */
+double extremeRowError(const Arc& l, const Arc& r)
+{
+	const auto [lt, lb] = rowExtremes(*l.el);
+	const auto [rt, rb] = rowExtremes(*r.el);
+	double err = -1;
+	for (const auto& [pl, pr] : {std::pair(lt, rt), std::pair(lb, rb)})
+		if (nearPoints(pl, l.pts) && nearPoints(pr, r.pts))
+			err = std::max(err, std::abs(pl.y - pr.y));
+	return err >= 0 ? err : std::abs(l.el->center.y - r.el->center.y);
+}
+
+/** The right arc most consistent with a left arc (extreme rows within 2 px, centre disparity in
+ * range, semi-axes within 25 %), or nothing. */
+std::optional<Arc> rightArc(const PieceStereoInput& in, const Arc& l)
+{
 	double best = 2;
-	const ImagePiece* out = nullptr;
+	std::optional<Arc> out;
+	const double la = std::max(l.el->size.width, l.el->size.height);
 	for (const auto& r : in.right_pieces)
 	{
 		if (r.is_line) continue;
-		const auto [rt, rb] = rowExtremes(r.ellipse);
-		const double err = std::max(std::abs(lt.y - rt.y), std::abs(lb.y - rb.y));
-		const double dt = lt.x - rt.x, db = lb.x - rb.x;
-		if (err < best && dt >= in.d_min_px && dt <= in.d_max_px && db >= in.d_min_px &&
-		    db <= in.d_max_px)
-			best = err, out = &r;
+		const double d = l.el->center.x - r.ellipse.center.x;
+		const double ra = std::max(r.ellipse.size.width, r.ellipse.size.height);
+		if (d < in.d_min_px || d > in.d_max_px || std::abs(ra - la) > 0.25 * la) continue;
+		Arc cand{&r.ellipse, piecePoints(*in.right_strings, r)};
+		if (const double err = extremeRowError(l, cand); err < best) best = err, out = cand;
 	}
 	return out;
 }
 
-/** Stereo samples of a conic from its two image ellipses: on every row the left and right
- * crossings of the left ellipse correspond to those of the right one, and the extreme rows
- * (epipolar tangencies) correspond exactly, so the whole conic has disparities even where it runs
- * along the scanlines. Empty without a matching right ellipse. */
-std::vector<StereoEdgel> ellipsePairSamples(const PieceStereoInput& in, const ImagePiece& l,
+/** Stereo samples of a conic from its two image arcs: on every row the left and right crossings
+ * of the left ellipse correspond to those of the right one, and the extreme rows (epipolar
+ * tangencies) correspond exactly, so the conic gets disparities even where it runs along the
+ * scanlines. Only points on both arcs are used. Empty without a consistent right arc. */
+std::vector<StereoEdgel> ellipsePairSamples(const PieceStereoInput& in, const ImagePiece& p,
                                             const Rectifier& rect)
 {
 	std::vector<StereoEdgel> out;
-	const ImagePiece* r = rightEllipse(in, l);
+	const Arc l{&p.ellipse, piecePoints(in.left_strings, p)};
+	const auto r = rightArc(in, l);
 	if (!r) return out;
-	const auto [lt, lb] = rowExtremes(l.ellipse);
-	const auto [rt, rb] = rowExtremes(r->ellipse);
-	auto add = [&](double x, double y, double d) {
-		out.push_back({{x, y}, d, rect.pointInLeftCamera(x, y, d)});
+	auto add = [&](cv::Point2d a, cv::Point2d b)
+	{
+		if (nearPoints(a, l.pts) && nearPoints(b, r->pts))
+			out.push_back({a, a.x - b.x, rect.pointInLeftCamera(a.x, a.y, a.x - b.x)});
 	};
-	add(lt.x, lt.y, lt.x - rt.x);
-	add(lb.x, lb.y, lb.x - rb.x);
+	const auto [lt, lb] = rowExtremes(*l.el);
+	const auto [rt, rb] = rowExtremes(*r->el);
+	add(lt, rt);
+	add(lb, rb);
 	const int n = 40;
 	for (int k = 1; k < n; ++k)
 	{
 		const double y = lt.y + (lb.y - lt.y) * k / n;
 		double l1, l2, r1, r2;
-		if (!rowCrossing(l.ellipse, y, l1, l2) || !rowCrossing(r->ellipse, y, r1, r2)) continue;
-		add(l1, y, l1 - r1);
-		add(l2, y, l2 - r2);
+		if (!rowCrossing(*l.el, y, l1, l2) || !rowCrossing(*r->el, y, r1, r2)) continue;
+		add({l1, y}, {r1, y});
+		add({l2, y}, {r2, y});
 	}
 	return out;
 }
@@ -274,7 +303,7 @@ void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const 
 			}
 		if (p.is_line) continue;  // left to the 3D strings of the point matches
 		auto e = ellipsePairSamples(in, p, rect);
-		if (e.empty()) e = matchedEdgels(p, m, rect);
+		if (static_cast<int>(e.size()) < 2 * o.min_conic_matches) e = matchedEdgels(p, m, rect);
 		const auto arc = piecePoints(in.left_strings, p);
 		if (static_cast<int>(e.size()) >= o.min_conic_matches)
 		{

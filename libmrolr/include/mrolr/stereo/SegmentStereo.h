@@ -48,6 +48,7 @@ struct PieceStereoInput
 	const std::vector<ImagePiece>& right_pieces;
 	const std::vector<EdgeMatch>& matches;  ///< point matches (EdgeMatcher)
 	double d_min_px = 0, d_max_px = 0;
+	const std::vector<EdgeString>* right_strings = nullptr;  ///< for arcs of the right image
 };
 
 /** 3D lines and conics of the left pieces: matched segment pairs, segments along the scanlines
