@@ -48,6 +48,7 @@ void VisionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	acquire_pan_deg = readIn(cfg, section, "acquire_pan_deg", 0, 180);
 	acquire_tilt_deg = readIn(cfg, section, "acquire_tilt_deg", -90, 90);
 	acquire_box_px = readIntIn(cfg, section, "acquire_box_px", patch_size_px, 100000);
+	known_search_box_px = readIntIn(cfg, section, "known_search_box_px", 1, 100000);
 	const std::string sel = util::readString(cfg, section, "selection");
 	if (sel != "largest_vs" && sel != "saccade")
 		throw util::ConfigError(util::describeKey(cfg, section, "selection") + " = '" + sel +
@@ -78,6 +79,7 @@ void VisionOptions::dump(std::ostream& out) const
 	    << "\nfixation_search_radius_px = " << fixation_search_radius_px
 	    << "\npixel_sigma_px = " << pixel_sigma_px << "\nacquire_pan_deg = " << acquire_pan_deg
 	    << "\nacquire_tilt_deg = " << acquire_tilt_deg << "\nacquire_box_px = " << acquire_box_px
+	    << "\nknown_search_box_px = " << known_search_box_px
 	    << "\nselection = " << (selection == Selection::Saccade ? "saccade" : "largest_vs") << "\n";
 }
 

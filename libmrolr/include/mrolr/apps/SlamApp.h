@@ -95,7 +95,7 @@ class SlamApp
 
 	// Inputs (set by initialize)
 	std::string world_path, config_path, rawlog_path, out_dir;
-	std::string head_kind = "synthetic";   ///< --head synthetic | lab
+	std::string head_kind = "lab";         ///< --head lab | synthetic
 	std::vector<std::string> known_names;  ///< --known: landmarks to acquire as known features
 	bool live = false, acquire_known = false, json = false, help_shown = false;
 

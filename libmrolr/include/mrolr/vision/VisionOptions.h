@@ -34,6 +34,9 @@ struct VisionOptions
 	double acquire_pan_deg = 30;   ///< new features are sought at pan +this, 0, −this (5.7)
 	double acquire_tilt_deg = 10;  ///< … with the head tilted up by this
 	int acquire_box_px = 200;  ///< side of the central left-image box searched for a new feature
+	/** Side of the box around a fixated known landmark's centre in which its stored patch is the
+	 * best Shi–Tomasi corner (1: the centre itself), pixels (5.6.2). */
+	int known_search_box_px = 21;
 	/** Key `selection = largest_vs | saccade`. With saccade, the measurements a saccade loses
 	 * (head speed model of [slam]) are really skipped. */
 	Selection selection = Selection::LargestVs;

@@ -22,6 +22,7 @@ class SyntheticLiveHead : public LiveHead
 	{
 	}
 	void setVehicle(const Eigen::Vector3d& x) override { world_.setVehicle(x); }
+	bool rendersSurfaces() const override { return false; }
 	void moveTo(const geometry::HeadAngles& a) override { world_.moveTo(a); }
 	geometry::HeadAngles angles() const override { return world_.angles(); }
 	vision::StereoImages grab() override { return world_.grab(); }
@@ -52,6 +53,7 @@ class LabLiveHead : public LiveHead
 	{
 	}
 	void setVehicle(const Eigen::Vector3d& x) override { x_ = x; }
+	bool rendersSurfaces() const override { return true; }
 	void moveTo(const geometry::HeadAngles& a) override { sim_head_.moveTo(a); }
 	geometry::HeadAngles angles() const override { return sim_head_.angles(); }
 	vision::StereoImages grab() override

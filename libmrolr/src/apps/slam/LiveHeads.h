@@ -20,6 +20,9 @@ class LiveHead : public vision::StereoHeadDevice
 {
  public:
 	virtual void setVehicle(const Eigen::Vector3d& x_true) = 0;
+	/** True when textures lie on the world's surfaces (the rendered lab); false when each landmark
+	 * is a sprite facing the camera (synthetic), whose off-centre pixels are no fixed 3D points. */
+	virtual bool rendersSurfaces() const = 0;
 };
 
 /** An 8-bit greyscale copy of @p img (colour images are converted). */

@@ -22,8 +22,8 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	TCLAP::SwitchArg liveArg(
 	    "", "live", "run on the simulator: drive the waypoints, measure with the head", cmd);
 	TCLAP::ValueArg<std::string> headArg(
-	    "", "head", "synthetic (textured points) or lab (rendered lab, sim::SimHead)", false,
-	    "synthetic", "KIND", cmd);
+	    "", "head", "lab (the rendered lab, sim::SimHead; default) or synthetic (textured points)",
+	    false, "lab", "KIND", cmd);
 	TCLAP::ValueArg<std::string> knownArg(
 	    "", "known",
 	    "with --acquire-known: comma-separated landmark names (default: the world's known)", false,
@@ -51,7 +51,7 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	known_names = util::splitFields(knownArg.getValue());
 	if (int(live) + int(acquire_known) + int(!rawlog_path.empty()) != 1)
 		throw util::UsageError("give exactly one of --live, --acquire-known and --rawlog FILE");
-	if (!rawlog_path.empty() && head_kind != "synthetic")
+	if (!rawlog_path.empty() && headArg.isSet())
 		throw util::UsageError("--head applies to --live and --acquire-known, not to --rawlog");
 	if (rawlog_path.empty() && world_path.empty())
 		throw util::UsageError("--live and --acquire-known need --world FILE");

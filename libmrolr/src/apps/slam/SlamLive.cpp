@@ -7,6 +7,7 @@
 #include <mrolr/vision/KnownFeatures.h>
 #include <mrolr/vision/SyntheticWorld.h>
 #include <mrolr/world/World.h>
+#include "KnownAcquisition.h"
 #include "LiveHeads.h"
 #include "SlamSetup.h"
 
@@ -49,21 +50,6 @@ class TrueWheels
 	int burst_left_ = 0;
 };
 
-/** Acquires a known landmark the way the thesis did (5.6.2): fixate it from the start pose, lock
- * on, and store its patch. Throws when lock-on fails, since the map would lack its anchor. */
-cv::Mat acquireKnownPatch(LiveHead& device, const geometry::BiSightHead& head,
-                          const Eigen::Vector3d& p_inC0, const vision::VisionOptions& o,
-                          const std::string& name)
-{
-	device.moveTo(head.fixate(p_inC0));
-	const auto& cam = head.camera();
-	const cv::Mat patch =
-	    vision::extractPatch(device.grab().left, {cam.u0_px, cam.v0_px}, o.patch_size_px);
-	const vision::FixationResult r = vision::fixateOnPatch(device, head, patch, p_inC0, o);
-	if (!r.locked) throw std::runtime_error("known feature '" + name + "': " + r.failure);
-	return patch;
-}
-
 Eigen::Vector3d startPose(const world::World& w)
 {
 	if (w.waypoints.size() < 2)
@@ -76,28 +62,6 @@ std::string knownFeaturesPath(const world::World& w)
 	return (std::filesystem::path(w.directory()) / "known_features.ini").string();
 }
 
-/** The landmarks @p names (default: those flagged known in the world), fixated from @p x0 with the
- * head of @p device (5.6.2). Throws for a name that is not a landmark of the world. */
-std::vector<vision::KnownFeature> acquireKnown(const world::World& w, LiveHead& device,
-                                               const geometry::BiSightHead& head,
-                                               const SlamSetup& s, const Eigen::Vector3d& x0,
-                                               const std::vector<std::string>& names = {})
-{
-	for (const auto& n : names)
-		if (!w.findLandmark(n))
-			throw std::runtime_error(w.path + ": no landmark named '" + n + "'");
-	std::vector<vision::KnownFeature> out;
-	for (const auto& l : w.landmarks)
-	{
-		const bool wanted =
-		    names.empty() ? l.known : std::count(names.begin(), names.end(), l.name) > 0;
-		if (!wanted) continue;
-		const Eigen::Vector3d p_inC0 = slam::pointInHead(x0, l.p_LinW, s.slam.head.constants);
-		out.push_back(
-		    {l.name, l.p_LinW, acquireKnownPatch(device, head, p_inC0, s.vision, l.name)});
-	}
-	return out;
-}
 }  // namespace
 
 void SlamApp::runAcquireKnown(std::ostream& out)
