@@ -110,7 +110,7 @@ TEST(TableScene, PieceStereoRecoversMoreOfTheObjectsAtOneMetre)
 	const auto q0 = measure(v, v.truth_L, strings_only);
 	const auto q = measure(v, v.truth_L, shippedOptions());
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.05);
-	EXPECT_GE(q.recovered_fraction, 0.27);  // measured 0.299; issue target 0.6 (not reached)
+	EXPECT_GE(q.recovered_fraction, 0.4);  // measured 0.423; issue target 0.6 (not reached)
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 	EXPECT_LT(q.median_conic_radius_error_mm, 10.0);
 	measure(v, v.with_tables_L, shippedOptions());  // reported: table tops' edges included

@@ -114,16 +114,32 @@ std::vector<std::optional<Pair>> matchSegments(const PieceStereoInput& in, const
 	return best;
 }
 
-/** Disparity at a corner: the nearest end of a matched segment within corner_radius_px of q. */
+/** Disparity at a corner q: from the nearest matched segment passing within corner_radius_px of q
+ * (its linear disparity profile, extended by corner_radius_px beyond its ends), else the median of
+ * the point matches within corner_radius_px; NaN if neither. */
 double cornerDisparity(const cv::Point2d& q, const std::vector<std::optional<Pair>>& pairs,
-                       const SegmentStereoOptions& o)
+                       const std::vector<EdgeMatch>& matches, const SegmentStereoOptions& o)
 {
 	double best = o.corner_radius_px, d = std::nan("");
 	for (const auto& p : pairs)
-		if (p)
-			for (const auto& e : {p->e1, p->e2})
-				if (const double r = std::hypot(e.x - q.x, e.y - q.y); r <= best) best = r, d = e.z;
-	return d;
+	{
+		if (!p) continue;
+		const cv::Point2d a(p->e1.x, p->e1.y), ab = cv::Point2d(p->e2.x, p->e2.y) - a;
+		const double len = cv::norm(ab);
+		if (len < 1) continue;
+		const double t = std::clamp((q - a).dot(ab) / (len * len), -o.corner_radius_px / len,
+		                            1 + o.corner_radius_px / len);
+		if (const double r = cv::norm(a + t * ab - q); r <= best)
+			best = r, d = p->e1.z + t * (p->e2.z - p->e1.z);
+	}
+	if (!std::isnan(d)) return d;
+	std::vector<double> near;
+	for (const auto& m : matches)
+		if (std::hypot(m.x_left_px - q.x, m.y_px - q.y) <= o.corner_radius_px)
+			near.push_back(m.disparity_px);
+	if (near.empty()) return d;
+	std::nth_element(near.begin(), near.begin() + static_cast<long>(near.size() / 2), near.end());
+	return near[near.size() / 2];
 }
 
 /** Is there a right segment near the scanline direction along the predicted right segment a → b? */
@@ -148,7 +164,8 @@ std::optional<LineFit3> horizontalLine(const PieceStereoInput& in, const ImagePi
                                        const std::vector<std::optional<Pair>>& pairs,
                                        const Rectifier& rect, const SegmentStereoOptions& o)
 {
-	const double da = cornerDisparity(l.a, pairs, o), db = cornerDisparity(l.b, pairs, o);
+	const double da = cornerDisparity(l.a, pairs, in.matches, o),
+	             db = cornerDisparity(l.b, pairs, in.matches, o);
 	if (std::isnan(da) || std::isnan(db) ||
 	    !rightSegmentAlong(in, l.a - cv::Point2d(da, 0), l.b - cv::Point2d(db, 0), o))
 		return std::nullopt;
