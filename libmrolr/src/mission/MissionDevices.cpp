@@ -21,70 +21,66 @@ auto connect(const DeviceChoice& d, Make make)
 	}
 }
 
-/** A serial base whose steps are also given to the lab's base (its truth then follows). */
+/** A serial device and the lab's device that shadows it (gets the same commands). */
+template <typename Device>
+struct Pair
+{
+	std::unique_ptr<Device> serial;
+	Device& lab;
+};
+
+/** A serial base whose steps also go to the lab's base (its truth then follows). */
 class ShadowedBase : public hw::BaseDevice
 {
  public:
-	ShadowedBase(std::unique_ptr<hw::BaseDevice> serial, hw::BaseDevice& lab)
-	    : serial_(std::move(serial)), lab_(lab)
-	{
-	}
+	explicit ShadowedBase(Pair<hw::BaseDevice> d) : d_(std::move(d)) {}
 	void step(const base::WheelControl& u) override
 	{
-		serial_->step(u);
-		lab_.step(u);
+		d_.serial->step(u);
+		d_.lab.step(u);
 	}
-	hw::Odometry odometry() const override { return serial_->odometry(); }
+	hw::Odometry odometry() const override { return d_.serial->odometry(); }
 
  private:
-	std::unique_ptr<hw::BaseDevice> serial_;
-	hw::BaseDevice& lab_;
+	Pair<hw::BaseDevice> d_;
 };
 
 class ShadowedHead : public hw::HeadDevice
 {
  public:
-	ShadowedHead(std::unique_ptr<hw::HeadDevice> serial, hw::HeadDevice& lab)
-	    : serial_(std::move(serial)), lab_(lab)
-	{
-	}
+	explicit ShadowedHead(Pair<hw::HeadDevice> d) : d_(std::move(d)) {}
 	double moveTo(const geometry::HeadAngles& target) override
 	{
-		const double settle_s = serial_->moveTo(target);
-		lab_.moveTo(target);
+		const double settle_s = d_.serial->moveTo(target);
+		d_.lab.moveTo(target);
 		return settle_s;
 	}
-	geometry::HeadAngles angles() const override { return serial_->angles(); }
-	hw::StereoImages grab() override { return serial_->grab(); }
+	geometry::HeadAngles angles() const override { return d_.serial->angles(); }
+	hw::StereoImages grab() override { return d_.serial->grab(); }
 
  private:
-	std::unique_ptr<hw::HeadDevice> serial_;
-	hw::HeadDevice& lab_;
+	Pair<hw::HeadDevice> d_;
 };
 
 class ShadowedArm : public hw::ArmDevice
 {
  public:
-	ShadowedArm(std::unique_ptr<hw::ArmDevice> serial, hw::ArmDevice& lab)
-	    : serial_(std::move(serial)), lab_(lab)
-	{
-	}
+	explicit ShadowedArm(Pair<hw::ArmDevice> d) : d_(std::move(d)) {}
 	void moveTo(const hw::ArmJoints& joints) override
 	{
-		serial_->moveTo(joints);
-		lab_.moveTo(joints);
+		d_.serial->moveTo(joints);
+		d_.lab.moveTo(joints);
 	}
-	hw::ArmJoints joints() const override { return serial_->joints(); }
+	hw::ArmJoints joints() const override { return d_.serial->joints(); }
 	void setGripper(bool closed) override
 	{
-		serial_->setGripper(closed);
-		lab_.setGripper(closed);
+		d_.serial->setGripper(closed);
+		d_.lab.setGripper(closed);
 	}
-	bool gripperClosed() const override { return serial_->gripperClosed(); }
+	bool gripperClosed() const override { return d_.serial->gripperClosed(); }
 
  private:
-	std::unique_ptr<hw::ArmDevice> serial_;
-	hw::ArmDevice& lab_;
+	Pair<hw::ArmDevice> d_;
 };
 
 /** The serial driver itself when the lab's device is behind its port, else a shadowed one. */
@@ -93,7 +89,7 @@ std::unique_ptr<Device> shadowUnlessBehind(const DeviceChoice& d, std::unique_pt
                                            Device& lab)
 {
 	if (d.lab_behind_port) return serial;
-	return std::make_unique<Shadowed>(std::move(serial), lab);
+	return std::make_unique<Shadowed>(Pair<Device>{std::move(serial), lab});
 }
 }  // namespace
 

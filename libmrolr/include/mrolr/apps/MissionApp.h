@@ -8,7 +8,8 @@
  * `--set` overrides a key of the mission file (e.g. `--set device.base.port=/dev/pts/4`);
  * `--serial-emulation` serves the simulated lab's devices on pseudo-terminals and drives them
  * through the serial drivers (every device `driver = serial`), with optional reply delays and
- * byte loss. 
+ * byte loss.
+ *
  * Writes report.json, report.md, trajectory.png, mission.3Dscene and mission.rawlog into DIR
  * (default out/<name>-<UTC timestamp>), prints a progress line while running and a summary (or the
  * report as JSON) at the end. Exit code 0 when the mission succeeded, 3 when it ran but failed

@@ -15,8 +15,8 @@ namespace mrolr::mission
 /** One device section. */
 struct DeviceChoice
 {
-	std::string section;  ///< "device.base", "device.head" or "device.arm"
-	bool serial = false;  ///< driver = serial (else sim)
+	std::string section;        ///< "device.base", "device.head" or "device.arm"
+	bool serial = false;        ///< driver = serial (else sim)
 	hw::SerialLinkConfig link;  ///< read only when serial
 	std::string port_key;       ///< "<file> [section] port", for errors about the port
 	/** The port is served by an emulator around the SimulatedLab's own device (SerialEmulation).
