@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 using namespace mrolr::mission;
 using mrolr::util::ConfigError;
 
@@ -79,6 +81,11 @@ TEST(MissionOptions, TheShippedHardwareConfigLoadsWithSerialDevices)
 		EXPECT_NE(d->port_key.find("mission_hw.ini [" + d->section + "] port"), std::string::npos);
 	}
 	EXPECT_EQ(o.target, test::optionsFrom(test::defaultMissionConfig()).target);
+	std::ostringstream dump;
+	o.dump(dump);
+	EXPECT_NE(dump.str().find("[device.arm]\ndriver = serial\nport = /dev/ttyUSB2"),
+	          std::string::npos)
+	    << dump.str();
 }
 
 TEST(MissionOptions, UnknownDriverNamesTheChoices)

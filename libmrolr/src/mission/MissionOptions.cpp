@@ -211,6 +211,8 @@ void MissionOptions::dump(std::ostream& out) const
 	search.dump(out);
 	out << "\n[retrieval]\n";
 	retrieval.dump(out);
+	out << "\n";
+	devices.dump(out);
 }
 
 }  // namespace mrolr::mission
