@@ -41,26 +41,37 @@ void print(const MonteCarloSummary& m)
 
 TEST(EkfSim, ConsistencyOver50Runs)
 {
-	const auto m = summarise(monteCarlo(cleanSetup(), 50, 7));
+	// Issue 3: the shipped configuration (2 % outliers, no wheel slip) and its seed, 50 runs.
+	const SimulationSetup s = SimulationSetup::load(kRoot + "/config/ekf_sim.ini");
+	const auto m = summarise(monteCarlo(s, 50, s.sim.seed));
 	print(m);
 	EXPECT_GT(m.steps, 40);
 	EXPECT_NEAR(m.nees_lo, 2.3597, 1e-3);  // χ²_150 quantiles / 50
 	EXPECT_NEAR(m.nees_hi, 3.7160, 1e-3);
 	// The innovations are consistent: mean NIS of a χ²₃ is 3.
 	EXPECT_NEAR(m.mean_nis, 3.0, 0.25);
-	// Issue 3 asks for ≥ 90 % of steps inside the bounds; with first-estimate Jacobians and the
-	// second-order Q (config/ekf_sim.ini) this seed gives 0.84 and other seeds 0.44–0.91
-	// (docs/slam.md, "Consistency"): the assertion guards against regressions only.
-	EXPECT_GE(m.nees_inside_fraction, 0.75);
+	// The issue's criterion: mean vehicle NEES inside its 95 % bounds for ≥ 90 % of the steps.
+	EXPECT_GE(m.nees_inside_fraction, 0.90);
 	EXPECT_GE(m.nees_steps, m.steps - 1);
+	EXPECT_LT(m.slam_rms_position_m, 0.3 * m.dr_rms_position_m);
+	EXPECT_LT(m.slam_final_position_error_m, 0.3 * m.dr_final_position_error_m);
+}
+
+TEST(EkfSim, MeanNeesOver200RunsStaysNearThree)
+{
+	// With 50 runs, even a consistent filter leaves the bounds on some steps by chance (the NEES of
+	// a run is correlated over time); 200 runs show the bias itself. Before the fixes of
+	// docs/slam.md ("Consistency") the worst step was 4.1 and the lap mean 3.2.
+	const auto m = summarise(monteCarlo(cleanSetup(), 200, 7));
+	print(m);
+	double sum = 0;
 	for (double v : m.mean_nees)
 	{
-		if (std::isfinite(v))
-		{
-			EXPECT_LT(v, 3 * m.nees_hi);
-		}
+		ASSERT_TRUE(std::isfinite(v));
+		EXPECT_LT(v, 3.716);  // the 50-run upper bound, for 200 runs
+		sum += v;
 	}
-	EXPECT_LT(m.slam_rms_position_m, 0.3 * m.dr_rms_position_m);
+	EXPECT_NEAR(sum / static_cast<double>(m.mean_nees.size()), 3.0, 0.25);
 }
 
 TEST(EkfSim, SlamBeatsDeadReckoningUnderWheelSlip)
