@@ -99,7 +99,18 @@ TEST(MissionOptions, BadModeTargetWaypointAndStation)
 	expectError("mission", "target", "teapot", "no model 'teapot'");
 	expectError("mission", "route", "W0 W99", "no waypoint 'W99'");
 	expectError("mission", "search_stations", "W5; 1 2", "neither a waypoint name");
-	expectError("mission", "obstacle_mode", "true", "not available yet");
+}
+
+TEST(MissionOptions, ObstacleModeReadsItsSection)
+{
+	auto cfg = test::defaultMissionConfig();  // obstacle_mode = false and no [obstacle]
+	EXPECT_FALSE(test::optionsFrom(cfg).obstacle_mode);
+	cfg.write("mission", "obstacle_mode", "true");
+	EXPECT_NE(errorOf(cfg).find("[obstacle] tilt_deg"), std::string::npos) << errorOf(cfg);
+	const auto o = MissionOptions::load(test::configDir() + "/mission_obstacle.ini");
+	EXPECT_TRUE(o.obstacle_mode);
+	EXPECT_DOUBLE_EQ(o.obstacle.range_m, 1.0);
+	EXPECT_EQ(o.world.obstacles.size(), 3u);
 }
 
 TEST(MissionOptions, MalformedNumbersAndMissingKeys)

@@ -3,6 +3,7 @@
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionDevices.h>
+#include <mrolr/mission/ObstacleAvoidance.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/world/ObjectShape.h>
@@ -54,6 +55,7 @@ struct Mission::Impl
 	std::mt19937 rng;
 	std::unique_ptr<Navigator> nav;
 	std::unique_ptr<ObjectSearch> search;
+	std::unique_ptr<ObstacleAvoidance> obstacles;  ///< obstacle mode
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
 	bool render_failed = false;
 	std::string carried;  ///< instance standing on the base after retrieval
@@ -76,7 +78,8 @@ struct Mission::Impl
 		return out;
 	}
 	void lookAt(const geometry::HeadAngles& angles);
-	void grabStereo();
+	hw::StereoImages grabStereo();
+	void attachObstacleMode();
 	void stopSafely(const std::string& why);
 	void runStages();
 	void loadTarget();
@@ -119,16 +122,30 @@ void Mission::Impl::lookAt(const geometry::HeadAngles& angles)
 	}
 }
 
-void Mission::Impl::grabStereo()
+hw::StereoImages Mission::Impl::grabStereo()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	auto images = dev.head().grab();
-	StereoShot shot{nav->path().back(), images.angles, std::move(images.left),
-	                std::move(images.right)};
+	StereoShot shot{nav->path().back(), images.angles, images.left, images.right};
 	shot.state.time_s = r.timeline.simulatedSeconds();
 	r.shots.push_back(std::move(shot));
 	r.timeline.addRender(
 	    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+	return images;
+}
+
+void Mission::Impl::attachObstacleMode()
+{
+	auto look = [this](const geometry::HeadAngles& a)
+	{
+		dev.head().moveTo(a);
+		return grabStereo();
+	};
+	obstacles = std::make_unique<ObstacleAvoidance>(geometry::BiSightHead(o.bisight), o.obstacle,
+	                                                look, r.timeline);
+	nav->max_detours_per_leg = o.obstacle.max_detours_per_leg;
+	nav->before_translation = [this](const Eigen::Vector3d& e, const Eigen::Vector3d& goal)
+	{ return obstacles->check(e, goal); };
 }
 
 void Mission::Impl::navigate()
@@ -141,6 +158,7 @@ void Mission::Impl::navigate()
 		if (!carried.empty()) poses[carried] = trueC0() * T_OinC0_carried;
 		if (progress && *progress) (*progress)(r.timeline.stage(), s);
 	};
+	if (o.obstacle_mode) attachObstacleMode();
 	for (size_t i = 1; i < o.route.size(); ++i) nav->driveTo(waypoint(o, o.route[i]));
 }
 
@@ -213,6 +231,7 @@ void Mission::Impl::finish()
 	r.returned_home = r.final_position_error_m <= o.home_tolerance_m;
 	r.links = dev.links();
 	r.final_objects = objects();
+	if (obstacles) r.obstacle = obstacles->report();
 	if (nav)  // no device I/O here: a device may have failed
 	{
 		r.path = nav->path();

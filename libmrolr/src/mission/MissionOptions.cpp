@@ -145,9 +145,7 @@ void readMissionSection(const CConfigFileBase& cfg, const std::string& dir, Miss
 	readHomeAndStations(cfg, o);
 	o.mode = readMode(cfg);
 	o.obstacle_mode = util::readBool(cfg, "mission", "obstacle_mode", false);
-	if (o.obstacle_mode)
-		throw util::ConfigError(util::describeKey(cfg, "mission", "obstacle_mode") +
-		                        ": obstacle mode is not available yet (set it to false)");
+	if (o.obstacle_mode) o.obstacle.loadFromConfigFile(cfg, "obstacle");
 	o.seed = static_cast<unsigned>(util::readInt(cfg, "mission", "seed"));
 	o.home_tolerance_m = util::readDouble(cfg, "mission", "home_tolerance_m");
 }

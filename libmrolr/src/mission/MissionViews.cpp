@@ -45,21 +45,36 @@ void drawPath(cv::Mat& img, const TopView& v, const std::vector<PathSample>& pat
 	}
 }
 
+/** A footprint centred at (z, x) in W, turned by yaw, @p depth along its z, @p length along x. */
+void drawFootprint(cv::Mat& img, const TopView& v, double z, double x, double yaw_deg, double depth,
+                   double length, const cv::Scalar& colour)
+{
+	const double yaw = yaw_deg * M_PI / 180.0;
+	const Eigen::Vector2d az(std::cos(yaw), std::sin(yaw)), ax(-std::sin(yaw), std::cos(yaw));
+	std::vector<cv::Point> pts;
+	for (auto [sz, sx] : {std::pair{-1, -1}, {-1, 1}, {1, 1}, {1, -1}})
+	{
+		const Eigen::Vector2d c =
+		    Eigen::Vector2d(z, x) + 0.5 * (sz * depth * az + sx * length * ax);
+		pts.push_back(v.px(c.x(), c.y()));
+	}
+	cv::fillConvexPoly(img, pts, colour);
+}
+
 void drawTables(cv::Mat& img, const TopView& v, const world::World& w)
 {
 	for (const auto& t : w.tables)
-	{
-		const double yaw = t.yaw_deg * M_PI / 180.0;
-		const Eigen::Vector2d az(std::cos(yaw), std::sin(yaw)), ax(-std::sin(yaw), std::cos(yaw));
-		std::vector<cv::Point> pts;
-		for (auto [sz, sx] : {std::pair{-1, -1}, {-1, 1}, {1, 1}, {1, -1}})
-		{
-			const Eigen::Vector2d c =
-			    Eigen::Vector2d(t.z_m, t.x_m) + 0.5 * (sz * t.depth_m * az + sx * t.length_m * ax);
-			pts.push_back(v.px(c.x(), c.y()));
-		}
-		cv::fillConvexPoly(img, pts, cv::Scalar(90, 90, 90));
-	}
+		drawFootprint(img, v, t.z_m, t.x_m, t.yaw_deg, t.depth_m, t.length_m, {90, 90, 90});
+	for (const auto& o : w.obstacles)
+		drawFootprint(img, v, o.z_m, o.x_m, o.yaw_deg, o.size_m.z(), o.size_m.x(), {60, 110, 160});
+}
+
+/** Obstacle mode's inserted waypoints (W) as diamonds. */
+void drawInsertedWaypoints(cv::Mat& img, const TopView& v, const ObstacleReport& r)
+{
+	for (const auto& e : r.events)
+		for (const auto& p : e.via_zx_inW)
+			cv::drawMarker(img, v.px(p.x(), p.y()), {0, 120, 255}, cv::MARKER_DIAMOND, 12, 2);
 }
 
 void drawLegend(cv::Mat& img)
@@ -94,6 +109,7 @@ void writeTrajectoryPng(const MissionResult& r, const MissionOptions& o, const s
 	drawPath(img, v, r.path, &PathSample::odometry, {0, 0, 220});
 	drawPath(img, v, r.path, &PathSample::estimate, {200, 0, 0});
 	drawPath(img, v, r.path, &PathSample::truth, {0, 160, 0});
+	drawInsertedWaypoints(img, v, r.obstacle);
 	for (const auto& [name, obj] : r.final_objects)
 	{
 		const auto p = obj.T_OinW.translation();

@@ -47,19 +47,24 @@ void Navigator::driveTo(const NamedPose& goal)
 	const auto via =
 	    detourAroundTables(o_.world, {now.x(), now.y()}, {goal.xv_zxphi.x(), goal.xv_zxphi.y()},
 	                       o_.navigation.table_clearance_m);
-	Eigen::Vector2d prev(now.x(), now.y());
-	for (const auto& v : via)
-	{
-		const double heading = std::atan2(v.y() - prev.y(), v.x() - prev.x());
-		driveStraightTo({v.x(), v.y(), heading});
-		prev = v;
-	}
+	driveThrough(via, {now.x(), now.y()});
 	driveStraightTo(goal.xv_zxphi);
 	timeline_.note("reached " + goal.name);
 }
 
+void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from)
+{
+	for (const auto& v : via)
+	{
+		const double heading = std::atan2(v.y() - from.y(), v.x() - from.x());
+		driveStraightTo({v.x(), v.y(), heading});
+		from = v;
+	}
+}
+
 void Navigator::driveStraightTo(const Eigen::Vector3d& goal)
 {
+	int detours = 0;
 	for (int leg = 0; leg <= o_.navigation.max_correction_legs; ++leg)
 	{
 		const Eigen::Vector3d e = estimate();
@@ -71,8 +76,29 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal)
 			ComputeTimer t(timeline_);
 			plan = base::planLeg(e, goal, model_, o_.trajectory);
 		}
-		for (const auto& s : plan) execute(s);
+		if (!executeLeg(plan, goal, detours)) leg = -1;  // round an obstacle: plan the leg anew
 	}
+}
+
+bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
+                           int& detours)
+{
+	for (const auto& s : plan)
+	{
+		const bool check = before_translation && s.kind == base::PlannedStep::Kind::Translate &&
+		                   detours < max_detours_per_leg && detour_depth_ < 2;
+		if (check)
+			if (const auto via = before_translation(estimate(), goal); !via.empty())
+			{
+				++detours, ++detour_depth_;
+				const Eigen::Vector3d e = estimate();
+				driveThrough(via, e.head<2>());
+				--detour_depth_;
+				return false;
+			}
+		execute(s);
+	}
+	return true;
 }
 
 void Navigator::execute(const base::PlannedStep& step)

@@ -103,6 +103,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"measurements_rejected", r.measurements_rejected},
 	          {"features", r.map.size()},
 	          {"timeline", timelineJson(r.timeline)}};
+	if (o.obstacle_mode) j["obstacle"] = obstacleJson(r.obstacle);
 	if (r.found)
 		j["recognition"] = {{"confidence", r.search.recognition.confidence},
 		                    {"score", r.search.recognition.score},
@@ -138,6 +139,9 @@ std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
 	s << "| simulated time (s) | " << r.timeline.simulatedSeconds() << " |\n"
 	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n"
 	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n";
+	if (o.obstacle_mode)
+		s << "| obstacle mode | " << r.obstacle.checks << " checks, " << r.obstacle.events.size()
+		  << " obstacles avoided, " << r.obstacle.failed_looks << " failed looks |\n";
 	for (const auto& l : r.links)
 		s << "| serial " << l.section << " | " << l.port << ", " << l.resends << " resends |\n";
 	s << "\n## Stages\n\n"

@@ -10,6 +10,7 @@
 #include <mrpt/opengl/CTexturedPlane.h>
 
 #include <filesystem>
+#include <tuple>
 
 namespace mrolr::sim
 {
@@ -87,6 +88,32 @@ void addTable(mrpt::opengl::COpenGLScene& sc, const world::World& w, const world
 		}
 }
 
+/** A box whose four sides and top carry @p tex (thesis axes of W; sides face outwards). */
+void addTexturedBox(mrpt::opengl::COpenGLScene& sc, const world::World& w, const world::Obstacle& o,
+                    const mrpt::img::CImage& tex)
+{
+	const Eigen::Matrix3d R = R_aboutVertical(o.yaw_deg * M_PI / 180);
+	const Eigen::Vector3d c(o.x_m, w.room.floorY() + o.size_m.y() / 2, o.z_m), s = o.size_m / 2;
+	const Eigen::Vector3d Y = Eigen::Vector3d::UnitY();
+	for (const auto& [axis, half, width] :
+	     {std::tuple{Eigen::Vector3d(1, 0, 0), s.x(), o.size_m.z()},
+	      {Eigen::Vector3d(-1, 0, 0), s.x(), o.size_m.z()},
+	      {Eigen::Vector3d(0, 0, 1), s.z(), o.size_m.x()},
+	      {Eigen::Vector3d(0, 0, -1), s.z(), o.size_m.x()}})
+		addPlane(sc, tex, c + R * axis * half, Y, R * axis, width, o.size_m.y(),
+		         "obstacle." + o.name);
+	addPlane(sc, tex, c + Y * s.y(), R * Eigen::Vector3d::UnitZ(), Y, o.size_m.x(), o.size_m.z(),
+	         "obstacle." + o.name);
+}
+
+void addObstacle(mrpt::opengl::COpenGLScene& sc, const world::World& w, const world::Obstacle& o)
+{
+	if (!o.texture.empty()) return addTexturedBox(sc, w, o, loadTexture(o.texture, w.directory()));
+	auto box = floorBox(w, o.x_m, o.z_m, o.yaw_deg, o.size_m, 0, o.colour);
+	box->setName("obstacle." + o.name);
+	sc.insert(box);
+}
+
 void addPatches(mrpt::opengl::COpenGLScene& sc, const world::World& w)
 {
 	for (const auto& p : w.patches)
@@ -144,8 +171,7 @@ LabScene buildLabScene(const world::World& w, bool draw_point_landmarks)
 	lab.shapes = loadObjectShapes(w);
 	if (w.has_room) addRoom(*lab.scene, w);
 	for (const auto& t : w.tables) addTable(*lab.scene, w, t);
-	for (const auto& o : w.obstacles)
-		lab.scene->insert(floorBox(w, o.x_m, o.z_m, o.yaw_deg, o.size_m, 0, o.colour));
+	for (const auto& o : w.obstacles) addObstacle(*lab.scene, w, o);
 	addPatches(*lab.scene, w);
 	addObjects(lab, w);
 	if (draw_point_landmarks) addPointLandmarks(*lab.scene, w);

@@ -70,6 +70,19 @@ cv::Mat poster(unsigned seed)
 	return m;
 }
 
+/** Random grey blobs about 8 texels across over the whole range: dense texture that stereo
+ * matching can lock onto (a printed carton, an obstacle). */
+cv::Mat speckle(unsigned seed)
+{
+	cv::Mat small(kSize / 8, kSize / 8, CV_8UC1);
+	cv::theRNG().state = seed + 1;
+	cv::randu(small, cv::Scalar::all(0), cv::Scalar::all(256));
+	cv::Mat big, bgr;
+	cv::resize(small, big, cv::Size(kSize, kSize), 0, 0, cv::INTER_CUBIC);
+	cv::cvtColor(big, bgr, cv::COLOR_GRAY2BGR);
+	return bgr;
+}
+
 using Maker = std::function<cv::Mat(unsigned)>;
 
 const std::map<std::string, Maker>& makers()
@@ -81,6 +94,7 @@ const std::map<std::string, Maker>& makers()
 	    {"light", light},
 	    {"fire_sign", fireSign},
 	    {"poster", poster},
+	    {"speckle", speckle},
 	    {"checker", [](unsigned s) { return tiles(10, 235, 4 + 2 * int(s % 4), s); }},
 	};
 	return m;
@@ -108,8 +122,9 @@ mrpt::img::CImage makeProceduralTexture(const std::string& pattern, unsigned see
 {
 	const auto it = makers().find(pattern);
 	if (it == makers().end())
-		throw std::invalid_argument("unknown procedural texture '" + pattern +
-		                            "' (wall, floor, ceiling, light, fire_sign, poster, checker)");
+		throw std::invalid_argument(
+		    "unknown procedural texture '" + pattern +
+		    "' (wall, floor, ceiling, light, fire_sign, poster, speckle, checker)");
 	return toCImage(it->second(seed));
 }
 

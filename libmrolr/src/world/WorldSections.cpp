@@ -104,13 +104,14 @@ Table parseTable(const IniDocument& doc, const IniSection& s, const std::string&
 
 Obstacle parseObstacle(const IniDocument& doc, const IniSection& s, const std::string& name)
 {
-	rejectUnknownKeys(doc, s, {"centre_m", "yaw_deg", "size_m", "colour"});
+	rejectUnknownKeys(doc, s, {"centre_m", "yaw_deg", "size_m", "colour", "texture"});
 	const Footprint f = readFootprint(doc, s);
 	Obstacle o;
 	o.name = name;
 	o.x_m = f.x_m, o.z_m = f.z_m, o.yaw_deg = f.yaw_deg;
 	o.size_m = f.size;
 	o.colour = colour(doc, s, "colour", o.colour);
+	o.texture = optionalString(s, "texture", "");
 	return o;
 }
 

@@ -8,6 +8,7 @@
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/Navigator.h>
 #include <mrolr/mission/ObjectSearch.h>
+#include <mrolr/mission/ObstacleAvoidance.h>
 #include <mrolr/mission/Retrieval.h>
 #include <mrolr/mission/Timeline.h>
 
@@ -44,7 +45,8 @@ struct MissionResult
 	RetrievalResult retrieval;
 	Eigen::Vector3d home = Eigen::Vector3d::Zero();
 	std::vector<PathSample> path;
-	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps (render_stereo)
+	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps and obstacle looks
+	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted
 	std::vector<MappedLandmark> map;
 	int measurements = 0, measurements_rejected = 0;
 	Timeline timeline;

@@ -10,6 +10,7 @@
 #include <mrolr/base/TrajectoryPlanner.h>
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/mission/DeviceOptions.h>
+#include <mrolr/mission/ObstacleOptions.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
@@ -100,7 +101,7 @@ struct MissionOptions
 	std::string home_waypoint;        ///< default: the world's home waypoint
 	std::vector<NamedPose> stations;  ///< search stations in order (names or "z x phi_deg")
 	NavigationMode mode = NavigationMode::Slam;
-	bool obstacle_mode = false;
+	bool obstacle_mode = false;  ///< look for obstacles before each step (thesis 5.8.1.2)
 	unsigned seed = 1;
 	double home_tolerance_m = 0.10;  ///< returned_home when the true pose is this close
 
@@ -118,6 +119,7 @@ struct MissionOptions
 	NavigationOptions navigation;
 	SearchOptions search;
 	RetrievalOptions retrieval;
+	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
 
 	/** Reads @p path and every file it names; throws util::ConfigError (file, section, key). */
 	static MissionOptions load(const std::string& path);

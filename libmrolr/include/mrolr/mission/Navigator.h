@@ -47,10 +47,21 @@ class Navigator
 	std::vector<MappedLandmark> map();
 	/** Called after every step with the sample just recorded (progress, rawlog). */
 	std::function<void(const PathSample&)> on_step;
+	/** Obstacle mode (thesis 5.8.1.2, ObstacleAvoidance.h): called before every translation step
+	 * with the estimate and the leg's goal (z, x, φ in W); returns waypoints (z, x in W) to drive
+	 * through first, empty when the way is clear. Unset: no checks. */
+	std::function<std::vector<Eigen::Vector2d>(const Eigen::Vector3d& estimate,
+	                                           const Eigen::Vector3d& goal)>
+	    before_translation;
+	int max_detours_per_leg = 3;  ///< detours on one leg before the rest is driven unchecked
 	int measurements = 0, rejected = 0;
 
  private:
+	void driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from);
 	void driveStraightTo(const Eigen::Vector3d& goal);
+	/** Executes @p plan; false when a detour was driven instead of the rest of it. */
+	bool executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
+	                int& detours);
 	void execute(const base::PlannedStep& step);
 	void measure();
 	std::vector<size_t> visibleMapped(const Eigen::Vector3d& xv_true);
@@ -67,6 +78,7 @@ class Navigator
 	slam::ActiveSlamFilter filter_;
 	std::mt19937 rng_;
 	std::vector<PathSample> path_;
+	int detour_depth_ = 0;  ///< detours being driven inside detours
 };
 
 /** Via points that take the straight path from @p from to @p to (z, x in W) round every table of

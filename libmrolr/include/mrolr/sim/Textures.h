@@ -3,7 +3,8 @@
  *
  * A texture spec is either `procedural:<pattern>[:<seed>]` with pattern one of wall, floor,
  * ceiling, light (a ceiling light fitting, thesis fig 5.6.2.1), fire_sign (the known feature of
- * 5.6.2), poster (random high-contrast shapes), checker; or an image path, relative to the world
+ * 5.6.2), poster (random high-contrast shapes), speckle (dense random grey blobs, for obstacles
+ * that stereo must see), checker; or an image path, relative to the world
  * file's folder unless absolute. */
 
 #include <mrpt/img/CImage.h>

@@ -57,6 +57,9 @@ struct Obstacle
 	double x_m = 0, z_m = 0, yaw_deg = 0;   ///< centre of the footprint, W
 	Eigen::Vector3d size_m{0.5, 1.0, 0.5};  ///< along its x, height, along its z
 	Eigen::Vector3d colour{0.5, 0.5, 0.55};
+	/** Texture spec of its four sides and top (a printed carton: something stereo can match);
+	 * empty: plain `colour`. */
+	std::string texture;
 };
 
 /** An object of the database placed on a table: its model frame O (z up, thesis 6.1) stands on the

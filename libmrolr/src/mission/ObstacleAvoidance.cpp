@@ -1,0 +1,101 @@
+// Looks ahead before each translation step and inserts waypoints round obstacles (5.8.1.2).
+#include <mrolr/hw_serial/SerialError.h>
+#include <mrolr/mission/ObstacleAvoidance.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace mrolr::mission
+{
+Eigen::Vector2d baseToWorld(const Eigen::Vector3d& xv, const Eigen::Vector2d& p)
+{
+	const double c = std::cos(xv.z()), s = std::sin(xv.z());
+	return {xv.x() + c * p.x() - s * p.y(), xv.y() + s * p.x() + c * p.y()};
+}
+
+ObstacleAvoidance::ObstacleAvoidance(const geometry::BiSightHead& head,
+                                     const ObstacleOptions& options, Grab grab, Timeline& timeline)
+    : head_(head), o_(options), grab_(std::move(grab)), timeline_(timeline), stereo_(head, options)
+{
+}
+
+geometry::HeadAngles ObstacleAvoidance::lookAngles(double pan_deg) const
+{
+	const double pan = pan_deg * M_PI / 180.0, tilt = o_.tilt_deg * M_PI / 180.0;
+	const Eigen::Vector3d dir(std::sin(pan) * std::cos(tilt), std::sin(tilt),
+	                          std::cos(pan) * std::cos(tilt));
+	return head_.fixate(o_.fixation_distance_m * dir);
+}
+
+std::vector<Eigen::Vector3d> ObstacleAvoidance::look(double pan_deg)
+{
+	const auto angles = lookAngles(pan_deg);
+	const auto images = grab_(angles);
+	++report_.looks;
+	timeline_.advance(o_.look_time_s);
+	ComputeTimer t(timeline_);
+	return stereo_.pointsAboveFloor(images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
+	                                images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
+	                                images.angles);
+}
+
+void ObstacleAvoidance::lookAround(ObstacleEvent& e, std::vector<Eigen::Vector3d> points)
+{
+	for (double pan : {o_.side_pan_deg, -o_.side_pan_deg})
+	{
+		const auto side = look(pan);
+		points.insert(points.end(), side.begin(), side.end());
+	}
+	ComputeTimer t(timeline_);
+	// the side looks may show more of a wide obstacle: measure it again with every point
+	const double near_m = e.sighting.near_m;
+	if (const auto seen = obstacleAhead(points, near_m + o_.range_m, o_); seen.blocked)
+		e.sighting = seen, e.sighting.near_m = near_m;
+	e.detour = planDetour(e.sighting, points, o_);
+}
+
+std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
+                                                      const Eigen::Vector3d& goal)
+{
+	++report_.checks;
+	try
+	{
+		const auto ahead = look(0);
+		const double to_goal = (goal.head<2>() - xv.head<2>()).norm();
+		const double length = std::min(o_.range_m, to_goal + o_.robot_front_m);
+		ObstacleEvent e;
+		e.time_s = timeline_.simulatedSeconds();
+		e.xv_estimate = xv;
+		e.sighting = obstacleAhead(ahead, length, o_);
+		if (!e.sighting.blocked) return {};
+		lookAround(e, ahead);
+		for (const auto& v : e.detour.via_zx) e.via_zx_inW.push_back(baseToWorld(xv, v));
+		note(e);
+		report_.events.push_back(e);
+		return e.via_zx_inW;
+	}
+	catch (const hw::SerialDeviceError&)
+	{
+		throw;  // the head stopped answering: the mission stops
+	}
+	catch (const std::exception& ex)
+	{  // a failed look (rendering, matching) is recorded; the step goes ahead unchecked
+		if (++report_.failed_looks == 1)
+			timeline_.note(std::string("obstacle look failed (noted once): ") + ex.what());
+		return {};
+	}
+}
+
+void ObstacleAvoidance::note(const ObstacleEvent& e)
+{
+	std::ostringstream s;
+	s.precision(2);
+	s << std::fixed << "obstacle " << e.sighting.near_m << " m ahead (" << e.sighting.points
+	  << " points, x " << e.sighting.right_m << ".." << e.sighting.left_m << " m, far edge "
+	  << e.sighting.far_m << " m); passing on the " << (e.detour.side > 0 ? "left" : "right")
+	  << (e.detour.both_blocked ? " (neither side free)" : "") << " via";
+	for (const auto& v : e.via_zx_inW) s << " (" << v.x() << ", " << v.y() << ")";
+	timeline_.note(s.str());
+}
+
+}  // namespace mrolr::mission
