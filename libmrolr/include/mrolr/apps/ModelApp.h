@@ -2,18 +2,20 @@
 /** `mrolr-model`: wire-frame models from stereo (issue 6, thesis 4.3, 6.1, 6.2, 7.1).
  *
  *     mrolr-model build --turntable DIR --out M.wf [--truth T.wf] [--json]
- *     mrolr-model scene --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out S.wf
- *     mrolr-model edit M.wf [--out M2.wf] [--remove 3,5] [--remove-box x0,y0,z0,x1,y1,z1]
+ *     mrolr-model scene --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out
+ * S.wf mrolr-model edit M.wf [--out M2.wf] [--remove 3,5] [--remove-box x0,y0,z0,x1,y1,z1]
  *                 [--add-line x1,y1,z1,x2,y2,z2] [--add-conic cx,cy,cz,nx,ny,nz,ax,ay,az,a,b,t1,t2]
  *                 [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]
  *     mrolr-model cliques M.wf [--out M2.wf] [--replace] [--json]
  *     mrolr-model show M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]
- *     mrolr-model stats M.wf [--truth T.wf] [--json]
+ *     mrolr-model stats M.wf [--truth T.wf [--depth D.png (--calib C.ini | --head ANGLES)]]
+ * [--json]
  *
  * Options of every stage come from --config (default config/model.ini). Head angles in degrees. */
 
 #include <mrolr/model/ModelStats.h>
 #include <mrolr/model/WireFrame.h>
+#include <mrolr/stereo/StereoCalibration.h>
 
 #include <nlohmann/json.hpp>
 
@@ -38,6 +40,7 @@ class ModelApp
 	std::string model_path, out_path, truth_path, config_path = "config/model.ini";
 	std::string turntable_dir, left_png, right_png, calib_path, bisight_path = "config/bisight.ini";
 	std::string png_path, scene3d_path;
+	std::string depth_png;  ///< stats: left depth image (mm) restricting the truth to what is seen
 	std::optional<std::vector<double>> head_deg;  ///< pan, tilt, γL, γR
 	std::vector<int> remove_ids;
 	std::vector<std::vector<double>> remove_boxes, add_lines, add_conics;
@@ -64,6 +67,8 @@ class ModelApp
 	int runShow();
 	int runStats();
 	void addStatsToReport(const model::WireFrame& truth);
+	void addStatsToReport(const model::WireFrame& m, const model::WireFrame& truth);
+	stereo::StereoCalibration viewCalibration() const;  ///< --calib, else the head at --head
 };
 
 }  // namespace mrolr::apps

@@ -19,7 +19,7 @@ const char* kUsage =
     "          [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]\n"
     "  cliques M.wf [--out M2.wf] [--replace] [--json]\n"
     "  show    M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]\n"
-    "  stats   M.wf [--truth T.wf] [--json]\n"
+    "  stats   M.wf [--truth T.wf [--depth D.png (--calib C.ini | --head ANGLES)]] [--json]\n"
     "'mrolr-model COMMAND --help' lists a command's options.\n";
 
 /** The subcommand's own arguments with "mrolr-model COMMAND" as argv[0]. */
@@ -96,7 +96,7 @@ void ModelApp::parseScene(const std::vector<std::string>& a)
 	Str l("", "left", "left image", true, "", "L.png", cmd),
 	    r("", "right", "right image", true, "", "R.png", cmd);
 	Str calib("", "calib", "stereo calibration .ini (default: the ideal head cameras at --head)",
-		false, "", "C.ini", cmd);
+	          false, "", "C.ini", cmd);
 	Str head("", "head", "head angles pan,tilt,vl,vr (deg): output in C0", false, "", "ANGLES",
 	         cmd);
 	Str bis("", "bisight", "head configuration for --head", false, bisight_path, "INI", cmd);
@@ -176,11 +176,24 @@ void ModelApp::parseStats(const std::vector<std::string>& a)
 	                   "1");
 	TCLAP::UnlabeledValueArg<std::string> model("model", "model .wf", true, "", "M.wf", cmd);
 	Str truth("", "truth", "exact model", false, "", "T.wf", cmd);
+	Str depth("", "depth",
+	          "left depth image (16-bit mm): compare with the visible part of the truth only "
+	          "(both models in left_camera; needs --calib or --head)",
+	          false, "", "D.png", cmd);
+	Str calib("", "calib", "stereo calibration of the view (with --depth)", false, "", "C.ini",
+	          cmd);
+	Str head("", "head", "head angles pan,tilt,vl,vr (deg) of the view: the ideal head cameras",
+	         false, "", "ANGLES", cmd);
+	Str bis("", "bisight", "head configuration for --head", false, bisight_path, "INI", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON output", cmd);
 	if ((help_shown = !parseTclap(cmd, a))) return;
 	model_path = model.getValue(), truth_path = truth.getValue(), config_path = cfg.getValue();
+	depth_png = depth.getValue(), calib_path = calib.getValue(), bisight_path = bis.getValue();
 	json = js.getValue();
+	if (!head.getValue().empty()) head_deg = numbers(head.getValue(), 4, "--head");
+	if (!depth_png.empty() && (truth_path.empty() || (calib_path.empty() && !head_deg)))
+		throw util::UsageError("stats --depth needs --truth and --calib or --head");
 }
 
 }  // namespace mrolr::apps

@@ -5,6 +5,7 @@
 #include <mrolr/model/ModelRender.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/model/TurntableBuilder.h>
+#include <mrolr/model/VisibleTruth.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/stereo/HeadCalibration.h>
@@ -97,8 +98,13 @@ int ModelApp::run(std::ostream& out)
 
 void ModelApp::addStatsToReport(const model::WireFrame& truth)
 {
-	quality = model::compareToTruth(result, truth,
-	                                loadOptions<model::QualityOptions>(config_path, "quality"));
+	addStatsToReport(result, truth);
+}
+
+void ModelApp::addStatsToReport(const model::WireFrame& m, const model::WireFrame& truth)
+{
+	quality =
+	    model::compareToTruth(m, truth, loadOptions<model::QualityOptions>(config_path, "quality"));
 	report["quality"] = qualityJson(*quality);
 }
 
@@ -117,16 +123,23 @@ int ModelApp::runBuild()
 	return util::kExitOk;
 }
 
+stereo::StereoCalibration ModelApp::viewCalibration() const
+{
+	if (!calib_path.empty()) return stereo::loadStereoCalibration(calib_path);
+	const geometry::BiSightHead head(
+	    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
+	return stereo::calibrationFromHead(head, anglesFromDeg(*head_deg));
+}
+
 int ModelApp::runScene()
 {
 	std::optional<geometry::BiSightHead> head;
-	if (head_deg) head.emplace(geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
-	const auto calib = calib_path.empty()
-						   ? stereo::calibrationFromHead(*head, anglesFromDeg(*head_deg))
-						   : stereo::loadStereoCalibration(calib_path);
+	if (head_deg)
+		head.emplace(geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
+	const auto calib = viewCalibration();
 	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
 	const auto scene =
-		stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
+	    stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
 	result = model::sceneToWireFrame(scene);
 	if (head) result = model::leftCameraToC0(result, *head, anglesFromDeg(*head_deg));
 	model::saveWireFrame(result, out_path);
@@ -134,7 +147,31 @@ int ModelApp::runScene()
 	report["edge_strings_left"] = scene.left_strings;
 	report["edge_matches"] = scene.matches;
 	report["out"] = out_path;
-	if (!truth_path.empty()) addStatsToReport(model::loadWireFrame(truth_path));
+	if (truth_path.empty()) return util::kExitOk;
+	auto truth = model::loadWireFrame(truth_path);
+	model::WireFrame compared = result;
+	if (compared.frame == model::WireFrameFrame::C0 && head_deg &&
+	    truth.frame == model::WireFrameFrame::LeftCamera)
+	{
+		// a scene model written with --head: back into the left camera of that view
+		const geometry::BiSightHead head(
+		    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
+		Eigen::Isometry3d T_C0inL = head.T_LinC0(anglesFromDeg(*head_deg)).inverse();
+		T_C0inL.translation() *= 1000.0;
+		compared = model::transformWireFrame(compared, T_C0inL, model::WireFrameFrame::LeftCamera);
+	}
+	if (compared.frame != truth.frame)
+		throw std::runtime_error("stats: " + model_path + " is in frame " +
+		                         model::frameName(compared.frame) + " but " + truth_path +
+		                         " in frame " + model::frameName(truth.frame));
+	if (!depth_png.empty())
+	{
+		const cv::Mat depth = cv::imread(depth_png, cv::IMREAD_UNCHANGED);
+		if (depth.empty()) throw std::runtime_error("cannot read depth image " + depth_png);
+		truth = model::visibleWireFrame(truth, depth, viewCalibration());
+		report["visible_truth_length_mm"] = model::totalLength(truth);
+	}
+	addStatsToReport(compared, truth);
 	return util::kExitOk;
 }
 
@@ -189,7 +226,31 @@ int ModelApp::runStats()
 {
 	result = model::loadWireFrame(model_path);
 	report["frame"] = model::frameName(result.frame);
-	if (!truth_path.empty()) addStatsToReport(model::loadWireFrame(truth_path));
+	if (truth_path.empty()) return util::kExitOk;
+	auto truth = model::loadWireFrame(truth_path);
+	model::WireFrame compared = result;
+	if (compared.frame == model::WireFrameFrame::C0 && head_deg &&
+	    truth.frame == model::WireFrameFrame::LeftCamera)
+	{
+		// a scene model written with --head: back into the left camera of that view
+		const geometry::BiSightHead head(
+		    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
+		Eigen::Isometry3d T_C0inL = head.T_LinC0(anglesFromDeg(*head_deg)).inverse();
+		T_C0inL.translation() *= 1000.0;
+		compared = model::transformWireFrame(compared, T_C0inL, model::WireFrameFrame::LeftCamera);
+	}
+	if (compared.frame != truth.frame)
+		throw std::runtime_error("stats: " + model_path + " is in frame " +
+		                         model::frameName(compared.frame) + " but " + truth_path +
+		                         " in frame " + model::frameName(truth.frame));
+	if (!depth_png.empty())
+	{
+		const cv::Mat depth = cv::imread(depth_png, cv::IMREAD_UNCHANGED);
+		if (depth.empty()) throw std::runtime_error("cannot read depth image " + depth_png);
+		truth = model::visibleWireFrame(truth, depth, viewCalibration());
+		report["visible_truth_length_mm"] = model::totalLength(truth);
+	}
+	addStatsToReport(compared, truth);
 	return util::kExitOk;
 }
 

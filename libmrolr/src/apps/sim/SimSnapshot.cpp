@@ -2,7 +2,9 @@
 
 #include <mrolr/apps/SimApp.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/model/WireFrameIO.h>
 #include <mrolr/sim/SceneBuilder.h>
+#include <mrolr/sim/SceneWireFrame.h>
 #include <mrolr/sim/Textures.h>
 
 #include <filesystem>
@@ -34,8 +36,11 @@ int SimApp::runSnapshot(std::ostream&)
 	saveDepthPng(f.depth_left_m, p("depth_left_mm.png"));
 	savePair(f.left, f.right, p("pair.png"));
 	std::ofstream(p("truth.json")) << truthJson(w, head, xv, a, f).dump(2) << "\n";
-	files_written = {p("left.png"), p("right.png"), p("pair.png"), p("depth_left_mm.png"),
-	                 p("truth.json")};
+	// exact wire-frame of the objects in the left camera (mrolr-model stats --truth --depth)
+	model::saveWireFrame(sim::tableSceneInCamera(w, lab.shapes, f.T_LinW, sim::SceneParts::Objects),
+	                     p("truth_left.wf"));
+	files_written = {p("left.png"),          p("right.png"),  p("pair.png"),
+	                 p("depth_left_mm.png"), p("truth.json"), p("truth_left.wf")};
 	frames_written = 1;
 	render_s = f.render_s;
 	return 0;
