@@ -69,6 +69,12 @@ class ModelApp
 	void addStatsToReport(const model::WireFrame& truth);
 	void addStatsToReport(const model::WireFrame& m, const model::WireFrame& truth);
 	stereo::StereoCalibration viewCalibration() const;  ///< --calib, else the head at --head
+	/** Statistics of result against --truth (visible part with --depth). */
+	void statsAgainstTruth(const std::string& name);
+	/** @p m in the truth's frame (a C0 model with --head goes back to the left camera); throws
+	 * std::runtime_error naming both files when the frames differ otherwise. */
+	model::WireFrame inFrameOf(const model::WireFrame& m, const model::WireFrame& truth,
+	                           const std::string& name) const;
 };
 
 }  // namespace mrolr::apps

@@ -147,31 +147,7 @@ int ModelApp::runScene()
 	report["edge_strings_left"] = scene.left_strings;
 	report["edge_matches"] = scene.matches;
 	report["out"] = out_path;
-	if (truth_path.empty()) return util::kExitOk;
-	auto truth = model::loadWireFrame(truth_path);
-	model::WireFrame compared = result;
-	if (compared.frame == model::WireFrameFrame::C0 && head_deg &&
-	    truth.frame == model::WireFrameFrame::LeftCamera)
-	{
-		// a scene model written with --head: back into the left camera of that view
-		const geometry::BiSightHead head(
-		    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
-		Eigen::Isometry3d T_C0inL = head.T_LinC0(anglesFromDeg(*head_deg)).inverse();
-		T_C0inL.translation() *= 1000.0;
-		compared = model::transformWireFrame(compared, T_C0inL, model::WireFrameFrame::LeftCamera);
-	}
-	if (compared.frame != truth.frame)
-		throw std::runtime_error("stats: " + model_path + " is in frame " +
-		                         model::frameName(compared.frame) + " but " + truth_path +
-		                         " in frame " + model::frameName(truth.frame));
-	if (!depth_png.empty())
-	{
-		const cv::Mat depth = cv::imread(depth_png, cv::IMREAD_UNCHANGED);
-		if (depth.empty()) throw std::runtime_error("cannot read depth image " + depth_png);
-		truth = model::visibleWireFrame(truth, depth, viewCalibration());
-		report["visible_truth_length_mm"] = model::totalLength(truth);
-	}
-	addStatsToReport(compared, truth);
+	if (!truth_path.empty()) statsAgainstTruth(out_path);
 	return util::kExitOk;
 }
 
@@ -226,10 +202,14 @@ int ModelApp::runStats()
 {
 	result = model::loadWireFrame(model_path);
 	report["frame"] = model::frameName(result.frame);
-	if (truth_path.empty()) return util::kExitOk;
-	auto truth = model::loadWireFrame(truth_path);
-	model::WireFrame compared = result;
-	if (compared.frame == model::WireFrameFrame::C0 && head_deg &&
+	if (!truth_path.empty()) statsAgainstTruth(model_path);
+	return util::kExitOk;
+}
+
+model::WireFrame ModelApp::inFrameOf(const model::WireFrame& m, const model::WireFrame& truth,
+                                     const std::string& name) const
+{
+	if (m.frame == model::WireFrameFrame::C0 && head_deg &&
 	    truth.frame == model::WireFrameFrame::LeftCamera)
 	{
 		// a scene model written with --head: back into the left camera of that view
@@ -237,12 +217,19 @@ int ModelApp::runStats()
 		    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
 		Eigen::Isometry3d T_C0inL = head.T_LinC0(anglesFromDeg(*head_deg)).inverse();
 		T_C0inL.translation() *= 1000.0;
-		compared = model::transformWireFrame(compared, T_C0inL, model::WireFrameFrame::LeftCamera);
+		return model::transformWireFrame(m, T_C0inL, model::WireFrameFrame::LeftCamera);
 	}
-	if (compared.frame != truth.frame)
-		throw std::runtime_error("stats: " + model_path + " is in frame " +
-		                         model::frameName(compared.frame) + " but " + truth_path +
-		                         " in frame " + model::frameName(truth.frame));
+	if (m.frame != truth.frame)
+		throw std::runtime_error("stats: " + name + " is in frame " + model::frameName(m.frame) +
+		                         " but " + truth_path + " in frame " +
+		                         model::frameName(truth.frame));
+	return m;
+}
+
+void ModelApp::statsAgainstTruth(const std::string& name)
+{
+	auto truth = model::loadWireFrame(truth_path);
+	const auto compared = inFrameOf(result, truth, name);
 	if (!depth_png.empty())
 	{
 		const cv::Mat depth = cv::imread(depth_png, cv::IMREAD_UNCHANGED);
@@ -251,7 +238,6 @@ int ModelApp::runStats()
 		report["visible_truth_length_mm"] = model::totalLength(truth);
 	}
 	addStatsToReport(compared, truth);
-	return util::kExitOk;
 }
 
 }  // namespace mrolr::apps
