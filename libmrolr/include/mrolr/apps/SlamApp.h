@@ -1,7 +1,10 @@
 #pragma once
 /** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (issue 5, thesis 5.2–5.7, 7.2).
  *
- *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--out DIR] [--json]
+ *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--head
+ * lab|synthetic]
+ *                [--out DIR] [--json]
+ *     mrolr-slam --rawlog FILE [--world FILE] [--out DIR] [--json]   (replay of an mrolr-sim run)
  *     mrolr-slam --world maps/lab/world.ini --acquire-known [--known NAME,NAME]
  *
  * The robot drives the world's waypoints (rotate–translate–rotate legs planned from the estimate),
@@ -9,7 +12,9 @@
  * finds its saved patch by NSSD in the predicted ellipses and the filter is updated with the
  * triangulated angles. Known features come from <world dir>/known_features.ini when it exists
  * (written by --acquire-known: fixate each known landmark from the first waypoint, lock on, store
- * the patch), otherwise they are acquired the same way at the start of the run. */
+ * the patch), otherwise they are acquired the same way at the start of the run. A replay cannot
+ * steer the head: it predicts with the recorded odometry and acquires and measures features in the
+ * recorded pairs at the recorded head angles (docs/vision.md). */
 
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/base/TrajectoryPlanner.h>

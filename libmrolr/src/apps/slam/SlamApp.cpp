@@ -32,10 +32,14 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	                            "fixate the world's known landmarks from the first waypoint and "
 	                            "write <world dir>/known_features.ini",
 	                            cmd);
-	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "replay a rawlog recorded by mrolr-sim",
-	                                    false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> rawlog(
+	    "", "rawlog",
+	    "replay a rawlog recorded by mrolr-sim (recorded odometry, stereo pairs and head angles)",
+	    false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> out(
-	    "", "out", "folder for trajectory/map/decisions CSV and a PNG plot", false, "", "DIR", cmd);
+	    "", "out",
+	    "folder for trajectory/map/decisions CSV, paths.png, decisions.rawlog and slam.3Dscene",
+	    false, "", "DIR", cmd);
 	TCLAP::SwitchArg js("", "json", "print the summary as JSON", cmd);
 	if (!parseTclap(cmd, args))
 	{
