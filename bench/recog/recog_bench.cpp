@@ -6,11 +6,11 @@
 #include <mrolr/apps/RecognizeApp.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/util/Cli.h>
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SyntheticObjects.h>
 #include <mrolr/recog/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
+#include <mrolr/util/Cli.h>
 
 #include <benchmark/benchmark.h>
 #include <mrpt/config/CConfigFile.h>
@@ -101,8 +101,8 @@ struct RenderedFixture
 		for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",
 		                         "hole_punch", "large_cup", "stapler"})
 			if (!scene.find(name) && absent.name.empty())
-				absent = model::loadWireFrame(
-				    mrolr::util::requireProjectFile(std::string("datasets/objects/") + name + ".wf"));
+				absent = model::loadWireFrame(mrolr::util::requireProjectFile(
+				    std::string("datasets/objects/") + name + ".wf"));
 		skip = std::make_unique<Recognizer>(absent, withSkip(true));
 		full = std::make_unique<Recognizer>(absent, withSkip(false));
 		ppf_scene = Fixture::pointsWithTangents(scene.scene);
@@ -117,39 +117,45 @@ RenderedFixture& rendered()
 	return f;
 }
 
+/** Times one recognition of @p scene; counters: found, levels skipped, scene segments. */
+void timeRecognition(benchmark::State& state, const Recognizer& rec, const model::WireFrame& scene)
+{
+	RecognitionResult r;
+	for (auto _ : state) benchmark::DoNotOptimize(r = rec.recognize(scene));
+	state.counters["found"] = r.found;
+	state.counters["levels_skipped"] = r.levels_skipped;
+	state.counters["segments"] = static_cast<double>(scene.lines.size() + scene.conics.size());
+}
+
+/** Times PPF3DDetector::match (scene step 1/10, distance 0.05) on @p points. */
+void timePpf(benchmark::State& state, cv::ppf_match_3d::PPF3DDetector& ppf, const cv::Mat& points)
+{
+	for (auto _ : state)
+	{
+		std::vector<cv::ppf_match_3d::Pose3DPtr> results;
+		ppf.match(points, results, 1.0 / 10.0, 0.05);
+		benchmark::DoNotOptimize(results);
+	}
+	state.counters["points"] = points.rows;
+}
+
 /** The absent model in the rendered, reconstructed scene: with (1) and without (0) skips. */
 void BM_RecogAbsentRendered(benchmark::State& state)
 {
 	auto& f = rendered();
-	const auto& rec = state.range(0) ? *f.skip : *f.full;
-	RecognitionResult r;
-	for (auto _ : state) benchmark::DoNotOptimize(r = rec.recognize(f.scene.scene));
-	state.counters["found"] = r.found;
-	state.counters["levels_skipped"] = r.levels_skipped;
-	state.counters["segments"] =
-	    static_cast<double>(f.scene.scene.lines.size() + f.scene.scene.conics.size());
+	timeRecognition(state, state.range(0) ? *f.skip : *f.full, f.scene.scene);
 }
 BENCHMARK(BM_RecogAbsentRendered)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_PpfAbsentRendered(benchmark::State& state)
 {
-	auto& f = rendered();
-	for (auto _ : state)
-	{
-		std::vector<cv::ppf_match_3d::Pose3DPtr> results;
-		f.ppf->match(f.ppf_scene, results, 1.0 / 10.0, 0.05);
-		benchmark::DoNotOptimize(results);
-	}
-	state.counters["points"] = f.ppf_scene.rows;
+	timePpf(state, *rendered().ppf, rendered().ppf_scene);
 }
 BENCHMARK(BM_PpfAbsentRendered)->Unit(benchmark::kMillisecond);
 
 void BM_RecogOneModel(benchmark::State& state)
 {
-	auto& f = fixture();
-	for (auto _ : state) benchmark::DoNotOptimize(f.recognizers[kTarget]->recognize(f.scene.scene));
-	state.counters["segments"] =
-	    static_cast<double>(f.scene.scene.lines.size() + f.scene.scene.conics.size());
+	timeRecognition(state, *fixture().recognizers[kTarget], fixture().scene.scene);
 }
 BENCHMARK(BM_RecogOneModel)->Unit(benchmark::kMillisecond);
 
@@ -165,11 +171,7 @@ BENCHMARK(BM_RecogDatabase10)->Unit(benchmark::kMillisecond);
 void BM_RecogAbsentModel(benchmark::State& state)
 {
 	auto& f = fixture();
-	const auto& rec = state.range(0) ? *f.absent_skip : *f.absent_full;
-	RecognitionResult r;
-	for (auto _ : state) benchmark::DoNotOptimize(r = rec.recognize(f.absent_scene));
-	state.counters["found"] = r.found;
-	state.counters["levels_skipped"] = r.levels_skipped;
+	timeRecognition(state, state.range(0) ? *f.absent_skip : *f.absent_full, f.absent_scene);
 }
 BENCHMARK(BM_RecogAbsentModel)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
@@ -183,14 +185,7 @@ BENCHMARK(BM_RecogModelTables)->Unit(benchmark::kMillisecond);
 
 void BM_PpfMatchOneModel(benchmark::State& state)
 {
-	auto& f = fixture();
-	for (auto _ : state)
-	{
-		std::vector<cv::ppf_match_3d::Pose3DPtr> results;
-		f.ppf->match(f.ppf_scene, results, 1.0 / 10.0, 0.05);
-		benchmark::DoNotOptimize(results);
-	}
-	state.counters["points"] = f.ppf_scene.rows;
+	timePpf(state, *fixture().ppf, fixture().ppf_scene);
 }
 BENCHMARK(BM_PpfMatchOneModel)->Unit(benchmark::kMillisecond);
 
@@ -249,10 +244,11 @@ int main(int argc, char** argv)
 	const double abs0 = get("BM_RecogAbsentModel/0"), abs1 = get("BM_RecogAbsentModel/1");
 	const double rend0 = get("BM_RecogAbsentRendered/0"), rend1 = get("BM_RecogAbsentRendered/1"),
 	             rppf = get("BM_PpfAbsentRendered");
-	std::printf("absent model (CPU time): synthetic scene %.2f ms without skips, %.2f ms with; "
-	            "rendered scene %.2f ms without, %.2f ms with, PPF %.2f ms; ratio MROLR (with "
-	            "skips) / PPF on the rendered scene = %.3f\n",
-	            abs0, abs1, rend0, rend1, rppf, rppf > 0 ? rend1 / rppf : 0.0);
+	std::printf(
+	    "absent model (CPU time): synthetic scene %.2f ms without skips, %.2f ms with; "
+	    "rendered scene %.2f ms without, %.2f ms with, PPF %.2f ms; ratio MROLR (with "
+	    "skips) / PPF on the rendered scene = %.3f\n",
+	    abs0, abs1, rend0, rend1, rppf, rppf > 0 ? rend1 / rppf : 0.0);
 	std::printf(
 	    "summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
 	    "time ratio MROLR/PPF = %.3f\n",

@@ -3,9 +3,11 @@
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/util/Cli.h>
+#include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -87,8 +89,8 @@ TEST(rendered_eval, absent_models_are_not_found)
 	std::vector<EvalScene> scenes;
 	for (int k = 0; k < 3; ++k) scenes.push_back(gen->make(k));
 	std::vector<EvalCase> cases;
-	for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",
-	                         "hole_punch", "large_cup", "stapler"})
+	for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package", "hole_punch",
+	                         "large_cup", "stapler"})
 	{
 		const auto m = mrolr::model::loadWireFrame(
 		    mrolr::util::requireProjectFile(std::string("datasets/objects/") + name + ".wf"));
@@ -134,4 +136,24 @@ TEST(rendered_eval, evaluate_with_a_scene_is_a_usage_error)
 	             mrolr::util::UsageError);
 	EXPECT_THROW(app.initialize({"mrolr-recognize", "--evaluate", "/tmp/x", "--eval-scenes", "-3"}),
 	             mrolr::util::UsageError);
+}
+
+// [evaluation] keys are checked: a malformed or out-of-range value names the key.
+TEST(rendered_eval, bad_evaluation_keys_name_the_key)
+{
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.write("evaluation", "scenes", "zero");
+	EvaluationOptions o;
+	try
+	{
+		o.loadFromConfigFile(cfg, "evaluation");
+		FAIL() << "no error";
+	}
+	catch (const mrolr::util::ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("scenes"), std::string::npos);
+	}
+	mrpt::config::CConfigFileMemory cfg2;
+	cfg2.write("evaluation", "max_view_distance_m", "0.5");  // below min_view_distance_m
+	EXPECT_THROW(o.loadFromConfigFile(cfg2, "evaluation"), mrolr::util::ConfigError);
 }

@@ -126,9 +126,11 @@ double strengthOf(const ModelTable& model, const std::vector<FeatureMatch>& ms)
 OrientedScene orientScene(const std::vector<Feature>& scene, double min_len_mm)
 {
 	OrientedScene s;
-	for (const auto& f : scene)
+	for (size_t i = 0; i < scene.size(); ++i)
 	{
+		const Feature& f = scene[i];
 		if (f.len_mm < min_len_mm) continue;
+		s.source.push_back(i);
 		s.features.push_back(f);
 		s.oriented.push_back(f);
 		s.oriented.push_back(f.flipped());

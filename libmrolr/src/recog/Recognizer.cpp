@@ -6,9 +6,9 @@
 #include <mrolr/recog/Verification.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <memory>
-#include <chrono>
 #include <stdexcept>
 
 namespace mrolr::recog
@@ -103,14 +103,16 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	centroid_O_ /= static_cast<double>(table_.features().size());
 }
 
-RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene,
-                                               size_t level) const
+RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
+                                               FocusBounds* bounds) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
 	best.model = table_.name();
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-	const auto hyps = hypothesesAt(table_, os, opts_, p, focusFilter(os, level));
+	FocusBounds own;
+	const auto hyps =
+	    hypothesesAt(table_, os, opts_, p, focusFilter(scene, os, level, bounds ? *bounds : own));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	VerificationResult bestV;
@@ -140,6 +142,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 	best.model = table_.name();
 	size_t last = opts_.levels.size();
 	int skipped = 0;
+	FocusBounds bounds;  // shared by the levels: computed for the coarsest tolerances
 	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
@@ -148,7 +151,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = recognizeAtLevel(scene, l);
+		RecognitionResult r = recognizeAtLevel(scene, l, &bounds);
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
@@ -169,21 +172,28 @@ double Recognizer::supportBound_mm(const std::vector<Feature>& scene) const
 	return SupportBound(table_, beta, theta).supportBound_mm(scene);
 }
 
-FocusFilter Recognizer::focusFilter(const OrientedScene& os, size_t level) const
+FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
+                                    size_t level, FocusBounds& bounds) const
 {
 	if (!opts_.skip_hopeless_levels) return {};
-	const LevelParams& p = opts_.levels[level];
-	auto bound = std::make_shared<SupportBound>(table_, verifyBeta_mm(p, opts_),
-	                                            verifyTheta_rad(p, opts_));
-	auto memo = std::make_shared<std::map<std::pair<size_t, size_t>, bool>>();
-	const double need_mm = p.verify_min_score * modelLength_mm(level);
-	return [bound, memo, need_mm, &os, beta = p.position_error_mm](size_t f, size_t s)
+	if (!bounds.bound)
 	{
-		const auto [it, fresh] = memo->try_emplace({f, s}, true);
+		double beta = 0, theta = 0;
+		for (const auto& p : opts_.levels)
+			beta = std::max(beta, verifyBeta_mm(p, opts_)),
+			theta = std::max(theta, verifyTheta_rad(p, opts_)),
+			bounds.match_beta_mm = std::max(bounds.match_beta_mm, p.position_error_mm);
+		bounds.bound = std::make_shared<SupportBound>(table_, beta, theta);
+	}
+	const double need_mm = opts_.levels[level].verify_min_score * modelLength_mm(level);
+	return [&bounds, &scene, &os, need_mm](size_t f, size_t s)
+	{
+		const size_t src = os.source[s];
+		const auto [it, fresh] = bounds.mm.try_emplace({f, src}, 0.0);
 		if (fresh)
 			it->second =
-			    bound->focusSupportBound_mm(os.features, f, os.features[s], beta) >= need_mm;
-		return it->second;
+			    bounds.bound->focusSupportBound_mm(scene, f, scene[src], bounds.match_beta_mm);
+		return it->second >= need_mm;
 	};
 }
 

@@ -1,8 +1,6 @@
 #include <mrolr/recog/SupportBound.h>
 
 #include <algorithm>
-#include <array>
-#include <unordered_set>
 #include <cmath>
 
 namespace mrolr::recog
@@ -15,7 +13,8 @@ double lengthInBall(const Feature& s, const Eigen::Vector3d& c, double r)
 	const Eigen::Vector3d w = s.p1 - c;
 	const double b = w.dot(s.u), disc = b * b - (w.squaredNorm() - r * r);
 	if (disc <= 0) return 0;
-	const double t1 = std::max(0.0, -b - std::sqrt(disc)), t2 = std::min(s.len_mm, -b + std::sqrt(disc));
+	const double t1 = std::max(0.0, -b - std::sqrt(disc)),
+	             t2 = std::min(s.len_mm, -b + std::sqrt(disc));
 	return std::max(0.0, t2 - t1);
 }
 
@@ -33,38 +32,16 @@ bool nearlyCoincident(const Feature& a, const Feature& b, double beta, double co
 	return a.isLine() ? lineLineDistance(a, b) <= 2 * beta : (a.m - b.m).norm() <= 2 * beta;
 }
 
-using Key = std::array<long, 3>;
-
-struct KeyHash
+/** Samples every h along the lines (endpoints included) and the conic centres. */
+std::vector<Eigen::Vector3d> samples(const std::vector<Feature>& scene, double h)
 {
-	size_t operator()(const Key& k) const
-	{
-		return std::hash<long>()(k[0] * 73856093L ^ k[1] * 19349663L ^ k[2] * 83492791L);
-	}
-};
-
-/** Points of a grid of spacing g near the scene: every point within rho of a scene feature is
- * within g·√3/2 of one of them. */
-std::vector<Eigen::Vector3d> gridCentres(const std::vector<Feature>& scene, double rho, double g)
-{
-	std::unordered_set<Key, KeyHash> keys;
-	const long n = static_cast<long>(std::ceil(rho / g)) + 2;
-	auto addAround = [&](const Eigen::Vector3d& p)
-	{
-		const Eigen::Vector3d q = p / g;
-		const Key c = {std::lround(q.x()), std::lround(q.y()), std::lround(q.z())};
-		for (long i = -n; i <= n; ++i)
-			for (long j = -n; j <= n; ++j)
-				for (long k = -n; k <= n; ++k) keys.insert({c[0] + i, c[1] + j, c[2] + k});
-	};
+	std::vector<Eigen::Vector3d> out;
 	for (const auto& s : scene)
 	{
-		const int m = s.isLine() ? static_cast<int>(std::ceil(s.len_mm / g)) : 0;
+		const int m = s.isLine() ? static_cast<int>(std::ceil(s.len_mm / h)) : 0;
 		for (int i = 0; i <= m; ++i)
-			addAround(s.isLine() ? Eigen::Vector3d(s.p1 + (s.len_mm * i / m) * s.u) : s.m);
+			out.push_back(s.isLine() ? Eigen::Vector3d(s.p1 + (s.len_mm * i / m) * s.u) : s.m);
 	}
-	std::vector<Eigen::Vector3d> out;
-	for (const auto& k : keys) out.push_back(g * Eigen::Vector3d(k[0], k[1], k[2]));
 	return out;
 }
 }  // namespace
@@ -76,9 +53,9 @@ SupportBound::SupportBound(const ModelTable& model, double beta_mm, double theta
 	centroid_ /= static_cast<double>(std::max<size_t>(1, model.features().size()));
 	for (const auto& f : model.features())
 	{
-		radius_mm_ = std::max(radius_mm_, f.isLine() ? std::max((f.p1 - centroid_).norm(),
-		                                                        (f.p2 - centroid_).norm())
-		                                             : (f.m - centroid_).norm() + f.a_mm);
+		radius_mm_ = std::max(
+		    radius_mm_, f.isLine() ? std::max((f.p1 - centroid_).norm(), (f.p2 - centroid_).norm())
+		                           : (f.m - centroid_).norm() + f.a_mm);
 		(f.isLine() ? lines_mm_ : conics_mm_) += f.len_mm;
 		double& longest = f.isLine() ? longest_line_mm_ : longest_conic_mm_;
 		longest = std::max(longest, f.len_mm);
@@ -116,9 +93,9 @@ double SupportBound::inBall_mm(const std::vector<Feature>& scene, const Eigen::V
 
 double SupportBound::supportBound_mm(const std::vector<Feature>& scene) const
 {
-	const double rho = radius_mm_ + beta_mm_, g = rho / 2, r = rho + g * std::sqrt(3.0) / 2;
+	const double rho = radius_mm_ + beta_mm_, h = rho / 2, r = 2 * rho + h / 2;
 	double best = 0;
-	for (const auto& p : gridCentres(scene, rho, g))
+	for (const auto& p : samples(scene, h))
 	{
 		best = std::max(best, inBall_mm(scene, p, r));
 		if (best >= lines_mm_ + conics_mm_) break;

@@ -37,9 +37,9 @@ struct EvaluationOptions
 	int scenes = 12;                           ///< rendered scenes in the set
 	unsigned seed = 1;                         ///< scene k uses seed + k
 	int min_objects = 3, max_objects = 4;      ///< objects per scene
-	double cluster_radius_m = 0.2;       ///< objects within this of the fixated table point
-	double object_gap_m = 0.02;          ///< clearance between object footprints
-	double min_view_distance_m = 0.65;   ///< horizontal distance C0 → fixated point
+	double cluster_radius_m = 0.2;             ///< objects within this of the fixated table point
+	double object_gap_m = 0.02;                ///< clearance between object footprints
+	double min_view_distance_m = 0.65;         ///< horizontal distance C0 → fixated point
 	double max_view_distance_m = 0.95;
 	double fixation_height_m = 0.05;     ///< fixated point above the table top
 	double min_visible_fraction = 0.5;   ///< cases counted in the recognition rate
@@ -54,7 +54,7 @@ struct EvaluationOptions
 /** One object in a rendered scene. */
 struct EvalObject
 {
-	std::string model;                                           ///< object definition name
+	std::string model;                                         ///< object definition name
 	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();  ///< truth, mm, thesis L axes
 	double visible_fraction = 0;  ///< visible length of its true edges / their total length
 };
@@ -63,9 +63,9 @@ struct EvalObject
 struct EvalScene
 {
 	int index = 0;
-	cv::Mat left, right;                ///< 8-bit grey, as rendered
-	stereo::StereoCalibration calib;    ///< the head's ideal cameras at the scene's angles
-	model::WireFrame scene;             ///< reconstructed, frame left_camera (mm)
+	cv::Mat left, right;              ///< 8-bit grey, as rendered
+	stereo::StereoCalibration calib;  ///< the head's ideal cameras at the scene's angles
+	model::WireFrame scene;           ///< reconstructed, frame left_camera (mm)
 	std::vector<EvalObject> objects;
 	double render_s = 0, reconstruct_s = 0;
 	const EvalObject* find(const std::string& model) const;
@@ -101,6 +101,7 @@ class EvalSceneGenerator
 
 	sim::StereoFrame renderWith(const world::World& w, const Eigen::Isometry3d& T_C0inW,
 	                            const geometry::HeadAngles& a, uint64_t frame);
+	void reconstruct(EvalScene& s) const;  ///< s.scene from s.left, s.right, s.calib
 	EvalObject truthOf(const sim::ObjectView& ov, const stereo::StereoCalibration& calib,
 	                   const mrpt::math::CMatrixFloat& depth_m) const;
 };
@@ -126,7 +127,7 @@ struct EvalCase
 	std::string model;
 	bool present = false;
 	double visible_fraction = 0;
-	bool found = false, correct = false;  ///< correct: found and within the error limits
+	bool found = false, correct = false;         ///< correct: found and within the error limits
 	double rot_err_deg = -1, trans_err_mm = -1;  ///< -1 unless present and found
 	double score = 0, truth_score = 0;  ///< verified score found / at the true pose (present)
 	int level = 0;
@@ -151,8 +152,8 @@ struct EvalSummary
 	int wrong_poses = 0;      ///< present, found at a pose beyond the error limits
 	double rate = 0;          ///< recognised / rate_cases
 	double median_rot_err_deg = -1, median_trans_err_mm = -1;  ///< over correct rate cases
-	double median_ms = 0, max_ms = 0;       ///< per model and scene, all cases
-	double median_absent_ms = 0;            ///< absent cases
+	double median_ms = 0, max_ms = 0;                          ///< per model and scene, all cases
+	double median_absent_ms = 0;                               ///< absent cases
 };
 
 EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOptions& opts);

@@ -22,9 +22,10 @@
  *                     [--eval-seed S] [--config config/recognition.ini] [--json]
  *
  * renders the fixed evaluation set of [evaluation] (RecognitionEvaluation.h), reconstructs every
- * scene, searches every model (default every .wf of datasets/objects; --truth-models: the simulator's
- * exact wire-frames) and compares with the truth; writes DIR/scene_KK/{left,right,overlay}.png,
- * scene.wf, calib.ini, truth.json, and DIR/cases.json, DIR/summary.json. */
+ * scene, searches every model (default every .wf of datasets/objects; --truth-models: the
+ * simulator's exact wire-frames) and compares with the truth; writes
+ * DIR/scene_KK/{left,right,overlay}.png, scene.wf, calib.ini, truth.json, and DIR/cases.json,
+ * DIR/summary.json. */
 
 #include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrame.h>
@@ -53,8 +54,8 @@ class RecognizeApp
 	std::string config_path = "config/recognition.ini";
 	std::string scene_config_path = "config/model.ini";
 	std::string overlay_png, scene3d_path;
-	std::string demo_dir;  ///< --make-demo
-	std::string evaluate_dir;  ///< --evaluate
+	std::string demo_dir;       ///< --make-demo
+	std::string evaluate_dir;   ///< --evaluate
 	bool truth_models = false;  ///< --truth-models
 	int eval_scenes = 0;        ///< --eval-scenes (0: [evaluation] scenes)
 	long eval_seed = -1;        ///< --eval-seed (-1: [evaluation] seed)

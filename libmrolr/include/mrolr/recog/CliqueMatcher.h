@@ -18,6 +18,7 @@ struct OrientedScene
 {
 	std::vector<Feature> features;  ///< the kept scene features
 	std::vector<Feature> oriented;  ///< 2 × features.size()
+	std::vector<size_t> source;     ///< index in the given scene of each kept feature
 };
 
 /** Keeps the features of @p scene at least @p min_len_mm long and adds their flipped copies. */

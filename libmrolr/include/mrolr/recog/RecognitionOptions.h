@@ -44,7 +44,7 @@ struct RecognitionOptions
 	double verify_position_error_mm = 3;
 	double verify_rotation_deg = 3;
 	int verify_clusters = 20;  ///< heaviest clusters of clique transforms verified per level
-	int confirm_levels = 1;  ///< levels run after the first recognition; the best answer is kept
+	int confirm_levels = 1;    ///< levels run after the first recognition; the best answer is kept
 	/** Skip a level whose SupportBound (no pose can reach its verify_min_score) says it cannot
 	 * verify: the answer is unchanged, an absent model costs less. Optional key, default true. */
 	bool skip_hopeless_levels = true;

@@ -8,9 +8,12 @@
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
+#include <mrolr/recog/SupportBound.h>
 
 #include <Eigen/Geometry>
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,9 +51,19 @@ class Recognizer
 	RecognitionResult recognize(const model::WireFrame& scene) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene) const;
 
+	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), computed for the
+	 * coarsest tolerances of all levels so that every level can use them. */
+	struct FocusBounds
+	{
+		std::shared_ptr<SupportBound> bound;
+		double match_beta_mm = 0;
+		std::map<std::pair<size_t, size_t>, double> mm;
+	};
+
 	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's
-	 * verify_min_score. */
-	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level) const;
+	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene. */
+	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
+	                                   FocusBounds* bounds = nullptr) const;
 
 	/** Thesis 6.4: scene models of a pan sweep in order; the first scene where the object is
 	 * recognised ends the search. */
@@ -68,7 +81,8 @@ class Recognizer
  private:
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels). */
-	FocusFilter focusFilter(const OrientedScene& os, size_t level) const;
+	FocusFilter focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
+	                        size_t level, FocusBounds& bounds) const;
 
 	ModelTable table_;
 	RecognitionOptions opts_;

@@ -6,8 +6,9 @@
  * Why it bounds: with the model carried into the scene by any T, a scene line supports a model line
  * only with the part of it that lies within beta of the model segment, hence within
  * rho = R + beta of the carried model centroid (R: the model's radius about its centroid); a
- * scene conic only when its centre is within rho. That ball lies inside a ball of radius
- * rho + g·√3/2 about a point of a grid of spacing g = rho/2 laid around the scene features. One
+ * scene conic only when its centre is within rho. That ball touches a scene feature, so it lies
+ * inside the ball of radius 2 rho + h/2 about one of the features' samples (every h = rho/2 along
+ * the lines, and the conic centres). One
  * scene line gives at most the longest model line's length to one model feature, and supports at
  * most K model features at once, K being the largest number of model features of one kind that
  * pass within 2 beta of each other with directions within 2 theta. So the supported length is at
@@ -34,8 +35,8 @@ class SupportBound
 	 * clique's focus match does (within @p match_beta_mm of it, s0 a fragment of it): the carried
 	 * centroid is then within |c − m_focus| (+ half the focus line's length) + 2 match_beta of
 	 * s0's midpoint, so one ball about s0 holds all the support. */
-	double focusSupportBound_mm(const std::vector<Feature>& scene, size_t focus,
-	                            const Feature& s0, double match_beta_mm) const;
+	double focusSupportBound_mm(const std::vector<Feature>& scene, size_t focus, const Feature& s0,
+	                            double match_beta_mm) const;
 
 	double radius_mm() const { return radius_mm_; }  ///< R: model radius about its centroid
 

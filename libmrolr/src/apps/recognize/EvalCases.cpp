@@ -38,7 +38,8 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	c.result = r;
 	c.found = r.found, c.score = r.score, c.level = r.level, c.ms = r.ms;
 	c.levels_skipped = r.levels_skipped;
-	c.score_bound = rec.supportBound_mm(scene) / rec.modelLength_mm(rec.options().levels.size() - 1);
+	c.score_bound =
+	    rec.supportBound_mm(scene) / rec.modelLength_mm(rec.options().levels.size() - 1);
 	const EvalObject* truth = s.find(c.model);
 	c.present = truth != nullptr;
 	if (!truth) return c;

@@ -37,7 +37,8 @@ bool conicIn(const model::Conic3& c, const model::WireFrame& wf)
 	{
 		if ((m.centre - c.centre).norm() > kSymmetryTol_mm) continue;
 		if (std::abs(std::abs(m.normal.dot(c.normal)) - 1) > 1e-6) continue;
-		if (std::abs(m.a - c.a) > kSymmetryTol_mm || std::abs(m.b - c.b) > kSymmetryTol_mm) continue;
+		if (std::abs(m.a - c.a) > kSymmetryTol_mm || std::abs(m.b - c.b) > kSymmetryTol_mm)
+			continue;
 		if (circle || std::abs(m.major.dot(c.major)) > 1 - 1e-6) return true;
 	}
 	return false;

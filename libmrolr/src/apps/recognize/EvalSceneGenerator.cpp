@@ -127,7 +127,8 @@ EvalSceneGenerator::EvalSceneGenerator(const EvaluationOptions& opts,
       renderer_(std::make_unique<sim::StereoRenderer>(head, render))
 {
 	if (!lab_.findTable(opts_.table))
-		throw std::runtime_error(lab_.path + ": no table '" + opts_.table + "' ([evaluation] table)");
+		throw std::runtime_error(lab_.path + ": no table '" + opts_.table +
+		                         "' ([evaluation] table)");
 	for (const auto& [name, shape] : shapes_)
 	{
 		truth_[name] = sim::objectWireFrame(shape);
@@ -165,14 +166,19 @@ EvalScene EvalSceneGenerator::make(int k)
 	const sim::StereoFrame f = renderWith(w, v.T_C0inW, v.angles, static_cast<uint64_t>(k));
 	s.left = greyOf(f.left), s.right = greyOf(f.right), s.render_s = f.render_s;
 	s.calib = stereo::calibrationFromHead(head_, v.angles);
-	const auto t0 = std::chrono::steady_clock::now();
-	s.scene = model::sceneToWireFrame(stereo::reconstructScene(s.left, s.right, s.calib, scene_opts_));
-	s.scene.name = "scene_" + std::to_string(k);
-	s.reconstruct_s =
-	    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	reconstruct(s);
 	for (const auto& ov : sim::objectViews(w, head_, v.T_C0inW, v.angles))
 		s.objects.push_back(truthOf(ov, s.calib, f.depth_left_m));
 	return s;
+}
+
+void EvalSceneGenerator::reconstruct(EvalScene& s) const
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	s.scene =
+	    model::sceneToWireFrame(stereo::reconstructScene(s.left, s.right, s.calib, scene_opts_));
+	s.scene.name = "scene_" + std::to_string(s.index);
+	s.reconstruct_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 sim::StereoFrame EvalSceneGenerator::renderWith(const world::World& w,
@@ -188,8 +194,7 @@ sim::StereoFrame EvalSceneGenerator::renderWith(const world::World& w,
 		vis->setPose(sim::objectPoseMrpt(w, o));
 		scene->insert(vis);
 	}
-	sim::StereoFrame f = renderer_->render(*scene, T_C0inW, a, frame);
-	return f;
+	return renderer_->render(*scene, T_C0inW, a, frame);
 }
 
 EvalObject EvalSceneGenerator::truthOf(const sim::ObjectView& ov,
@@ -200,8 +205,8 @@ EvalObject EvalSceneGenerator::truthOf(const sim::ObjectView& ov,
 	o.model = ov.model;
 	o.T_OinL = ov.T_OinL;
 	o.T_OinL.translation() *= 1000;
-	o.visible_fraction = visibleFraction(truthWireFrame(ov.model), o.T_OinL, calib.K_left,
-	                                     depth_m, opts_.visibility_depth_tol_mm);
+	o.visible_fraction = visibleFraction(truthWireFrame(ov.model), o.T_OinL, calib.K_left, depth_m,
+	                                     opts_.visibility_depth_tol_mm);
 	return o;
 }
 

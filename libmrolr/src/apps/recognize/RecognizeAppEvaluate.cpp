@@ -23,12 +23,18 @@ namespace
 {
 nlohmann::json caseJson(const EvalCase& c)
 {
-	return {{"scene", c.scene},          {"model", c.model},
-	        {"present", c.present},      {"visible_fraction", c.visible_fraction},
-	        {"found", c.found},          {"correct", c.correct},
-	        {"rot_err_deg", c.rot_err_deg}, {"trans_err_mm", c.trans_err_mm},
-	        {"score", c.score},          {"truth_score", c.truth_score},
-	        {"level", c.level},          {"levels_skipped", c.levels_skipped},
+	return {{"scene", c.scene},
+	        {"model", c.model},
+	        {"present", c.present},
+	        {"visible_fraction", c.visible_fraction},
+	        {"found", c.found},
+	        {"correct", c.correct},
+	        {"rot_err_deg", c.rot_err_deg},
+	        {"trans_err_mm", c.trans_err_mm},
+	        {"score", c.score},
+	        {"truth_score", c.truth_score},
+	        {"level", c.level},
+	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
 	        {"ms", c.ms}};
 }
@@ -71,18 +77,21 @@ std::vector<std::string> defaultModelPaths()
 
 nlohmann::json summaryJson(const EvalSummary& s)
 {
-	return {{"rate_cases", s.rate_cases},          {"recognised", s.recognised},
-	        {"rate", s.rate},                      {"absent_cases", s.absent_cases},
-	        {"false_positives", s.false_positives}, {"wrong_poses", s.wrong_poses},
+	return {{"rate_cases", s.rate_cases},
+	        {"recognised", s.recognised},
+	        {"rate", s.rate},
+	        {"absent_cases", s.absent_cases},
+	        {"false_positives", s.false_positives},
+	        {"wrong_poses", s.wrong_poses},
 	        {"median_rot_err_deg", s.median_rot_err_deg},
 	        {"median_trans_err_mm", s.median_trans_err_mm},
-	        {"median_ms", s.median_ms},            {"max_ms", s.max_ms},
+	        {"median_ms", s.median_ms},
+	        {"max_ms", s.max_ms},
 	        {"median_absent_ms", s.median_absent_ms}};
 }
 }  // namespace
 
-std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(
-    const EvaluationOptions& eo) const
+std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(const EvaluationOptions& eo) const
 {
 	const auto lab = world::World::load(util::requireProjectFile(eo.world));
 	sim::RenderOptions ro;
@@ -164,10 +173,10 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 	const auto& s = eval_summary;
 	out << "recognised " << s.recognised << "/" << s.rate_cases << " (" << 100 * s.rate
 	    << " %) with visible fraction >= " << eval_options.min_visible_fraction
-	    << "; false positives " << s.false_positives << "/" << s.absent_cases
-	    << "; wrong poses " << s.wrong_poses << "; median errors " << s.median_rot_err_deg
-	    << " deg, " << s.median_trans_err_mm << " mm; per model median " << s.median_ms
-	    << " ms (absent " << s.median_absent_ms << " ms, max " << s.max_ms << " ms)\n";
+	    << "; false positives " << s.false_positives << "/" << s.absent_cases << "; wrong poses "
+	    << s.wrong_poses << "; median errors " << s.median_rot_err_deg << " deg, "
+	    << s.median_trans_err_mm << " mm; per model median " << s.median_ms << " ms (absent "
+	    << s.median_absent_ms << " ms, max " << s.max_ms << " ms)\n";
 }
 
 }  // namespace mrolr::apps

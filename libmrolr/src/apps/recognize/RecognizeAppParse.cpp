@@ -52,8 +52,7 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	                       "--evaluate with the simulator's exact wire-frames as the models", cmd);
 	TCLAP::ValueArg<int> nscenes("", "eval-scenes", "--evaluate: number of scenes", false, 0, "N",
 	                             cmd);
-	TCLAP::ValueArg<long> seed("", "eval-seed", "--evaluate: seed of scene 0", false, -1, "S",
-	                           cmd);
+	TCLAP::ValueArg<long> seed("", "eval-seed", "--evaluate: seed of scene 0", false, -1, "S", cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;

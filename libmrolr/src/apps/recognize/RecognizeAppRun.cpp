@@ -47,7 +47,8 @@ void RecognizeApp::loadScenes()
 	if (!scene_paths.empty()) return;
 	const auto calib = stereo::loadStereoCalibration(calib_path);
 	stereo::SceneOptions so;
-	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)), "scene");
+	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)),
+	                      "scene");
 	const auto s = stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
 	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so);
 	scenes.push_back(model::sceneToWireFrame(s));
@@ -63,7 +64,8 @@ int RecognizeApp::run(std::ostream& out)
 		return util::kExitOk;
 	}
 	if (!evaluate_dir.empty()) return runEvaluation(out);
-	options.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(config_path)), "recognition");
+	options.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(config_path)),
+	                           "recognition");
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();
 	for (const auto& m : models)
