@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 #include <sstream>
 
 using namespace mrolr;
@@ -21,9 +24,12 @@ const std::string kLab = std::string(MROLR_SOURCE_DIR) + "/maps/lab/world.ini";
 
 std::string simTurntable(const std::string& object)
 {
-	// One folder per test: ctest runs the tests of this file in parallel processes.
+	// One folder per test and process: ctest runs the tests of this file in parallel processes,
+	// and other build trees may run the same tests at the same time.
 	const std::string test = testing::UnitTest::GetInstance()->current_test_info()->name();
-	const auto dir = (fs::path(testing::TempDir()) / ("mrolr_tt_" + object + "_" + test)).string();
+	const auto dir = (fs::path(testing::TempDir()) /
+	                  ("mrolr_tt_" + object + "_" + test + "_" + std::to_string(::getpid())))
+	                     .string();
 	fs::remove_all(dir);
 	apps::SimApp sim;
 	sim.initialize({"mrolr-sim", "--world", kLab, "--turntable", object, "--out", dir, "--json"});

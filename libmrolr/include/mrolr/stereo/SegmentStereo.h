@@ -6,9 +6,9 @@
  * x_R(y) along the rows the two segments share, so the 3D ends are where the segments' epipolar
  * extents overlap. A piece near the scanline direction has no usable d(y) (both planes contain
  * the baseline); its two ends are corners where it meets matched segments, whose disparities it
- * takes, and the right image must show a segment along the predicted position. An elliptical arc of
- * the left image takes its disparity plane from the point matches inside it and is back-projected
- * whole (its parts along the scanlines included). */
+ * takes, and the right image must show a segment along the predicted position. An elliptical arc
+ * of the left image is reconstructed from the samples of its ellipse pair (EllipseStereo.h), or
+ * else from the point matches inside it, and back-projected whole (Fit3's conicFromEllipse). */
 
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/Fit3.h>
