@@ -15,12 +15,18 @@ inline std::string configDir()
 	return std::string(MROLR_SOURCE_DIR) + "/config";
 }
 
-inline mrpt::config::CConfigFileMemory defaultMissionConfig()
+/** A mission file of config/ in memory (keys can be overridden without touching the file). */
+inline mrpt::config::CConfigFileMemory missionConfig(const std::string& file)
 {
-	std::ifstream f(configDir() + "/mission_sim.ini");
+	std::ifstream f(configDir() + "/" + file);
 	std::stringstream s;
 	s << f.rdbuf();
 	return mrpt::config::CConfigFileMemory(s.str());
+}
+
+inline mrpt::config::CConfigFileMemory defaultMissionConfig()
+{
+	return missionConfig("mission_sim.ini");
 }
 
 inline MissionOptions optionsFrom(const mrpt::config::CConfigFileBase& cfg)

@@ -17,10 +17,7 @@ namespace
 {
 mrpt::config::CConfigFileMemory obstacleConfig()
 {
-	std::ifstream f(mission::test::configDir() + "/mission_obstacle.ini");
-	std::stringstream s;
-	s << f.rdbuf();
-	return mrpt::config::CConfigFileMemory(s.str());
+	return mission::test::missionConfig("mission_obstacle.ini");
 }
 
 ObstacleOptions obstacleOptions()
@@ -108,8 +105,10 @@ TEST(ObstacleDetour, NothingInTheCorridorOrBeyondItsLengthIsNoObstacle)
 	EXPECT_FALSE(mission::obstacleAhead(boxPoints(0.6, 1.0, 0.5, 0.9, 0.6), 1.0, o).blocked);
 	EXPECT_FALSE(mission::obstacleAhead(boxPoints(-0.2, 0.2, 1.2, 1.6, 0.6), 1.0, o).blocked);
 	EXPECT_FALSE(mission::obstacleAhead({}, 1.0, o).blocked);
-	// a box within range but beyond the leg's goal (corridor shortened to 0.7 m) is no obstacle
-	EXPECT_FALSE(mission::obstacleAhead(boxPoints(-0.2, 0.2, 0.8, 1.2, 0.6), 0.7, o).blocked);
+	// a box within range but beyond the robot standing at the leg's goal 0.3 m ahead is no
+	// obstacle; one within the robot's radius of the goal is
+	EXPECT_FALSE(mission::obstacleAhead(boxPoints(-0.2, 0.2, 0.8, 1.2, 0.6), 0.3, o, true).blocked);
+	EXPECT_TRUE(mission::obstacleAhead(boxPoints(-0.2, 0.2, 0.6, 1.0, 0.6), 0.3, o, true).blocked);
 }
 
 TEST(ObstacleDetour, BaseToWorldTurnsWithTheHeading)

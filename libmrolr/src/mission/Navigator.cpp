@@ -47,25 +47,26 @@ void Navigator::driveTo(const NamedPose& goal)
 	const auto via =
 	    detourAroundTables(o_.world, {now.x(), now.y()}, {goal.xv_zxphi.x(), goal.xv_zxphi.y()},
 	                       o_.navigation.table_clearance_m);
-	driveThrough(via, {now.x(), now.y()});
-	driveStraightTo(goal.xv_zxphi);
+	driveThrough(via, {now.x(), now.y()}, o_.navigation.max_correction_legs);
+	driveStraightTo(goal.xv_zxphi, o_.navigation.max_correction_legs);
 	timeline_.note("reached " + goal.name);
 }
 
-void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from)
+void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from,
+                             int correction_legs)
 {
 	for (const auto& v : via)
 	{
 		const double heading = std::atan2(v.y() - from.y(), v.x() - from.x());
-		driveStraightTo({v.x(), v.y(), heading});
+		driveStraightTo({v.x(), v.y(), heading}, correction_legs);
 		from = v;
 	}
 }
 
-void Navigator::driveStraightTo(const Eigen::Vector3d& goal)
+void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs)
 {
 	int detours = 0;
-	for (int leg = 0; leg <= o_.navigation.max_correction_legs; ++leg)
+	for (int leg = 0; leg <= correction_legs; ++leg)
 	{
 		const Eigen::Vector3d e = estimate();
 		const bool close =
@@ -92,7 +93,7 @@ bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eig
 			{
 				++detours, ++detour_depth_;
 				const Eigen::Vector3d e = estimate();
-				driveThrough(via, e.head<2>());
+				driveThrough(via, e.head<2>(), o_.navigation.max_correction_legs);
 				--detour_depth_;
 				return false;
 			}

@@ -62,11 +62,12 @@ std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
 	{
 		const auto ahead = look(0);
 		const double to_goal = (goal.head<2>() - xv.head<2>()).norm();
-		const double length = std::min(o_.range_m, to_goal + o_.robot_front_m);
+		// the area the robot sweeps up to the goal, or up to range_m when the goal is further
+		const double length = std::min(o_.range_m, to_goal);
 		ObstacleEvent e;
 		e.time_s = timeline_.simulatedSeconds();
 		e.xv_estimate = xv;
-		e.sighting = obstacleAhead(ahead, length, o_);
+		e.sighting = obstacleAhead(ahead, length, o_, to_goal <= o_.range_m);
 		if (!e.sighting.blocked) return {};
 		lookAround(e, ahead);
 		for (const auto& v : e.detour.via_zx) e.via_zx_inW.push_back(baseToWorld(xv, v));

@@ -74,13 +74,18 @@ double farEdge(const ObstacleSighting& s, const std::vector<Eigen::Vector3d>& p,
 }  // namespace
 
 ObstacleSighting obstacleAhead(const std::vector<Eigen::Vector3d>& p_inB, double corridor_length_m,
-                               const ObstacleOptions& o)
+                               const ObstacleOptions& o, bool goal_at_end)
 {
+	const double w = o.corridor_half_width_m;
+	auto inCorridor = [&](const Eigen::Vector3d& q)
+	{
+		if (q.z() > 0 && q.z() <= corridor_length_m && std::abs(q.x()) <= w) return true;
+		return goal_at_end && std::hypot(q.z() - corridor_length_m, q.x()) <= w;
+	};
 	ObstacleSighting s;
 	std::vector<double> z, x;
 	for (const auto& q : p_inB)
-		if (std::abs(q.x()) <= o.corridor_half_width_m && q.z() > 0 && q.z() <= corridor_length_m)
-			z.push_back(q.z()), x.push_back(q.x());
+		if (inCorridor(q)) z.push_back(q.z()), x.push_back(q.x());
 	s.points = static_cast<int>(z.size());
 	s.blocked = s.points >= o.min_points;
 	if (!s.blocked) return s;

@@ -28,13 +28,11 @@ void readRobot(const CConfigFileBase& c, const std::string& s, ObstacleOptions& 
 	using util::readDouble;
 	o.range_m = readDouble(c, s, "range_m");
 	o.corridor_half_width_m = readDouble(c, s, "corridor_half_width_m");
-	o.robot_front_m = readDouble(c, s, "robot_front_m");
 	o.clearance_m = readDouble(c, s, "clearance_m");
 	o.assumed_depth_m = readDouble(c, s, "assumed_depth_m");
 	o.max_detours_per_leg = static_cast<int>(util::readInt(c, s, "max_detours_per_leg"));
 	util::requireInRange(c, s, "range_m", o.range_m, 0.1, 5);
 	util::requireInRange(c, s, "corridor_half_width_m", o.corridor_half_width_m, 0.05, 2);
-	util::requireInRange(c, s, "robot_front_m", o.robot_front_m, 0, 2);
 	util::requireInRange(c, s, "clearance_m", o.clearance_m, 0, 2);
 	util::requireInRange(c, s, "assumed_depth_m", o.assumed_depth_m, 0, 5);
 	util::requireInRange(c, s, "max_detours_per_leg", o.max_detours_per_leg, 0, 20);
@@ -81,8 +79,7 @@ void ObstacleOptions::dump(std::ostream& out) const
 	out << "tilt_deg = " << tilt_deg << "\nfixation_distance_m = " << fixation_distance_m
 	    << "\nside_pan_deg = " << side_pan_deg << "\nlook_time_s = " << look_time_s
 	    << "\nrange_m = " << range_m << "\ncorridor_half_width_m = " << corridor_half_width_m
-	    << "\nrobot_front_m = " << robot_front_m << "\nclearance_m = " << clearance_m
-	    << "\nassumed_depth_m = " << assumed_depth_m
+	    << "\nclearance_m = " << clearance_m << "\nassumed_depth_m = " << assumed_depth_m
 	    << "\nmax_detours_per_leg = " << max_detours_per_leg << "\nmin_height_m = " << min_height_m
 	    << "\nmax_height_m = " << max_height_m << "\nmin_points = " << min_points
 	    << "\nmin_bin_points = " << min_bin_points << "\nimage_scale = " << image_scale

@@ -57,8 +57,11 @@ class Navigator
 	int measurements = 0, rejected = 0;
 
  private:
-	void driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from);
-	void driveStraightTo(const Eigen::Vector3d& goal);
+	/** Drives through @p via (z, x in W), arriving at each in the direction of travel. */
+	void driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from,
+	                  int correction_legs);
+	/** Rotate–translate–rotate to @p goal, repeated up to @p correction_legs times. */
+	void driveStraightTo(const Eigen::Vector3d& goal, int correction_legs);
 	/** Executes @p plan; false when a detour was driven instead of the rest of it. */
 	bool executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
 	                int& detours);

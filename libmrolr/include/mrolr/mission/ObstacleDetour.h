@@ -23,11 +23,13 @@ struct ObstacleSighting
 	double right_m = 0;    ///< … and smallest B x (right)
 };
 
-/** Points of the corridor |x| ≤ corridor_half_width_m, 0 < z ≤ @p corridor_length_m. When there are
+/** Points of the corridor |x| ≤ corridor_half_width_m, 0 < z ≤ @p corridor_length_m, and with
+ * @p goal_at_end also those within corridor_half_width_m of its end (the robot, a disc of that
+ * radius, standing at the goal: the area it sweeps). When there are
  * at least min_points, the sighting is blocked and its extent is measured: the occupied 5 cm
  * lateral bins (min_bin_points) next to the corridor's, between near_m and near_m + range_m. */
 ObstacleSighting obstacleAhead(const std::vector<Eigen::Vector3d>& p_inB, double corridor_length_m,
-                               const ObstacleOptions& o);
+                               const ObstacleOptions& o, bool goal_at_end = false);
 
 /** Side to pass on and the waypoints to insert (B, (z, x) metres). */
 struct Detour

@@ -17,8 +17,9 @@ struct ObstacleOptions
 	double fixation_distance_m = 1.5;  ///< verge on the point this far along the gaze
 	double side_pan_deg = 35;          ///< pan of the looks left (+) and right (−) for free space
 	double range_m = 1.0;              ///< an obstacle nearer than this ahead is avoided (5.8.1.2)
-	double corridor_half_width_m = 0.40;  ///< half the robot's width plus a margin
-	double robot_front_m = 0.35;          ///< from the base centre to the robot's front
+	/** Half the robot's width plus a margin: the robot is a disc of this radius sweeping the
+	 * corridor to its goal. */
+	double corridor_half_width_m = 0.40;
 	double clearance_m = 0.10;     ///< kept between the corridor and the obstacle when passing it
 	double min_height_m = 0.06;    ///< points higher above the floor belong to obstacles …
 	double max_height_m = 1.2;     ///< … up to this height (the robot passes under higher ones)
