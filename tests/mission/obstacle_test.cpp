@@ -178,3 +178,16 @@ TEST(ObstacleFromStereo, NoObstacleWhenTheBoxIsBeyondRangeOrOffTheRoute)
 	EXPECT_EQ(a.report().looks, 2);
 	EXPECT_TRUE(a.report().events.empty());
 }
+
+TEST(ObstacleFromStereo, TheMapsTablesAreNoObstacles)
+{
+	RenderedLab lab;
+	// past the search station, turned towards the table's front edge and legs (as a robot that
+	// overshot W5 does when it corrects)
+	lab.xv = {0.78, 0.11, 1.19};
+	const Eigen::Vector3d goal(lab.xv.x() + std::cos(1.19), lab.xv.y() + std::sin(1.19), 1.19);
+	auto a = lab.avoidance();
+	EXPECT_FALSE(a.check(lab.xv, goal).empty());  // unknown: a table is in the way
+	a.setKnownTables(lab.o.world.tables, lab.o.obstacle.table_margin_m);
+	EXPECT_TRUE(a.check(lab.xv, goal).empty());  // from the map: known, not avoided
+}

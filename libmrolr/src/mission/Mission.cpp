@@ -143,6 +143,7 @@ void Mission::Impl::attachObstacleMode()
 	};
 	obstacles = std::make_unique<ObstacleAvoidance>(geometry::BiSightHead(o.bisight), o.obstacle,
 	                                                look, r.timeline);
+	obstacles->setKnownTables(o.world.tables, o.obstacle.table_margin_m);
 	nav->max_detours_per_leg = o.obstacle.max_detours_per_leg;
 	nav->before_translation = [this](const Eigen::Vector3d& e, const Eigen::Vector3d& goal)
 	{ return obstacles->check(e, goal); };

@@ -2,6 +2,7 @@
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/ObstacleAvoidance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -34,9 +35,14 @@ std::vector<Eigen::Vector3d> ObstacleAvoidance::look(double pan_deg)
 	++report_.looks;
 	timeline_.advance(o_.look_time_s);
 	ComputeTimer t(timeline_);
-	return stereo_.pointsAboveFloor(images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
-	                                images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
-	                                images.angles);
+	auto p = stereo_.pointsAboveFloor(images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
+	                                  images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
+	                                  images.angles);
+	if (!tables_.empty())
+		p.erase(std::remove_if(p.begin(), p.end(),
+		                       [this](const Eigen::Vector3d& q) { return onKnownTable(q); }),
+		        p.end());
+	return p;
 }
 
 void ObstacleAvoidance::lookAround(ObstacleEvent& e, std::vector<Eigen::Vector3d> points)
@@ -54,10 +60,33 @@ void ObstacleAvoidance::lookAround(ObstacleEvent& e, std::vector<Eigen::Vector3d
 	e.detour = planDetour(e.sighting, points, o_);
 }
 
+void ObstacleAvoidance::setKnownTables(const std::vector<world::Table>& tables, double margin_m)
+{
+	tables_ = tables;
+	table_margin_m_ = margin_m;
+}
+
+bool ObstacleAvoidance::onKnownTable(const Eigen::Vector3d& p_inB) const
+{
+	const Eigen::Vector2d p = baseToWorld(xv_, {p_inB.z(), p_inB.x()});
+	for (const auto& t : tables_)
+	{
+		const double yaw = t.yaw_deg * M_PI / 180.0;
+		const Eigen::Vector2d d = p - Eigen::Vector2d(t.z_m, t.x_m);
+		const double along_z = d.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw)));
+		const double along_x = d.dot(Eigen::Vector2d(-std::sin(yaw), std::cos(yaw)));
+		if (std::abs(along_z) <= t.depth_m / 2 + table_margin_m_ &&
+		    std::abs(along_x) <= t.length_m / 2 + table_margin_m_)
+			return true;
+	}
+	return false;
+}
+
 std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
                                                       const Eigen::Vector3d& goal)
 {
 	++report_.checks;
+	xv_ = xv;
 	try
 	{
 		const auto ahead = look(0);

@@ -30,11 +30,13 @@ void readRobot(const CConfigFileBase& c, const std::string& s, ObstacleOptions& 
 	o.corridor_half_width_m = readDouble(c, s, "corridor_half_width_m");
 	o.clearance_m = readDouble(c, s, "clearance_m");
 	o.assumed_depth_m = readDouble(c, s, "assumed_depth_m");
+	o.table_margin_m = readDouble(c, s, "table_margin_m");
 	o.max_detours_per_leg = static_cast<int>(util::readInt(c, s, "max_detours_per_leg"));
 	util::requireInRange(c, s, "range_m", o.range_m, 0.1, 5);
 	util::requireInRange(c, s, "corridor_half_width_m", o.corridor_half_width_m, 0.05, 2);
 	util::requireInRange(c, s, "clearance_m", o.clearance_m, 0, 2);
 	util::requireInRange(c, s, "assumed_depth_m", o.assumed_depth_m, 0, 5);
+	util::requireInRange(c, s, "table_margin_m", o.table_margin_m, 0, 2);
 	util::requireInRange(c, s, "max_detours_per_leg", o.max_detours_per_leg, 0, 20);
 }
 
@@ -80,6 +82,7 @@ void ObstacleOptions::dump(std::ostream& out) const
 	    << "\nside_pan_deg = " << side_pan_deg << "\nlook_time_s = " << look_time_s
 	    << "\nrange_m = " << range_m << "\ncorridor_half_width_m = " << corridor_half_width_m
 	    << "\nclearance_m = " << clearance_m << "\nassumed_depth_m = " << assumed_depth_m
+	    << "\ntable_margin_m = " << table_margin_m
 	    << "\nmax_detours_per_leg = " << max_detours_per_leg << "\nmin_height_m = " << min_height_m
 	    << "\nmax_height_m = " << max_height_m << "\nmin_points = " << min_points
 	    << "\nmin_bin_points = " << min_bin_points << "\nimage_scale = " << image_scale

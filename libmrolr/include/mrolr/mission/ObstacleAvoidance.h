@@ -9,6 +9,7 @@
 #include <mrolr/mission/ObstacleDetour.h>
 #include <mrolr/mission/ObstacleStereo.h>
 #include <mrolr/mission/Timeline.h>
+#include <mrolr/world/Scenery.h>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -56,6 +57,10 @@ class ObstacleAvoidance
 
 	const ObstacleReport& report() const { return report_; }
 
+	/** Tables of the map (W): points within @p margin_m of their footprints are no obstacles (the
+	 * route planning goes round them already, TableDetour.cpp). Placed from the estimate. */
+	void setKnownTables(const std::vector<world::Table>& tables, double margin_m);
+
  private:
 	std::vector<Eigen::Vector3d> look(double pan_deg);
 	/** The side looks: e.sighting measured again with them, and e.detour. */
@@ -68,6 +73,10 @@ class ObstacleAvoidance
 	Timeline& timeline_;
 	ObstacleStereo stereo_;
 	ObstacleReport report_;
+	std::vector<world::Table> tables_;
+	double table_margin_m_ = 0;
+	Eigen::Vector3d xv_ = Eigen::Vector3d::Zero();  ///< estimate at the current check
+	bool onKnownTable(const Eigen::Vector3d& p_inB) const;
 };
 
 /** report.json's "obstacle" block: looks, checks, failed looks and every obstacle seen (B, m) with

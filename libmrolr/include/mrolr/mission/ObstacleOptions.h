@@ -33,6 +33,7 @@ struct ObstacleOptions
 	double min_texture_grey = 6;  ///< blocks with a smaller grey-level deviation are not used
 	double max_disparity_gradient = 1.0;  ///< px per px (at image_scale): steeper is a depth edge
 	double look_time_s = 2.0;             ///< simulated time of one look (tilt, grab, matching)
+	double table_margin_m = 0.2;          ///< the map's tables grown by this are no obstacles
 	int max_detours_per_leg = 3;  ///< detours inserted on one leg before it is driven as planned
 
 	/** Reads every key of @p section (all required); errors name file, section and key. */
