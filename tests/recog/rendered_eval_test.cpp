@@ -76,10 +76,10 @@ TEST(rendered_eval, scenes_are_deterministic_and_show_their_objects)
 	EXPECT_GT(a.objects[0].visible_fraction + a.objects[1].visible_fraction, 0.5);
 }
 
-// The fixed small set: every lab model searched in every scene; no model absent from a scene is
-// reported found (issue 7: "says not found for absent objects"); the accuracy figures are recorded
-// (docs/recog.md gives those of the full 12-scene set).
-TEST(rendered_eval, absent_models_are_not_found)
+// The shipped 12-scene set: every lab model searched in every scene (with the scene's up
+// direction); no model absent from a scene is reported found (issue 7: "says not found for absent
+// objects"), and the measured rate does not fall (docs/recog.md).
+TEST(rendered_eval, shipped_set_has_no_false_positive_and_keeps_its_rate)
 {
 	const auto opts = shippedOptions();
 	RecognizeApp app;
@@ -87,7 +87,7 @@ TEST(rendered_eval, absent_models_are_not_found)
 	    mrpt::config::CConfigFile(mrolr::util::requireProjectFile(app.config_path)), "recognition");
 	const auto gen = makeGenerator();
 	std::vector<EvalScene> scenes;
-	for (int k = 0; k < 3; ++k) scenes.push_back(gen->make(k));
+	for (int k = 0; k < opts.scenes; ++k) scenes.push_back(gen->make(k));
 	std::vector<EvalCase> cases;
 	for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package", "hole_punch",
 	                         "large_cup", "stapler"})
@@ -101,6 +101,9 @@ TEST(rendered_eval, absent_models_are_not_found)
 	const EvalSummary s = summarize(cases, opts);
 	EXPECT_GT(s.absent_cases, 0);
 	EXPECT_EQ(s.false_positives, 0);
+	// Regression guard, not the issue's target (95 %): measured 3 of 28 with the upright prior and
+	// the expected-visible score (1 of 28 before them); docs/recog.md "Rendered table scenes".
+	EXPECT_GE(s.recognised, 3);
 	RecordProperty("rate_cases", s.rate_cases);
 	RecordProperty("recognised", s.recognised);
 	RecordProperty("wrong_poses", s.wrong_poses);

@@ -118,6 +118,12 @@ void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	verify_rotation_deg = util::readDouble(cfg, section, "verify_rotation_deg");
 	util::requireInRange(cfg, section, "verify_rotation_deg", verify_rotation_deg, 0.01, 90);
 	skip_hopeless_levels = util::readBool(cfg, section, "skip_hopeless_levels", true);
+	verify_visible_only = util::readBool(cfg, section, "verify_visible_only", true);
+	visible_min_score_factor = util::readDouble(cfg, section, "visible_min_score_factor", 1.2);
+	util::requireInRange(cfg, section, "visible_min_score_factor", visible_min_score_factor, 0.1,
+	                     10);
+	upright_max_tilt_deg = util::readDouble(cfg, section, "upright_max_tilt_deg", 20.0);
+	util::requireInRange(cfg, section, "upright_max_tilt_deg", upright_max_tilt_deg, 0, 180);
 }
 
 void RecognitionOptions::dump(std::ostream& out) const
@@ -134,7 +140,10 @@ void RecognitionOptions::dump(std::ostream& out) const
 	    << "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
 	    << "\nverify_position_error_mm = " << verify_position_error_mm
 	    << "\nverify_rotation_deg = " << verify_rotation_deg
-	    << "\nskip_hopeless_levels = " << (skip_hopeless_levels ? "true" : "false") << "\n";
+	    << "\nskip_hopeless_levels = " << (skip_hopeless_levels ? "true" : "false")
+	    << "\nverify_visible_only = " << (verify_visible_only ? "true" : "false")
+	    << "\nvisible_min_score_factor = " << visible_min_score_factor
+	    << "\nupright_max_tilt_deg = " << upright_max_tilt_deg << "\n";
 }
 
 }  // namespace mrolr::recog

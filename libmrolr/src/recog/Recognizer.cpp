@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -61,20 +62,19 @@ double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
 	return std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
 }
 
-std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(const ModelTable& model,
-                                                                 const std::vector<Feature>& scene,
-                                                                 Eigen::Isometry3d T,
-                                                                 const LevelParams& p,
-                                                                 const RecognitionOptions& o)
+std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
+    const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
+    const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ)
 {
 	const double beta = verifyBeta_mm(p, o), theta = verifyTheta_rad(p, o);
 	const int iterations = o.refine_iterations;
-	VerificationResult v = verifyPose(model, scene, T, beta, theta, p.length_threshold_mm);
+	VerificationResult v = verifyPose(model, scene, T, beta, theta, p.length_threshold_mm, occ);
 	for (int i = 0; i < iterations; ++i)
 	{
 		const auto T2 = faugerasHebertPose(v.correspondences);
 		if (!T2) break;
-		VerificationResult v2 = verifyPose(model, scene, *T2, beta, theta, p.length_threshold_mm);
+		VerificationResult v2 =
+		    verifyPose(model, scene, *T2, beta, theta, p.length_threshold_mm, occ);
 		if (rankOf(v2) < rankOf(v)) break;
 		T = *T2;
 		v = std::move(v2);
@@ -85,6 +85,23 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(const ModelTabl
 double rankOf(const RecognitionResult& r)
 {
 	return r.score + 0.05 * r.coverage;
+}
+
+/** Smallest expected-visible share of the model's length over cameras 300 mm from the centroid
+ * in 200 directions, less 20 % for nearer or in-between viewpoints. */
+double minVisibleShare(const std::vector<Feature>& fs, const SelfOcclusion& occ,
+                       const Eigen::Vector3d& centroid_O)
+{
+	double total = 0, least = 1;
+	for (const auto& f : fs) total += f.len_mm;
+	for (const auto& d : sphereDirections(200))
+	{
+		const auto seen = occ.visibleFractions(centroid_O + 300 * d);
+		double vis = 0;
+		for (size_t k = 0; k < fs.size(); ++k) vis += seen[k] * fs[k].len_mm;
+		least = std::min(least, total > 0 ? vis / total : 1.0);
+	}
+	return 0.8 * least;
 }
 
 double confidenceOf(double score, size_t level, size_t levels)
@@ -101,25 +118,54 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	centroid_O_.setZero();
 	for (const auto& f : table_.features()) centroid_O_ += f.m;
 	centroid_O_ /= static_cast<double>(table_.features().size());
+	if (!opts_.verify_visible_only) return;
+	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
+	min_visible_share_ = minVisibleShare(table_.features(), *occlusion_, centroid_O_);
+}
+
+const SelfOcclusion* Recognizer::occlusionFor(const Eigen::Vector3d* up_S) const
+{
+	return up_S && opts_.upright_max_tilt_deg < 180 ? occlusion_.get() : nullptr;
+}
+
+double Recognizer::visibleShare(const Eigen::Vector3d* up_S) const
+{
+	return occlusionFor(up_S) ? min_visible_share_ : 1.0;
+}
+
+double Recognizer::minScore(size_t level, const Eigen::Vector3d* up_S) const
+{
+	const double f = occlusionFor(up_S) ? opts_.visible_min_score_factor : 1.0;
+	return std::min(1.0, f * opts_.levels.at(level).verify_min_score);
+}
+
+bool Recognizer::upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const
+{
+	if (!up_S || opts_.upright_max_tilt_deg >= 180) return true;
+	const double c = (T_OinS.linear() * Eigen::Vector3d::UnitZ()).dot(up_S->normalized());
+	return c >= std::cos(opts_.upright_max_tilt_deg * M_PI / 180);
 }
 
 RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
-                                               FocusBounds* bounds) const
+                                               FocusBounds* bounds,
+                                               const Eigen::Vector3d* up_S) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
 	best.model = table_.name();
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	FocusBounds own;
-	const auto hyps =
-	    hypothesesAt(table_, os, opts_, p, focusFilter(scene, os, level, bounds ? *bounds : own));
+	const auto hyps = hypothesesAt(table_, os, opts_, p,
+	                               focusFilter(scene, os, level, bounds ? *bounds : own, up_S));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	VerificationResult bestV;
 	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
 	{
-		const auto [T, v] = verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_);
-		if (rankOf(v) <= rankOf(bestV)) continue;
+		if (!upright(clusters[k].mean, up_S)) continue;
+		const auto [T, v] =
+		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
+		if (rankOf(v) <= rankOf(bestV) || !upright(T, up_S)) continue;
 		bestV = v;
 		best.T_OinS = T;
 		best.score = v.score;
@@ -129,13 +175,14 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 		best.spread_rot_deg = clusters[k].spread_rot_deg;
 		best.spread_trans_mm = clusters[k].spread_trans_mm;
 	}
-	best.found = best.score >= p.verify_min_score;
+	best.found = best.score >= minScore(level, up_S);
 	best.level = best.found ? static_cast<int>(level) + 1 : 0;
 	best.confidence = best.found ? confidenceOf(best.score, level, opts_.levels.size()) : 0.0;
 	return best;
 }
 
-RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
+RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
+                                        const Eigen::Vector3d* up_S) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	RecognitionResult best;
@@ -146,12 +193,12 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene) const
 	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
-		if (bound_mm < opts_.levels[l].verify_min_score * modelLength_mm(l))
+		if (bound_mm < minScore(l, up_S) * visibleShare(up_S) * modelLength_mm(l))
 		{
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = recognizeAtLevel(scene, l, &bounds);
+		RecognitionResult r = recognizeAtLevel(scene, l, &bounds, up_S);
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
@@ -173,7 +220,8 @@ double Recognizer::supportBound_mm(const std::vector<Feature>& scene) const
 }
 
 FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
-                                    size_t level, FocusBounds& bounds) const
+                                    size_t level, FocusBounds& bounds,
+                                    const Eigen::Vector3d* up_S) const
 {
 	if (!opts_.skip_hopeless_levels) return {};
 	if (!bounds.bound)
@@ -185,7 +233,7 @@ FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const Ori
 			bounds.match_beta_mm = std::max(bounds.match_beta_mm, p.position_error_mm);
 		bounds.bound = std::make_shared<SupportBound>(table_, beta, theta);
 	}
-	const double need_mm = opts_.levels[level].verify_min_score * modelLength_mm(level);
+	const double need_mm = minScore(level, up_S) * visibleShare(up_S) * modelLength_mm(level);
 	return [&bounds, &scene, &os, need_mm](size_t f, size_t s)
 	{
 		const size_t src = os.source[s];
@@ -205,9 +253,10 @@ double Recognizer::modelLength_mm(size_t level) const
 	return len;
 }
 
-RecognitionResult Recognizer::recognize(const model::WireFrame& scene) const
+RecognitionResult Recognizer::recognize(const model::WireFrame& scene,
+                                        const Eigen::Vector3d* up_S) const
 {
-	return recognize(featuresOf(scene));
+	return recognize(featuresOf(scene), up_S);
 }
 
 RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& scenes) const

@@ -56,15 +56,19 @@ Support supportOf(const Feature& mf, const std::vector<Feature>& scene, double b
 
 VerificationResult verifyPose(const ModelTable& model, const std::vector<Feature>& scene,
                               const Eigen::Isometry3d& T_OinS, double beta_mm, double theta_rad,
-                              double min_len_mm)
+                              double min_len_mm, const SelfOcclusion* occlusion)
 {
 	VerificationResult r;
 	const double cosT = std::cos(theta_rad);
 	double total_mm = 0, touched_mm = 0;
-	for (const auto& f : model.features())
+	const std::vector<double> seen =
+	    occlusion ? occlusion->visibleFractions(T_OinS.inverse().translation())
+	              : std::vector<double>(model.features().size(), 1.0);
+	for (size_t i = 0; i < model.features().size(); ++i)
 	{
+		const Feature& f = model.features()[i];
 		if (f.len_mm < min_len_mm) continue;
-		total_mm += f.len_mm;
+		total_mm += seen[i] * f.len_mm;
 		const Support sup = supportOf(f.transformed(T_OinS), scene, beta_mm, cosT);
 		if (!sup.best) continue;
 		r.supported_mm += sup.overlap_mm;
@@ -73,7 +77,8 @@ VerificationResult verifyPose(const ModelTable& model, const std::vector<Feature
 		const bool agree = (T_OinS.linear() * f.u).dot(sup.best->u) >= 0;
 		r.correspondences.push_back({f, agree ? *sup.best : sup.best->flipped()});
 	}
-	r.score = total_mm > 0 ? r.supported_mm / total_mm : 0;
+	r.considered_mm = total_mm;
+	r.score = total_mm > 0 ? std::min(1.0, r.supported_mm / total_mm) : 0;
 	r.coverage = touched_mm > 0 ? r.supported_mm / touched_mm : 0;
 	return r;
 }

@@ -66,6 +66,7 @@ struct EvalScene
 	cv::Mat left, right;              ///< 8-bit grey, as rendered
 	stereo::StereoCalibration calib;  ///< the head's ideal cameras at the scene's angles
 	model::WireFrame scene;           ///< reconstructed, frame left_camera (mm)
+	Eigen::Vector3d up_L = Eigen::Vector3d::UnitY();  ///< the room's up in L (from the head angles)
 	std::vector<EvalObject> objects;
 	double render_s = 0, reconstruct_s = 0;
 	const EvalObject* find(const std::string& model) const;

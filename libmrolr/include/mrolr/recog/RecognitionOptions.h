@@ -48,6 +48,20 @@ struct RecognitionOptions
 	/** Skip a level whose SupportBound (no pose can reach its verify_min_score) says it cannot
 	 * verify: the answer is unchanged, an absent model costs less. Optional key, default true. */
 	bool skip_hopeless_levels = true;
+	/** When the scene's up direction is given (Recognizer::recognize's up_S), a pose whose model
+	 * +z axis (the object frame's up, thesis 6.1 / docs/model.md) is more than this far from it is
+	 * rejected: objects stand on the table. 180 turns the prior off. Optional key, default 20.
+	 * (deg) */
+	double upright_max_tilt_deg = 20;
+	/** With an up direction and the upright prior: score a pose by the support of the model
+	 * length expected visible from the camera (the scene frame's origin), each feature weighted by
+	 * its fraction not hidden by the object's own solid (SelfOcclusion.h), instead of the whole
+	 * model's length. Without a prior it is not used: a pose turned over whose expected-visible
+	 * part happens to be supported could score 1. Optional key, default true. */
+	bool verify_visible_only = true;
+	/** verify_min_score is multiplied by this when the visible-only score is used (such scores
+	 * are about twice the whole-model ones). Optional key, default 1.2. */
+	double visible_min_score_factor = 1.2;
 
 	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
 	static RecognitionOptions defaults();

@@ -8,6 +8,7 @@
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
+#include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/recog/SupportBound.h>
 
 #include <Eigen/Geometry>
@@ -47,9 +48,13 @@ class Recognizer
 	/** Runs the levels fine to coarse on one scene; after the first level that recognises, runs
 	 * options().confirm_levels more and keeps the best-ranked answer (a coarser level can find the
 	 * clique that a nearly symmetric object's true pose needs). With skip_hopeless_levels, levels
-	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run. */
-	RecognitionResult recognize(const model::WireFrame& scene) const;
-	RecognitionResult recognize(const std::vector<Feature>& scene) const;
+	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run.
+	 * @p up_S: the scene's up direction (unit, scene frame) when known; poses tilted more than
+	 * options().upright_max_tilt_deg from it are rejected. */
+	RecognitionResult recognize(const model::WireFrame& scene,
+	                            const Eigen::Vector3d* up_S = nullptr) const;
+	RecognitionResult recognize(const std::vector<Feature>& scene,
+	                            const Eigen::Vector3d* up_S = nullptr) const;
 
 	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), computed for the
 	 * coarsest tolerances of all levels so that every level can use them. */
@@ -61,13 +66,19 @@ class Recognizer
 	};
 
 	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's
-	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene. */
+	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene; @p up_S
+	 * as in recognize(). */
 	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
-	                                   FocusBounds* bounds = nullptr) const;
+	                                   FocusBounds* bounds = nullptr,
+	                                   const Eigen::Vector3d* up_S = nullptr) const;
 
 	/** Thesis 6.4: scene models of a pan sweep in order; the first scene where the object is
 	 * recognised ends the search. */
 	RecognitionResult searchSweep(const std::vector<model::WireFrame>& scenes) const;
+
+	/** True when no up direction is given or the pose's model +z is within
+	 * options().upright_max_tilt_deg of @p up_S. */
+	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;
 
 	/** SupportBound of the scene for the most permissive verification tolerances of all levels
 	 * (mm of model length). */
@@ -76,17 +87,33 @@ class Recognizer
 	double modelLength_mm(size_t level) const;
 
 	const ModelTable& table() const { return table_; }
+	/** The self-occlusion verification uses with the scene up direction @p up_S: the model's
+	 * when options().verify_visible_only and an upright prior is set, else nullptr. */
+	const SelfOcclusion* occlusion(const Eigen::Vector3d* up_S) const { return occlusionFor(up_S); }
 	const RecognitionOptions& options() const { return opts_; }
 
  private:
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels). */
 	FocusFilter focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
-	                        size_t level, FocusBounds& bounds) const;
+	                        size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S) const;
+	/** The self-occlusion verification uses: only with an up direction and an upright prior
+	 * (without them a pose turned over, whose expected-visible part happens to be supported, can
+	 * score 1). */
+	const SelfOcclusion* occlusionFor(const Eigen::Vector3d* up_S) const;
+	/** min_visible_share_ when occlusionFor(up_S), else 1. */
+	double visibleShare(const Eigen::Vector3d* up_S) const;
+	/** The score @p level needs: verify_min_score, times visible_min_score_factor when the
+	 * visible-only score is used. */
+	double minScore(size_t level, const Eigen::Vector3d* up_S) const;
 
 	ModelTable table_;
 	RecognitionOptions opts_;
 	Eigen::Vector3d centroid_O_;
+	std::shared_ptr<const SelfOcclusion> occlusion_;
+	/** Lower bound of the expected-visible share of the model length over viewpoints (1 without
+	 * occlusion): scales the support a level needs when skipping hopeless levels. */
+	double min_visible_share_ = 1.0;
 };
 
 }  // namespace mrolr::recog

@@ -5,6 +5,7 @@
 
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/PoseEstimation.h>
+#include <mrolr/recog/SelfOcclusion.h>
 
 #include <Eigen/Geometry>
 
@@ -15,9 +16,10 @@ namespace mrolr::recog
 struct VerificationResult
 {
 	double score = 0;  ///< supported length / length of the model features considered, [0, 1]
-	double supported_mm = 0;  ///< supported model length (mm)
-	double coverage = 0;      ///< supported length / length of the model features that have support
-	int matched = 0;          ///< model features with at least a quarter of their length supported
+	double considered_mm = 0;  ///< model length considered (all, or expected visible) (mm)
+	double supported_mm = 0;   ///< supported model length (mm)
+	double coverage = 0;  ///< supported length / length of the model features that have support
+	int matched = 0;      ///< model features with at least a quarter of their length supported
 	std::vector<Correspondence> correspondences;  ///< model feature (model frame) ↔ best support
 };
 
@@ -34,9 +36,12 @@ inline double rankOf(const VerificationResult& v)
  * its projection with the model segment (summed, at most the model length). A scene conic supports
  * a model conic with centre within beta, normal within theta and semi-axes within beta + 5 %; the
  * support is the smaller arc length. Model features shorter than @p min_len_mm (which the scene
- * could not show, having been filtered by the same threshold) count neither way. */
+ * could not show, having been filtered by the same threshold) count neither way. With
+ * @p occlusion (built on model.features(), camera at the scene frame's origin), each model feature
+ * counts in the score's denominator only by its fraction not hidden by the object itself, and the
+ * score is capped at 1. */
 VerificationResult verifyPose(const ModelTable& model, const std::vector<Feature>& scene,
                               const Eigen::Isometry3d& T_OinS, double beta_mm, double theta_rad,
-                              double min_len_mm = 0);
+                              double min_len_mm = 0, const SelfOcclusion* occlusion = nullptr);
 
 }  // namespace mrolr::recog

@@ -17,12 +17,12 @@ double median(std::vector<double> v)
 
 /** Score of the model at its true pose: how much of it the scene could support at best. */
 double truthScore(const recog::Recognizer& rec, const std::vector<recog::Feature>& scene,
-                  const Eigen::Isometry3d& T_OinL)
+                  const Eigen::Isometry3d& T_OinL, const Eigen::Vector3d& up_L)
 {
 	const auto& o = rec.options();
 	return recog::verifyPose(rec.table(), scene, T_OinL, o.verify_position_error_mm,
 	                         o.verify_rotation_deg * M_PI / 180,
-	                         o.levels.front().length_threshold_mm)
+	                         o.levels.front().length_threshold_mm, rec.occlusion(&up_L))
 	    .score;
 }
 }  // namespace
@@ -34,7 +34,7 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	c.scene = s.index;
 	c.model = rec.table().name();
 	const auto scene = recog::featuresOf(s.scene);
-	const recog::RecognitionResult r = rec.recognize(scene);
+	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L);
 	c.result = r;
 	c.found = r.found, c.score = r.score, c.level = r.level, c.ms = r.ms;
 	c.levels_skipped = r.levels_skipped;
@@ -44,7 +44,7 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	c.present = truth != nullptr;
 	if (!truth) return c;
 	c.visible_fraction = truth->visible_fraction;
-	c.truth_score = truthScore(rec, scene, truth->T_OinL);
+	c.truth_score = truthScore(rec, scene, truth->T_OinL, s.up_L);
 	if (!c.found) return c;
 	c.rot_err_deg = rotationErrorDeg(truth->T_OinL.linear(), r.T_OinS.linear(), symmetry_deg);
 	c.trans_err_mm = (truth->T_OinL.translation() - r.T_OinS.translation()).norm();

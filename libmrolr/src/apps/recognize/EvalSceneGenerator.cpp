@@ -166,6 +166,7 @@ EvalScene EvalSceneGenerator::make(int k)
 	const sim::StereoFrame f = renderWith(w, v.T_C0inW, v.angles, static_cast<uint64_t>(k));
 	s.left = greyOf(f.left), s.right = greyOf(f.right), s.render_s = f.render_s;
 	s.calib = stereo::calibrationFromHead(head_, v.angles);
+	s.up_L = head_.T_LinC0(v.angles).linear().transpose() * Eigen::Vector3d::UnitY();  // C0: y up
 	reconstruct(s);
 	for (const auto& ov : sim::objectViews(w, head_, v.T_C0inW, v.angles))
 		s.objects.push_back(truthOf(ov, s.calib, f.depth_left_m));

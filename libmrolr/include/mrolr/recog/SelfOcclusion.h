@@ -1,0 +1,47 @@
+#pragma once
+/** Self-occlusion of a wire-frame model seen from a camera (beyond the thesis, used by
+ * verification): from one viewpoint only the front of an object can be seen, so a pose is judged
+ * by the support of the model length that is expected visible, not of the whole model. The
+ * object's solid is approximated by a discrete-orientation polytope (k-DOP: the intersection of
+ * the half-spaces n·x <= max_i n·p_i over fixed directions n) that encloses the convex hull of
+ * points sampled on the model's features; a sample is hidden when the segment from the camera to
+ * it passes through that polytope shrunk by a margin. Model frame, millimetres. */
+
+#include <mrolr/recog/Feature.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace mrolr::recog
+{
+class SelfOcclusion
+{
+ public:
+	/** @p features_O model features (model frame, mm); @p margin_mm how far inside the enclosing
+	 * polytope a sight line must pass to hide a sample (covers the polytope's excess over the
+	 * hull and edges on the surface); @p directions number of polytope face directions. */
+	explicit SelfOcclusion(const std::vector<Feature>& features_O, double margin_mm = 3,
+	                       int directions = 100);
+
+	/** Fraction in [0, 1] of each feature's samples (same order as the constructor's features)
+	 * that a camera at @p c_O (model frame, mm) sees, judging by the object's own solid. */
+	std::vector<double> visibleFractions(const Eigen::Vector3d& c_O) const;
+
+	/** True when the segment from @p c_O to @p p_O crosses the shrunk polytope. */
+	bool hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const;
+
+ private:
+	std::vector<Eigen::Vector3d> normals_;
+	std::vector<double> offsets_;  ///< plane offsets, already shrunk by the margin
+	std::vector<std::vector<Eigen::Vector3d>> samples_;  ///< per feature
+};
+
+/** Points along a feature: a line's samples from end to end, a conic's around its rim (an ellipse
+ * as a circle of the mean semi-axis: the feature keeps no major-axis direction). */
+std::vector<Eigen::Vector3d> samplesOf(const Feature& f, int count);
+
+/** @p n nearly uniform unit directions (a Fibonacci sphere). */
+std::vector<Eigen::Vector3d> sphereDirections(int n);
+
+}  // namespace mrolr::recog
