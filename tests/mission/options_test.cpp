@@ -126,3 +126,16 @@ TEST(MissionOptions, MissingFileNamesTheKey)
 {
 	expectError("files", "arm_file", "no_such_arm.ini", "cannot open");
 }
+
+TEST(MissionOptions, SceneSourceIsSimulatedOrReconstructedWithItsSceneFile)
+{
+	EXPECT_EQ(test::optionsFrom(test::defaultMissionConfig()).search.scene_source, "simulated");
+	expectError("search", "scene_source", "guessed", "simulated, reconstructed");
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("search", "scene_source", "reconstructed");
+	EXPECT_NE(errorOf(cfg).find("[files] scene_file"), std::string::npos) << errorOf(cfg);
+	cfg.write("files", "scene_file", "model.ini");
+	const auto o = test::optionsFrom(cfg);
+	EXPECT_EQ(o.search.scene_source, "reconstructed");
+	EXPECT_GT(o.scene.max_depth_mm, o.scene.min_depth_mm);
+}

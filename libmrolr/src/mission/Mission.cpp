@@ -4,8 +4,10 @@
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionDevices.h>
 #include <mrolr/mission/ObstacleAvoidance.h>
+#include <mrolr/model/SceneModel.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SceneBuilder.h>
+#include <mrolr/stereo/HeadCalibration.h>
 #include <mrolr/world/ObjectShape.h>
 
 #include <chrono>
@@ -80,6 +82,7 @@ struct Mission::Impl
 	void lookAt(const geometry::HeadAngles& angles);
 	hw::StereoImages grabStereo();
 	void attachObstacleMode();
+	model::WireFrame reconstructedScene(const geometry::HeadAngles& angles);
 	void stopSafely(const std::string& why);
 	void runStages();
 	void loadTarget();
@@ -98,6 +101,9 @@ void Mission::Impl::loadTarget()
 	models = loadModels(o);
 	search = std::make_unique<ObjectSearch>(o, models.at(o.target), models);
 	search->on_view = [this](const geometry::HeadAngles& a) { lookAt(a); };
+	if (o.search.scene_source == "reconstructed")
+		search->scene_from_stereo = [this](const geometry::HeadAngles& a)
+		{ return reconstructedScene(a); };
 	r.timeline.note("target model " + o.target + ": " +
 	                std::to_string(models.at(o.target).lines.size()) + " lines, " +
 	                std::to_string(models.at(o.target).conics.size()) + " conics");
@@ -132,6 +138,18 @@ hw::StereoImages Mission::Impl::grabStereo()
 	r.timeline.addRender(
 	    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 	return images;
+}
+
+/** The scene of a view reconstructed from a new stereo pair (scene_source = reconstructed). */
+model::WireFrame Mission::Impl::reconstructedScene(const geometry::HeadAngles& angles)
+{
+	dev.head().moveTo(angles);
+	const auto images = grabStereo();
+	ComputeTimer t(r.timeline);
+	const auto calib = stereo::calibrationFromHead(geometry::BiSightHead(o.bisight), images.angles);
+	return model::sceneToWireFrame(stereo::reconstructScene(
+	    images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
+	    images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), calib, o.scene));
 }
 
 void Mission::Impl::attachObstacleMode()

@@ -178,6 +178,8 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 	o.sim_arm.loadFromConfigFile(cfg, "sim_arm");
 	o.navigation.loadFromConfigFile(cfg, "navigation");
 	o.search.loadFromConfigFile(cfg, "search");
+	if (o.search.scene_source == "reconstructed")
+		o.scene.loadFromConfigFile(openNamed(cfg, "files", "scene_file", base_dir), "scene");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
 	return o;
 }

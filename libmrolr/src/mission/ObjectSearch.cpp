@@ -93,7 +93,8 @@ SearchResult ObjectSearch::observe(const WorldObjects& objects, const Eigen::Iso
                                    const geometry::HeadAngles& angles, std::mt19937& rng,
                                    Timeline& timeline) const
 {
-	const auto scene = sceneOf(objects, T_C0inW, angles, rng);
+	const auto scene =
+	    scene_from_stereo ? scene_from_stereo(angles) : sceneOf(objects, T_C0inW, angles, rng);
 	SearchResult r;
 	r.angles = angles;
 	const auto t0 = std::chrono::steady_clock::now();

@@ -52,6 +52,10 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	hide_back_side = util::readBool(c, s, "hide_back_side", hide_back_side);
 	max_object_range_m = readDouble(c, s, "max_object_range_m");
 	render_stereo = util::readBool(c, s, "render_stereo", render_stereo);
+	if (util::hasKey(c, s, "scene_source")) scene_source = util::readString(c, s, "scene_source");
+	if (scene_source != "simulated" && scene_source != "reconstructed")
+		throw util::ConfigError(util::describeKey(c, s, "scene_source") + ": '" + scene_source +
+		                        "' is not one of simulated, reconstructed");
 	util::requireInRange(c, s, "pan_step_deg", pan_step_deg, 0.1, 90);
 	util::requireInRange(c, s, "pan_to_deg", pan_to_deg, pan_from_deg, 90);
 	util::requireInRange(c, s, "missing_fraction", missing_fraction, 0, 0.9);
@@ -67,7 +71,8 @@ void SearchOptions::dump(std::ostream& out) const
 	    << "\nfragment_probability = " << fragment_probability
 	    << "\nhide_back_side = " << (hide_back_side ? "true" : "false")
 	    << "\nmax_object_range_m = " << max_object_range_m
-	    << "\nrender_stereo = " << (render_stereo ? "true" : "false") << "\n";
+	    << "\nrender_stereo = " << (render_stereo ? "true" : "false")
+	    << "\nscene_source = " << scene_source << "\n";
 }
 
 void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

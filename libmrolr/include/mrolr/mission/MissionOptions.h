@@ -15,6 +15,7 @@
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
 #include <mrolr/slam/SlamOptions.h>
+#include <mrolr/stereo/SceneReconstruction.h>
 #include <mrolr/world/World.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -67,8 +68,12 @@ struct SearchOptions
 	double fragment_probability = 0.1;
 	bool hide_back_side = true;
 	double max_object_range_m = 2.0;  ///< objects further from C0 are not reconstructed
-	bool render_stereo =
-	    true;  ///< render each view's stereo pair into the rawlog (sim::StereoRenderer)
+	/** Render each view's stereo pair into the rawlog (sim::StereoRenderer). */
+	bool render_stereo = true;
+	/** Where a view's scene wire-frame comes from (optional key, default simulated): `simulated`
+	 * (exact object wire-frames, corrupted) or `reconstructed` (stereo::reconstructScene on the
+	 * view's rendered pair, options [scene] of `[files] scene_file`). */
+	std::string scene_source = "simulated";
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
@@ -120,6 +125,8 @@ struct MissionOptions
 	SearchOptions search;
 	RetrievalOptions retrieval;
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
+	/** [scene] of [files] scene_file, read for scene_source = reconstructed. */
+	stereo::SceneOptions scene;
 
 	/** Reads @p path and every file it names; throws util::ConfigError (file, section, key). */
 	static MissionOptions load(const std::string& path);

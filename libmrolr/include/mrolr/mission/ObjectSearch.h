@@ -67,6 +67,9 @@ class ObjectSearch
 	const geometry::BiSightHead& head() const { return head_; }
 	/** Called with the head angles of every sweep view (e.g. to grab a stereo pair). */
 	std::function<void(const geometry::HeadAngles&)> on_view;
+	/** When set, a view's scene wire-frame (L, mm) comes from this (a reconstruction from the
+	 * head's stereo pair) instead of sceneOf(). */
+	std::function<model::WireFrame(const geometry::HeadAngles&)> scene_from_stereo;
 
  private:
 	void compareWithTruth(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,
