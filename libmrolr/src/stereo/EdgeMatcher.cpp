@@ -81,7 +81,7 @@ using Grid = std::unordered_map<long long, std::vector<int>>;
 
 long long cellKey(int cx, int cy)
 {
-	return (static_cast<long long>(cy) << 32) ^ (cx & 0xffffffffLL);
+	return (static_cast<long long>(cy) * 4294967296LL) ^ (cx & 0xffffffffLL); // * 2^32: << of a negative is UB
 }
 
 Grid gridOf(const std::vector<Sample>& L, double cell)
