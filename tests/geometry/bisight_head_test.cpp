@@ -48,6 +48,21 @@ TEST(BiSightHead, JointsTurnTheOpticAxisTheDocumentedWay)
 	EXPECT_GT(head.T_RinC0(conv).linear().col(2).x(), 0);
 }
 
+TEST(BiSightHead, UpInTheLeftCameraIsC0sVertical)
+{
+	const BiSightHead head(test_util::offsetTestOptions());
+	// Pan turns about the vertical: up in L depends on the tilt only, (0, cos e, sin e).
+	const Eigen::Vector3d up = head.up_L({0.4, -0.35, 0, 0});
+	EXPECT_TRUE(up.isApprox(Eigen::Vector3d(0, std::cos(0.35), -std::sin(0.35)), 1e-12));
+	// With vergence: a point raised by h in C0 moves by h · up_L in L.
+	const HeadAngles a{-0.2, -0.3, -0.08, 0.08};
+	const Eigen::Vector3d p(0.1, -0.4, 0.9), h = 0.25 * Eigen::Vector3d::UnitY();
+	const Eigen::Vector3d moved = head.pointInCamera(Side::Left, p + h, a) -
+	                              head.pointInCamera(Side::Left, p, a);
+	EXPECT_TRUE(moved.isApprox(0.25 * head.up_L(a), 1e-12));
+	EXPECT_NEAR(head.up_L(a).norm(), 1.0, 1e-12);
+}
+
 TEST(BiSightHead, PointInCameraIsEquation4_22)
 {
 	const BiSightOptions o = test_util::offsetTestOptions();

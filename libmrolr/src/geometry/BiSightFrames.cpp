@@ -80,6 +80,11 @@ Eigen::Isometry3d BiSightHead::T_LinC0(const HeadAngles& angles) const
 	return T_CamInC0(Side::Left, angles);
 }
 
+Eigen::Vector3d BiSightHead::up_L(const HeadAngles& angles) const
+{
+	return T_LinC0(angles).linear().transpose() * Eigen::Vector3d::UnitY();
+}
+
 Eigen::Isometry3d BiSightHead::T_RinC0(const HeadAngles& angles) const
 {
 	return T_CamInC0(Side::Right, angles);

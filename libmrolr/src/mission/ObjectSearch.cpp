@@ -98,7 +98,10 @@ SearchResult ObjectSearch::observe(const WorldObjects& objects, const Eigen::Iso
 	SearchResult r;
 	r.angles = angles;
 	const auto t0 = std::chrono::steady_clock::now();
-	r.recognition = recognizer_.recognize(scene);
+	// C0 stands level on the base: its +y is the scene's up (upright prior, expected-visible
+	// verification; docs/recog.md).
+	const Eigen::Vector3d up_L = head_.up_L(angles);
+	r.recognition = recognizer_.recognize(scene, &up_L);
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found;

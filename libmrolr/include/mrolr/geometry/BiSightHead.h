@@ -91,6 +91,10 @@ class BiSightHead
 	Eigen::Isometry3d T_LinC0(const HeadAngles& angles) const;
 	/** Pose of the right camera frame R in C0 (thesis axes), eq 4.42. */
 	Eigen::Isometry3d T_RinC0(const HeadAngles& angles) const;
+	/** The vertical of C0 (its +y: up when the base stands level) as a unit vector in the left
+	 * camera frame L: R_LfromC0 · (0, 1, 0) = T_LinC0(angles).linear()ᵀ · (0, 1, 0). The scene up
+	 * direction a recogniser's upright prior needs for a scene reconstructed in L. */
+	Eigen::Vector3d up_L(const HeadAngles& angles) const;
 	/** Pose of one camera frame in C0 (thesis axes). */
 	Eigen::Isometry3d T_CamInC0(Side side, const HeadAngles& angles) const;
 
