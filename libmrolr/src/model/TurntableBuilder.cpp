@@ -89,6 +89,7 @@ void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 	merge.max_radius_diff_mm =
 	    util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
 	util::requireInRange(cfg, section, "keep_radius_mm", keep_radius_mm, 1, 1e5);
+	support.loadFromConfigFile(cfg, section);
 }
 
 void cropToObject(WireFrame& wf, const TurntableOptions& o)
@@ -174,16 +175,23 @@ WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions
 	all.name = set.object;
 	all.frame = WireFrameFrame::Object;
 	std::vector<WireFrame> views;
+	std::vector<double> angles_deg;
+	std::vector<ViewEdges> edges;
 	for (const auto& v : set.views)
 	{
-		const auto scene =
-		    stereo::reconstructScene(readImage(v.left_png), readImage(v.right_png), calib, so);
+		const cv::Mat left = readImage(v.left_png);
+		const auto scene = stereo::reconstructScene(left, readImage(v.right_png), calib, so);
 		views.push_back(viewInObjectFrame(scene, set.T_LinT_mm, v.angle_deg, o));
-		all.lines.insert(all.lines.end(), views.back().lines.begin(), views.back().lines.end());
-		all.conics.insert(all.conics.end(), views.back().conics.begin(), views.back().conics.end());
+		angles_deg.push_back(v.angle_deg);
+		edges.push_back(makeViewEdges(left, calib, set.T_LinT_mm, v.angle_deg));
+	}
+	keepFeaturesSeenFromNearViews(views, angles_deg, o.support, edges);
+	for (const auto& v : views)
+	{
+		all.lines.insert(all.lines.end(), v.lines.begin(), v.lines.end());
+		all.conics.insert(all.conics.end(), v.conics.begin(), v.conics.end());
 	}
 	mergeDuplicates(all, o.merge);
-	dropUnsupported(all, views, o.min_views, o.merge);
 	renumber(all);
 	return all;
 }

@@ -20,6 +20,7 @@
  */
 
 #include <mrolr/model/ModelEditor.h>
+#include <mrolr/model/TurntableBuilderSupport.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 
@@ -58,8 +59,9 @@ struct TurntableOptions
 	double min_height_mm =
 	    -4;  ///< features lower than this are below the table (z = 0 is the table top)
 	double max_height_mm = 400;
-	int min_views = 2;  ///< a merged feature must be seen (as a duplicate) in this many views
+	int min_views = 2;  ///< a feature must be seen in this many views (dropUnsupported, support)
 	MergeOptions merge;
+	ViewSupportOptions support;  ///< which single-view features are edges (buildFromTurntable)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
