@@ -1,3 +1,5 @@
+#include "RecognizerDetail.h"
+
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/PoseEstimation.h>
 #include <mrolr/recog/Recognizer.h>
@@ -14,6 +16,10 @@
 
 namespace mrolr::recog
 {
+using detail::rankOf;
+using detail::verifyBeta_mm;
+using detail::verifyTheta_rad;
+
 namespace
 {
 constexpr size_t kMatchesPerClique = 20;  // strongest clique matches kept as hypotheses
@@ -52,16 +58,6 @@ std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const Oriented
 }
 
 /** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
-double verifyBeta_mm(const LevelParams& p, const RecognitionOptions& o)
-{
-	return std::min(2 * p.position_error_mm, o.verify_position_error_mm);
-}
-
-double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
-{
-	return std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
-}
-
 std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
     const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
     const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ)
@@ -84,7 +80,7 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
 
 double rankOf(const RecognitionResult& r)
 {
-	return r.score + 0.05 * r.coverage;
+	return r.image_score >= 0 ? r.image_score + 0.05 * r.score : r.score + 0.05 * r.coverage;
 }
 
 /** Smallest expected-visible share of the model's length over cameras 300 mm from the centroid
@@ -118,14 +114,15 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	centroid_O_.setZero();
 	for (const auto& f : table_.features()) centroid_O_ += f.m;
 	centroid_O_ /= static_cast<double>(table_.features().size());
-	if (!opts_.verify_visible_only) return;
 	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
+	if (!opts_.verify_visible_only) return;
 	min_visible_share_ = minVisibleShare(table_.features(), *occlusion_, centroid_O_);
 }
 
 const SelfOcclusion* Recognizer::occlusionFor(const Eigen::Vector3d* up_S) const
 {
-	return up_S && opts_.upright_max_tilt_deg < 180 ? occlusion_.get() : nullptr;
+	return up_S && opts_.upright_max_tilt_deg < 180 && opts_.verify_visible_only ? occlusion_.get()
+	                                                                              : nullptr;
 }
 
 double Recognizer::visibleShare(const Eigen::Vector3d* up_S) const
@@ -133,8 +130,10 @@ double Recognizer::visibleShare(const Eigen::Vector3d* up_S) const
 	return occlusionFor(up_S) ? min_visible_share_ : 1.0;
 }
 
-double Recognizer::minScore(size_t level, const Eigen::Vector3d* up_S) const
+double Recognizer::minScore(size_t level, const Eigen::Vector3d* up_S,
+                            const ImageVerifier* images) const
 {
+	if (images) return images->options().prefilter_score;
 	const double f = occlusionFor(up_S) ? opts_.visible_min_score_factor : 1.0;
 	return std::min(1.0, f * opts_.levels.at(level).verify_min_score);
 }
@@ -148,41 +147,55 @@ bool Recognizer::upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d*
 
 RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
                                                FocusBounds* bounds,
-                                               const Eigen::Vector3d* up_S) const
+                                               const Eigen::Vector3d* up_S,
+                                               const ImageVerifier* images) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
 	best.model = table_.name();
+	best.image_score = images ? 0.0 : -1.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	FocusBounds own;
-	const auto hyps = hypothesesAt(table_, os, opts_, p,
-	                               focusFilter(scene, os, level, bounds ? *bounds : own, up_S));
+	const auto hyps =
+	    hypothesesAt(table_, os, opts_, p,
+	                 focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
-	VerificationResult bestV;
+	std::vector<VerifiedPose> verified;
 	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
 	{
 		if (!upright(clusters[k].mean, up_S)) continue;
-		const auto [T, v] =
+		auto [T, v] =
 		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
-		if (rankOf(v) <= rankOf(bestV) || !upright(T, up_S)) continue;
-		bestV = v;
-		best.T_OinS = T;
-		best.score = v.score;
-		best.coverage = v.coverage;
-		best.matched = v.matched;
-		best.agreeing_cliques = static_cast<int>(clusters[k].members.size());
-		best.spread_rot_deg = clusters[k].spread_rot_deg;
-		best.spread_trans_mm = clusters[k].spread_trans_mm;
+		if (!upright(T, up_S) || (images && v.score < minScore(level, up_S, images))) continue;
+		verified.push_back({T, std::move(v), -1.0, k});
 	}
-	best.found = best.score >= minScore(level, up_S);
+	if (images) judgeInImages(verified, *images, os.features, p, up_S);
+	double best_rank = 0;
+	for (const auto& h : verified)
+	{
+		if (rankOf(h.v, h.image) <= best_rank) continue;
+		best_rank = rankOf(h.v, h.image);
+		best.image_score = h.image;
+		best.T_OinS = h.T;
+		best.score = h.v.score;
+		best.coverage = h.v.coverage;
+		best.matched = h.v.matched;
+		best.agreeing_cliques = static_cast<int>(clusters[h.cluster].members.size());
+		best.spread_rot_deg = clusters[h.cluster].spread_rot_deg;
+		best.spread_trans_mm = clusters[h.cluster].spread_trans_mm;
+	}
+	best.found = images ? best.image_score >= images->options().min_score
+	                    : best.score >= minScore(level, up_S);
 	best.level = best.found ? static_cast<int>(level) + 1 : 0;
-	best.confidence = best.found ? confidenceOf(best.score, level, opts_.levels.size()) : 0.0;
+	const double s = images ? std::max(0.0, best.image_score) : best.score;
+	best.confidence = best.found ? confidenceOf(s, level, opts_.levels.size()) : 0.0;
 	return best;
 }
 
 RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
-                                        const Eigen::Vector3d* up_S) const
+                                        const Eigen::Vector3d* up_S,
+                                        const ImageVerifier* images) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	RecognitionResult best;
@@ -193,12 +206,12 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
-		if (bound_mm < minScore(l, up_S) * visibleShare(up_S) * modelLength_mm(l))
+		if (bound_mm < minScore(l, up_S, images) * visibleShare(up_S) * modelLength_mm(l))
 		{
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = recognizeAtLevel(scene, l, &bounds, up_S);
+		RecognitionResult r = recognizeAtLevel(scene, l, &bounds, up_S, images);
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
@@ -221,7 +234,8 @@ double Recognizer::supportBound_mm(const std::vector<Feature>& scene) const
 
 FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
                                     size_t level, FocusBounds& bounds,
-                                    const Eigen::Vector3d* up_S) const
+                                    const Eigen::Vector3d* up_S,
+                                    const ImageVerifier* images) const
 {
 	if (!opts_.skip_hopeless_levels) return {};
 	if (!bounds.bound)
@@ -233,7 +247,8 @@ FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const Ori
 			bounds.match_beta_mm = std::max(bounds.match_beta_mm, p.position_error_mm);
 		bounds.bound = std::make_shared<SupportBound>(table_, beta, theta);
 	}
-	const double need_mm = minScore(level, up_S) * visibleShare(up_S) * modelLength_mm(level);
+	const double need_mm =
+	    minScore(level, up_S, images) * visibleShare(up_S) * modelLength_mm(level);
 	return [&bounds, &scene, &os, need_mm](size_t f, size_t s)
 	{
 		const size_t src = os.source[s];
@@ -254,9 +269,10 @@ double Recognizer::modelLength_mm(size_t level) const
 }
 
 RecognitionResult Recognizer::recognize(const model::WireFrame& scene,
-                                        const Eigen::Vector3d* up_S) const
+                                        const Eigen::Vector3d* up_S,
+                                        const ImageVerifier* images) const
 {
-	return recognize(featuresOf(scene), up_S);
+	return recognize(featuresOf(scene), up_S, images);
 }
 
 RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& scenes) const

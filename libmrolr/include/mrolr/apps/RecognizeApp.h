@@ -19,13 +19,17 @@
  * their truth (DIR/scenes/table_K.wf, DIR/scenes/truth.json) for trying the tool.
  *
  *     mrolr-recognize --evaluate DIR [--model M.wf ... | --truth-models] [--eval-scenes N]
- *                     [--eval-seed S] [--config config/recognition.ini] [--json]
+ *                     [--eval-seed S] [--config config/recognition.ini] [--no-image-verify]
+ *                     [--json]
  *
  * renders the fixed evaluation set of [evaluation] (RecognitionEvaluation.h), reconstructs every
  * scene, searches every model (default every .wf of datasets/objects; --truth-models: the
  * simulator's exact wire-frames) and compares with the truth; writes
  * DIR/scene_KK/{left,right,overlay}.png, scene.wf, calib.ini, truth.json, and DIR/cases.json,
- * DIR/summary.json. */
+ * DIR/summary.json.
+ *
+ * With a stereo pair (--left/--right/--calib and --evaluate) the hypotheses are verified in the
+ * images (recog::ImageVerifier, [image_verification] of --config) unless --no-image-verify. */
 
 #include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrame.h>
@@ -59,6 +63,8 @@ class RecognizeApp
 	bool truth_models = false;  ///< --truth-models
 	int eval_scenes = 0;        ///< --eval-scenes (0: [evaluation] scenes)
 	long eval_seed = -1;        ///< --eval-seed (-1: [evaluation] seed)
+	/** Verify hypotheses in the stereo images when there are images (false: --no-image-verify). */
+	bool image_verify = true;
 	bool json = false;
 	bool help_shown = false;
 
@@ -68,6 +74,7 @@ class RecognizeApp
 
 	// Results (set by run)
 	recog::RecognitionOptions options;
+	recog::ImageVerificationOptions image_options;  ///< [image_verification], read when used
 	std::vector<model::WireFrame> models;
 	std::vector<model::WireFrame> scenes;           ///< the scene models searched, in order
 	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
@@ -77,6 +84,9 @@ class RecognizeApp
 
  private:
 	void loadScenes();
+	/** The single stereo scene searched with verification in @p images. */
+	recog::RecognitionResult recognizeInImages(const recog::Recognizer& rec,
+	                                           const recog::ImageVerifier& images) const;
 	int runEvaluation(std::ostream& out);
 	void loadEvaluationModels(const EvalSceneGenerator& gen);
 	void writeEvaluation(std::ostream& out) const;

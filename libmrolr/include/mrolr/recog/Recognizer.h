@@ -6,10 +6,12 @@
  * answer carries a confidence and an absent object is reported as not found. */
 
 #include <mrolr/recog/CliqueMatcher.h>
+#include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/recog/SupportBound.h>
+#include <mrolr/recog/Verification.h>
 
 #include <Eigen/Geometry>
 
@@ -36,6 +38,9 @@ struct RecognitionResult
 	int scene_index = -1;        ///< which scene of a sweep held it (-1 when not found)
 	double ms = 0;               ///< wall time of the search (ms)
 	int levels_skipped = 0;      ///< levels skipped: SupportBound says they cannot verify
+	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
+	 * model edge samples on image edges), which decided acceptance; -1 without images. */
+	double image_score = -1;
 };
 
 class Recognizer
@@ -50,11 +55,16 @@ class Recognizer
 	 * clique that a nearly symmetric object's true pose needs). With skip_hopeless_levels, levels
 	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run.
 	 * @p up_S: the scene's up direction (unit, scene frame) when known; poses tilted more than
-	 * options().upright_max_tilt_deg from it are rejected. */
-	RecognitionResult recognize(const model::WireFrame& scene,
-	                            const Eigen::Vector3d* up_S = nullptr) const;
+	 * options().upright_max_tilt_deg from it are rejected.
+	 * @p images: the stereo pair the scene was reconstructed from (scene frame = left camera L),
+	 * or null. With images the 3D score is only a pre-filter (images->options().prefilter_score)
+	 * and a hypothesis is accepted, and ranked, by its image score (images->options().min_score);
+	 * the scene's features still generate the hypotheses. */
+	RecognitionResult recognize(const model::WireFrame& scene, const Eigen::Vector3d* up_S = nullptr,
+	                            const ImageVerifier* images = nullptr) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene,
-	                            const Eigen::Vector3d* up_S = nullptr) const;
+	                            const Eigen::Vector3d* up_S = nullptr,
+	                            const ImageVerifier* images = nullptr) const;
 
 	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), computed for the
 	 * coarsest tolerances of all levels so that every level can use them. */
@@ -67,10 +77,11 @@ class Recognizer
 
 	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's
 	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene; @p up_S
-	 * as in recognize(). */
+	 * and @p images as in recognize(). */
 	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
 	                                   FocusBounds* bounds = nullptr,
-	                                   const Eigen::Vector3d* up_S = nullptr) const;
+	                                   const Eigen::Vector3d* up_S = nullptr,
+	                                   const ImageVerifier* images = nullptr) const;
 
 	/** Thesis 6.4: scene models of a pan sweep in order; the first scene where the object is
 	 * recognised ends the search. */
@@ -90,13 +101,31 @@ class Recognizer
 	/** The self-occlusion verification uses with the scene up direction @p up_S: the model's
 	 * when options().verify_visible_only and an upright prior is set, else nullptr. */
 	const SelfOcclusion* occlusion(const Eigen::Vector3d* up_S) const { return occlusionFor(up_S); }
+	/** The model's self-occlusion, always built: image verification hides the back edges with it
+	 * whether or not the 3D score does. */
+	const SelfOcclusion& selfOcclusion() const { return *occlusion_; }
 	const RecognitionOptions& options() const { return opts_; }
 
  private:
+	/** A cluster's pose after 3D verification (and its image score, -1 without images). */
+	struct VerifiedPose
+	{
+		Eigen::Isometry3d T;
+		VerificationResult v;
+		double image = -1;
+		size_t cluster = 0;
+	};
+	/** Scores @p poses in @p images, refines the best options().refine_candidates in the images
+	 * (ImageVerifier::refine) and re-verifies them in 3D against @p scene at level @p p. */
+	void judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,
+	                   const std::vector<Feature>& scene, const LevelParams& p,
+	                   const Eigen::Vector3d* up_S) const;
+
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels). */
 	FocusFilter focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
-	                        size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S) const;
+	                        size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
+	                        const ImageVerifier* images) const;
 	/** The self-occlusion verification uses: only with an up direction and an upright prior
 	 * (without them a pose turned over, whose expected-visible part happens to be supported, can
 	 * score 1). */
@@ -105,7 +134,8 @@ class Recognizer
 	double visibleShare(const Eigen::Vector3d* up_S) const;
 	/** The score @p level needs: verify_min_score, times visible_min_score_factor when the
 	 * visible-only score is used. */
-	double minScore(size_t level, const Eigen::Vector3d* up_S) const;
+	double minScore(size_t level, const Eigen::Vector3d* up_S,
+	                const ImageVerifier* images = nullptr) const;
 
 	ModelTable table_;
 	RecognitionOptions opts_;

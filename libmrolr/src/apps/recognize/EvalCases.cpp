@@ -28,14 +28,16 @@ double truthScore(const recog::Recognizer& rec, const std::vector<recog::Feature
 }  // namespace
 
 EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
-                      const std::vector<double>& symmetry_deg, const EvaluationOptions& opts)
+                      const std::vector<double>& symmetry_deg, const EvaluationOptions& opts,
+                      const recog::ImageVerifier* images)
 {
 	EvalCase c;
 	c.scene = s.index;
 	c.model = rec.table().name();
 	const auto scene = recog::featuresOf(s.scene);
-	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L);
+	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L, images);
 	c.result = r;
+	c.image_score = r.image_score;
 	c.found = r.found, c.score = r.score, c.level = r.level, c.ms = r.ms;
 	c.levels_skipped = r.levels_skipped;
 	c.score_bound =
@@ -45,6 +47,9 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	if (!truth) return c;
 	c.visible_fraction = truth->visible_fraction;
 	c.truth_score = truthScore(rec, scene, truth->T_OinL, s.up_L);
+	if (images)
+		c.truth_image_score =
+		    images->score(rec.table().features(), truth->T_OinL, &rec.selfOcclusion()).score;
 	if (!c.found) return c;
 	c.rot_err_deg = rotationErrorDeg(truth->T_OinL.linear(), r.T_OinS.linear(), symmetry_deg);
 	c.trans_err_mm = (truth->T_OinL.translation() - r.T_OinS.translation()).norm();

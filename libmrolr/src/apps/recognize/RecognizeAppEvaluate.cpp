@@ -33,6 +33,8 @@ nlohmann::json caseJson(const EvalCase& c)
 	        {"trans_err_mm", c.trans_err_mm},
 	        {"score", c.score},
 	        {"truth_score", c.truth_score},
+	        {"image_score", c.image_score},
+	        {"truth_image_score", c.truth_image_score},
 	        {"level", c.level},
 	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
@@ -120,6 +122,7 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 	const mrpt::config::CConfigFile cfg(util::requireProjectFile(config_path));
 	options.loadFromConfigFile(cfg, "recognition");
 	eval_options.loadFromConfigFile(cfg, "evaluation");
+	if (image_verify) image_options.loadFromConfigFile(cfg, "image_verification");
 	if (eval_scenes > 0) eval_options.scenes = eval_scenes;
 	if (eval_seed >= 0) eval_options.seed = static_cast<unsigned>(eval_seed);
 	const auto gen = makeGenerator(eval_options);
@@ -134,10 +137,14 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 	for (int k = 0; k < eval_options.scenes; ++k)
 	{
 		const EvalScene s = gen->make(k);
+		std::unique_ptr<recog::ImageVerifier> images;
+		if (image_verify)
+			images = std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, image_options);
 		std::vector<recog::RecognitionResult> found;
 		for (size_t i = 0; i < recs.size(); ++i)
 		{
-			eval_cases.push_back(evaluateCase(recs[i], s, symmetries[i], eval_options));
+			eval_cases.push_back(
+			    evaluateCase(recs[i], s, symmetries[i], eval_options, images.get()));
 			found.push_back(eval_cases.back().result);
 		}
 		const std::string d = saveScene(s, evaluate_dir);
@@ -168,7 +175,8 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 			out << "scene " << c.scene << " " << c.model << (c.present ? "" : " (absent)")
 			    << ": visible " << c.visible_fraction << ", "
 			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found") << ", score "
-			    << c.score << " (at truth " << c.truth_score << "), level " << c.level << ", err "
+			    << c.score << " (at truth " << c.truth_score << "), image " << c.image_score
+			    << " (at truth " << c.truth_image_score << "), level " << c.level << ", err "
 			    << c.rot_err_deg << " deg " << c.trans_err_mm << " mm, " << c.ms << " ms\n";
 	const auto& s = eval_summary;
 	out << "recognised " << s.recognised << "/" << s.rate_cases << " (" << 100 * s.rate

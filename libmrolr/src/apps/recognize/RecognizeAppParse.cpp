@@ -53,6 +53,10 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	TCLAP::ValueArg<int> nscenes("", "eval-scenes", "--evaluate: number of scenes", false, 0, "N",
 	                             cmd);
 	TCLAP::ValueArg<long> seed("", "eval-seed", "--evaluate: seed of scene 0", false, -1, "S", cmd);
+	TCLAP::SwitchArg no_images("", "no-image-verify",
+	                           "with a stereo pair (--left/--right, --evaluate): verify in 3D "
+	                           "only, not in the images ([image_verification] of --config)",
+	                           cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;
@@ -65,6 +69,7 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	demo_dir = demo.getValue();
 	evaluate_dir = evaluate.getValue(), truth_models = truth.getValue();
 	eval_scenes = nscenes.getValue(), eval_seed = seed.getValue();
+	image_verify = !no_images.getValue();
 	if (eval_scenes < 0) throw util::UsageError("--eval-scenes must be positive");
 	if (!demo_dir.empty()) return;
 	if (!evaluate_dir.empty())

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 
 namespace mrolr::apps
 {
@@ -28,6 +29,14 @@ cv::Mat readImage(const std::string& path, int flags)
 	cv::Mat img = cv::imread(path, flags);
 	if (img.empty()) throw std::runtime_error("cannot read image '" + path + "'");
 	return img;
+}
+
+std::string imageNote(const recog::RecognitionResult& r)
+{
+	if (r.image_score < 0) return "";
+	std::ostringstream s;
+	s << std::fixed << std::setprecision(3) << ", image score " << r.image_score;
+	return s.str();
 }
 
 void printMatrix(std::ostream& out, const Eigen::Matrix4d& T)
@@ -68,8 +77,19 @@ int RecognizeApp::run(std::ostream& out)
 	                           "recognition");
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();
+	const bool stereo = scene_paths.empty();
+	std::unique_ptr<recog::ImageVerifier> images;
+	if (stereo && image_verify)
+	{
+		image_options.loadFromConfigFile(
+		    mrpt::config::CConfigFile(util::requireProjectFile(config_path)), "image_verification");
+		images = std::make_unique<recog::ImageVerifier>(
+		    readImage(left_png, cv::IMREAD_GRAYSCALE), readImage(right_png, cv::IMREAD_GRAYSCALE),
+		    stereo::loadStereoCalibration(calib_path), image_options);
+	}
 	for (const auto& m : models)
-		results.push_back(recog::Recognizer(m, options).searchSweep(scenes));
+		results.push_back(images ? recognizeInImages(recog::Recognizer(m, options), *images)
+		                         : recog::Recognizer(m, options).searchSweep(scenes));
 	json ? printJson(out) : printText(out);
 	if (!overlay_png.empty())
 	{
@@ -81,6 +101,14 @@ int RecognizeApp::run(std::ostream& out)
 	}
 	if (!scene3d_path.empty()) writeScene3D(scenes, models, results, scene3d_path);
 	return util::kExitOk;
+}
+
+recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer& rec,
+                                                        const recog::ImageVerifier& images) const
+{
+	recog::RecognitionResult r = rec.recognize(scenes.front(), nullptr, &images);
+	if (r.found) r.scene_index = 0;
+	return r;
 }
 
 void RecognizeApp::writeDemo(std::ostream& out) const
@@ -122,12 +150,13 @@ void RecognizeApp::printText(std::ostream& out) const
 	{
 		if (!r.found)
 		{
-			out << r.model << ": not found (best score " << r.score << ", " << r.ms << " ms)\n";
+			out << r.model << ": not found (best score " << r.score << imageNote(r) << ", " << r.ms
+			    << " ms)\n";
 			continue;
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-		    << ", score " << r.score << ", confidence " << r.confidence << ", " << r.matched
+		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", " << r.matched
 		    << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());
 		out << "  roll pitch yaw (deg): " << rpy.transpose()

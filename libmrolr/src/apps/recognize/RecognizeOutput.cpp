@@ -85,7 +85,8 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"t_mm", {t.x(), t.y(), t.z()}},
 	        {"agreeing_cliques", r.agreeing_cliques},
 	        {"spread_rot_deg", r.spread_rot_deg},
-	        {"spread_trans_mm", r.spread_trans_mm}};
+	        {"spread_trans_mm", r.spread_trans_mm},
+	        {"image_score", r.image_score}};
 }
 
 std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf)

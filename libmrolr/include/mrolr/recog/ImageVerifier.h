@@ -1,0 +1,151 @@
+#pragma once
+/** Verification of pose hypotheses in the stereo images (beyond the thesis, which verified in 3D
+ * only; issue 7). A hypothesis T_OinL is judged by projecting the model's expected-visible edges
+ * into the left and right images and counting how many of their samples lie on an image edge
+ * (Canny) with a compatible orientation: an oriented chamfer test on OpenCV's distance transform.
+ * Unlike the 3D score it does not depend on what stereo managed to reconstruct. Millimetres in the
+ * thesis's left camera frame L (z along the optic axis, x left, y up); pixels in the original
+ * (unrectified) images of the stereo::StereoCalibration. */
+
+#include <mrolr/recog/Feature.h>
+#include <mrolr/recog/SelfOcclusion.h>
+#include <mrolr/stereo/StereoCalibration.h>
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <opencv2/core.hpp>
+
+#include <Eigen/Geometry>
+
+#include <array>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace mrolr::recog
+{
+/** Section [image_verification] of config/recognition.ini. */
+struct ImageVerificationOptions
+{
+	double blur_sigma_px = 1.0;        ///< Gaussian blur before Canny (px; 0: none)
+	double canny_low = 20;             ///< Canny hysteresis thresholds (grey levels, L2 gradient)
+	double canny_high = 50;
+	double edge_distance_px = 2.0;     ///< a sample is supported within this of an edge pixel (px)
+	double orientation_tol_deg = 20;   ///< ... whose edge direction is within this of its own
+	double sample_spacing_mm = 3;      ///< model edges sampled every this many mm
+	int min_samples = 30;              ///< fewer expected-visible samples in view: score 0
+	double min_score = 0.6;            ///< image score needed to accept a hypothesis, [0, 1]
+	/** 3D verification score (expected-visible when the up direction is known) a hypothesis
+	 * needs before the images are asked: with images the 3D score is only a pre-filter. */
+	double prefilter_score = 0.1;
+	/** The best hypotheses of a level (by image score, at least half of min_score) are refined in
+	 * the images: rotations about the model's up axis (z through its rims' centres) every
+	 * yaw_step_deg (0: none; a cup's handle is what fixes its yaw), then a pattern search over
+	 * the 6 pose parameters minimising the truncated oriented chamfer distance. */
+	int refine_candidates = 3;
+	double yaw_step_deg = 10;
+	double truncate_px = 5;  ///< chamfer distance cap (px); also the cost of a wrongly oriented edge
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+/** A point on a model edge and the edge's unit tangent there (model frame, mm). */
+struct EdgeSample
+{
+	Eigen::Vector3d p_O, t_O;
+	int feature = 0;  ///< index into the features sampled
+};
+
+/** A point of the model's up axis (z): the mean centre of its conics whose normal is within 25°
+ * of z, else the centroid of its features' midpoints (model frame, mm). */
+Eigen::Vector3d upAxisPoint(const std::vector<Feature>& features);
+
+/** Samples every @p spacing_mm along lines and around conics (an ellipse as a circle of its mean
+ * semi-axis, as SelfOcclusion does); at least 2 per feature. */
+std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, double spacing_mm);
+
+/** Result of one hypothesis in the images. */
+struct ImageScore
+{
+	double score = 0;     ///< supported / considered samples over both images, [0, 1]
+	int considered = 0;   ///< samples expected visible and inside an image (both images summed)
+	int supported = 0;    ///< of those, within edge_distance_px of an edge of compatible direction
+	std::array<double, 2> per_image = {0, 0};  ///< left, right score
+	double cost = 0;  ///< mean squared truncated chamfer distance of the considered samples (px²)
+};
+
+/** The edge evidence of one image: Canny edges, the distance (px) of every pixel to the nearest
+ * edge pixel and that pixel's gradient direction; and the camera (pose in L, K, distortion). */
+class EdgeImage
+{
+ public:
+	/** @p grey 8-bit image; @p T_CcvInL pose of the OpenCV camera (x right, y down) in L (mm). */
+	EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+	          const Eigen::Isometry3d& T_CcvInL, const ImageVerificationOptions& o);
+
+	/** Adds to @p considered / @p supported the samples of @p s_O carried by @p T_OinL that are
+	 * in front of the camera, inside the image and not hidden by @p occ (may be null). */
+	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	           const SelfOcclusion* occ, int& considered, int& supported) const;
+	/** As count(), and adds to @p cost_px2 each considered sample's squared distance to the edges
+	 * (bilinear, capped at @p truncate_px; the cap when the nearest edge's direction disagrees). */
+	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
+	           double& cost_px2) const;
+
+	/** Optical centre in L (mm). */
+	Eigen::Vector3d centre_L() const { return T_CcvInL_.translation(); }
+	const cv::Mat& edges() const { return edges_; }
+	const cv::Mat& distance() const { return dist_; }
+
+ private:
+	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
+	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
+	double distanceAt(const cv::Point2d& px) const;  ///< bilinear (px)
+
+	cv::Matx33d K_;
+	cv::Vec<double, 5> D_;
+	Eigen::Isometry3d T_CcvInL_;
+	double dist_px_, sin_tol_;
+	cv::Mat edges_;                   ///< CV_8U, 255 on edges
+	cv::Mat dist_;                    ///< CV_32F, px to the nearest edge pixel
+	cv::Mat labels_;                  ///< CV_32S, label of the nearest edge pixel
+	std::vector<cv::Point2f> normal_;  ///< unit gradient at each label's edge pixel
+};
+
+/** Both images of a stereo pair: scores hypotheses by their edge support in the left and right
+ * images. */
+class ImageVerifier
+{
+ public:
+	/** @p left, @p right 8-bit grey (or BGR, converted) images of the size in @p calib. Throws
+	 * std::invalid_argument naming what is wrong (empty image, size differing from the
+	 * calibration's). */
+	ImageVerifier(const cv::Mat& left, const cv::Mat& right,
+	              const stereo::StereoCalibration& calib, const ImageVerificationOptions& o);
+
+	/** Oriented chamfer score of the model features @p features_O (model frame, mm) at
+	 * @p T_OinL: samples hidden by the object itself (@p occ built on the same features; may be
+	 * null) do not count. */
+	ImageScore score(const std::vector<Feature>& features_O, const Eigen::Isometry3d& T_OinL,
+	                 const SelfOcclusion* occ) const;
+	/** The same on samples already taken (edgeSamplesOf with options().sample_spacing_mm). */
+	ImageScore score(const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& T_OinL,
+	                 const SelfOcclusion* occ) const;
+
+	/** Refines @p T_OinL in the images (options().yaw_step_deg sweep about the model's z axis
+	 * through @p axis_O, then the pattern search); returns the refined pose if its score is not
+	 * lower, else @p T_OinL. */
+	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
+	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
+	                         const Eigen::Vector3d& axis_O) const;
+
+	const ImageVerificationOptions& options() const { return opts_; }
+	const EdgeImage& image(int i) const { return images_.at(i); }
+
+ private:
+	ImageVerificationOptions opts_;
+	std::vector<EdgeImage> images_;  ///< left, right
+};
+
+}  // namespace mrolr::recog

@@ -1,0 +1,71 @@
+// Refinement of a pose hypothesis in the stereo images (ImageVerifier::refine): a sweep of
+// rotations about the model's up axis, then a pattern search on the truncated oriented chamfer
+// distance. Both move the pose only where the images say it fits better.
+#include <mrolr/recog/ImageVerifier.h>
+
+#include <cmath>
+
+namespace mrolr::recog
+{
+namespace
+{
+constexpr int kMaxPatternEvaluations = 150;
+constexpr double kStartStep_mm = 2, kStartStep_deg = 1, kLastStep_mm = 0.1;
+
+Eigen::Isometry3d aboutAxis(const Eigen::Vector3d& a_O, double yaw_rad)
+{
+	return Eigen::Translation3d(a_O) * Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
+	       Eigen::Translation3d(-a_O);
+}
+
+/** @p T moved along parameter @p k: 0–2 a translation in L (mm), 3–5 a rotation (rad) about L's
+ * axes through @p c_L. */
+Eigen::Isometry3d moved(const Eigen::Isometry3d& T, const Eigen::Vector3d& c_L, int k, double step)
+{
+	if (k < 3) return Eigen::Translation3d(step * Eigen::Vector3d::Unit(k)) * T;
+	return Eigen::Translation3d(c_L) * Eigen::AngleAxisd(step, Eigen::Vector3d::Unit(k - 3)) *
+	       Eigen::Translation3d(-c_L) * T;
+}
+
+bool better(const ImageScore& a, const ImageScore& b)
+{
+	return a.score > b.score || (a.score == b.score && a.cost < b.cost);
+}
+}  // namespace
+
+Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O,
+                                        const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
+                                        const Eigen::Vector3d& axis_O) const
+{
+	Eigen::Isometry3d best = T_OinL;
+	ImageScore best_s = score(samples_O, T_OinL, occ);
+	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
+	for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
+	{
+		const Eigen::Isometry3d T = T_OinL * aboutAxis(axis_O, yaw);
+		const ImageScore s = score(samples_O, T, occ);
+		if (better(s, best_s)) best = T, best_s = s;
+	}
+	const Eigen::Isometry3d swept = best;
+	const ImageScore swept_s = best_s;
+	double step_mm = kStartStep_mm, step_rad = kStartStep_deg * M_PI / 180;
+	for (int evals = 0; step_mm >= kLastStep_mm && evals < kMaxPatternEvaluations;)
+	{
+		bool improved = false;
+		const Eigen::Vector3d c_L = best * axis_O;
+		for (int k = 0; k < 6 && !improved; ++k)
+			for (const double sign : {1.0, -1.0})
+			{
+				const Eigen::Isometry3d T = moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
+				const ImageScore s = score(samples_O, T, occ);
+				++evals;
+				if (s.cost >= best_s.cost) continue;
+				best = T, best_s = s, improved = true;
+				break;
+			}
+		if (!improved) step_mm /= 2, step_rad /= 2;
+	}
+	return best_s.score >= swept_s.score ? best : swept;
+}
+
+}  // namespace mrolr::recog

@@ -1,0 +1,45 @@
+#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/util/Config.h>
+
+namespace mrolr::recog
+{
+namespace
+{
+double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+              const std::string& key, double lo, double hi)
+{
+	const double v = util::readDouble(cfg, section, key);
+	util::requireInRange(cfg, section, key, v, lo, hi);
+	return v;
+}
+}  // namespace
+
+void ImageVerificationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                                  const std::string& section)
+{
+	blur_sigma_px = readIn(cfg, section, "blur_sigma_px", 0, 20);
+	canny_low = readIn(cfg, section, "canny_low", 0, 10000);
+	canny_high = readIn(cfg, section, "canny_high", canny_low, 10000);
+	edge_distance_px = readIn(cfg, section, "edge_distance_px", 0, 100);
+	orientation_tol_deg = readIn(cfg, section, "orientation_tol_deg", 0, 90);
+	sample_spacing_mm = readIn(cfg, section, "sample_spacing_mm", 0.1, 1000);
+	min_samples = static_cast<int>(readIn(cfg, section, "min_samples", 1, 1e6));
+	min_score = readIn(cfg, section, "min_score", 0, 1);
+	prefilter_score = readIn(cfg, section, "prefilter_score", 0, 1);
+	refine_candidates = static_cast<int>(readIn(cfg, section, "refine_candidates", 0, 1000));
+	yaw_step_deg = readIn(cfg, section, "yaw_step_deg", 0, 180);
+	truncate_px = readIn(cfg, section, "truncate_px", 0.1, 1000);
+}
+
+void ImageVerificationOptions::dump(std::ostream& out) const
+{
+	out << "blur_sigma_px = " << blur_sigma_px << "\ncanny_low = " << canny_low
+	    << "\ncanny_high = " << canny_high << "\nedge_distance_px = " << edge_distance_px
+	    << "\norientation_tol_deg = " << orientation_tol_deg
+	    << "\nsample_spacing_mm = " << sample_spacing_mm << "\nmin_samples = " << min_samples
+	    << "\nmin_score = " << min_score << "\nprefilter_score = " << prefilter_score
+	    << "\nrefine_candidates = " << refine_candidates << "\nyaw_step_deg = " << yaw_step_deg
+	    << "\ntruncate_px = " << truncate_px << "\n";
+}
+
+}  // namespace mrolr::recog

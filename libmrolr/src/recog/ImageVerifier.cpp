@@ -1,0 +1,216 @@
+#include <mrolr/recog/ImageVerifier.h>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace mrolr::recog
+{
+namespace
+{
+cv::Mat greyOf(const cv::Mat& img, const char* which)
+{
+	if (img.empty()) throw std::invalid_argument(std::string("image verification: empty ") + which);
+	if (img.depth() != CV_8U)
+		throw std::invalid_argument(std::string("image verification: ") + which +
+		                            " image is not 8-bit");
+	if (img.channels() == 1) return img;
+	cv::Mat g;
+	cv::cvtColor(img, g, img.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+	return g;
+}
+
+/** Pose in L of the OpenCV camera whose points are p_cv = R p_Lcv + t (L's OpenCV twin has x, y
+ * negated). */
+Eigen::Isometry3d cameraInL(const cv::Matx33d& R_CfromLcv, const cv::Vec3d& t_LcvInC_mm)
+{
+	Eigen::Isometry3d T_LcvInC = Eigen::Isometry3d::Identity();
+	for (int i = 0; i < 3; ++i)
+	{
+		for (int j = 0; j < 3; ++j) T_LcvInC.linear()(i, j) = R_CfromLcv(i, j);
+		T_LcvInC.translation()[i] = t_LcvInC_mm[i];
+	}
+	Eigen::Isometry3d T_LcvInL = Eigen::Isometry3d::Identity();
+	T_LcvInL.linear() = Eigen::Vector3d(-1, -1, 1).asDiagonal();
+	return T_LcvInL * T_LcvInC.inverse();
+}
+
+bool inView(const Eigen::Vector3d& p_C)
+{
+	// points far outside the view are dropped: the distortion polynomial folds them back in
+	return p_C.z() > 1 && std::abs(p_C.x()) < p_C.z() && std::abs(p_C.y()) < p_C.z();
+}
+}  // namespace
+
+Eigen::Vector3d upAxisPoint(const std::vector<Feature>& features)
+{
+	Eigen::Vector3d sum = Eigen::Vector3d::Zero(), all = Eigen::Vector3d::Zero();
+	int n = 0;
+	for (const auto& f : features)
+	{
+		all += f.m;
+		if (f.isLine() || std::abs(f.u.z()) < std::cos(25 * M_PI / 180)) continue;
+		sum += f.m, ++n;
+	}
+	if (n) return sum / n;
+	return features.empty() ? all : Eigen::Vector3d(all / static_cast<double>(features.size()));
+}
+
+std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, double spacing_mm)
+{
+	std::vector<EdgeSample> out;
+	for (size_t k = 0; k < features.size(); ++k)
+	{
+		const Feature& f = features[k];
+		const int n = std::max(2, static_cast<int>(std::ceil(f.len_mm / spacing_mm)));
+		const auto pts = samplesOf(f, n);
+		for (const auto& p : pts)
+		{
+			const Eigen::Vector3d t = f.isLine() ? f.u : f.u.cross(p - f.m).normalized();
+			out.push_back({p, t, static_cast<int>(k)});
+		}
+	}
+	return out;
+}
+
+EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+                     const Eigen::Isometry3d& T_CcvInL, const ImageVerificationOptions& o)
+    : K_(K),
+      D_(D),
+      T_CcvInL_(T_CcvInL),
+      dist_px_(o.edge_distance_px),
+      sin_tol_(std::sin(o.orientation_tol_deg * M_PI / 180))
+{
+	cv::Mat blurred = grey, gx, gy;
+	if (o.blur_sigma_px > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), o.blur_sigma_px);
+	cv::Sobel(blurred, gx, CV_16S, 1, 0, 3);
+	cv::Sobel(blurred, gy, CV_16S, 0, 1, 3);
+	cv::Canny(gx, gy, edges_, o.canny_low, o.canny_high, true);
+	cv::distanceTransform(edges_ == 0, dist_, labels_, cv::DIST_L2, cv::DIST_MASK_5,
+	                      cv::DIST_LABEL_PIXEL);
+	if (cv::countNonZero(edges_) == 0) dist_.setTo(1e9);
+	for (int y = 0; y < edges_.rows; ++y)
+		for (int x = 0; x < edges_.cols; ++x)
+		{
+			if (!edges_.at<uchar>(y, x)) continue;
+			const size_t label = static_cast<size_t>(labels_.at<int>(y, x));
+			if (label >= normal_.size()) normal_.resize(label + 1, cv::Point2f(0, 0));
+			const cv::Point2f g(gx.at<short>(y, x), gy.at<short>(y, x));
+			const double n = std::hypot(g.x, g.y);
+			normal_[label] = n > 0 ? g / static_cast<float>(n) : cv::Point2f(0, 0);
+		}
+}
+
+bool EdgeImage::supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const
+{
+	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
+	return dist_.at<float>(y, x) <= dist_px_ && oriented(px, tangent_px);
+}
+
+double EdgeImage::distanceAt(const cv::Point2d& px) const
+{
+	const int x0 = std::min(static_cast<int>(px.x), dist_.cols - 2);
+	const int y0 = std::min(static_cast<int>(px.y), dist_.rows - 2);
+	const double fx = px.x - x0, fy = px.y - y0;
+	const auto d = [this](int y, int x) { return static_cast<double>(dist_.at<float>(y, x)); };
+	return (1 - fy) * ((1 - fx) * d(y0, x0) + fx * d(y0, x0 + 1)) +
+	       fy * ((1 - fx) * d(y0 + 1, x0) + fx * d(y0 + 1, x0 + 1));
+}
+
+bool EdgeImage::oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const
+{
+	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
+	const size_t label = static_cast<size_t>(labels_.at<int>(y, x));
+	if (label >= normal_.size()) return false;
+	const double len = std::hypot(tangent_px.x, tangent_px.y);
+	if (len <= 0) return false;  // an edge seen end-on has no direction to compare
+	const cv::Point2f& n = normal_[label];
+	return std::abs(n.x * tangent_px.x + n.y * tangent_px.y) <= sin_tol_ * len;
+}
+
+void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+                      const SelfOcclusion* occ, int& considered, int& supported) const
+{
+	double cost = 0;
+	count(s_O, T_OinL, occ, 0, considered, supported, cost);
+}
+
+void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+                      const SelfOcclusion* occ, double truncate_px, int& considered,
+                      int& supported, double& cost_px2) const
+{
+	const Eigen::Isometry3d T_OinC = T_CcvInL_.inverse() * T_OinL;
+	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
+	std::vector<cv::Point3d> pts;
+	pts.reserve(2 * s_O.size());
+	for (const auto& s : s_O)
+	{
+		const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
+		if (!inView(p) || !inView(q) || (occ && occ->hidden(c_O, s.p_O))) continue;
+		pts.emplace_back(p.x(), p.y(), p.z());
+		pts.emplace_back(q.x(), q.y(), q.z());
+	}
+	if (pts.empty()) return;
+	std::vector<cv::Point2d> px;
+	cv::projectPoints(pts, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K_, D_, px);
+	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
+	for (size_t i = 0; i + 1 < px.size(); i += 2)
+	{
+		if (!inside.contains(px[i])) continue;
+		++considered;
+		supported += supports(px[i], px[i + 1] - px[i]) ? 1 : 0;
+		if (truncate_px <= 0) continue;
+		const double d = oriented(px[i], px[i + 1] - px[i])
+		                     ? std::min(truncate_px, distanceAt(px[i]))
+		                     : truncate_px;
+		cost_px2 += d * d;
+	}
+}
+
+ImageVerifier::ImageVerifier(const cv::Mat& left, const cv::Mat& right,
+                             const stereo::StereoCalibration& calib,
+                             const ImageVerificationOptions& o)
+    : opts_(o)
+{
+	const cv::Mat l = greyOf(left, "left"), r = greyOf(right, "right");
+	if (l.size() != calib.image_size || r.size() != calib.image_size)
+		throw std::invalid_argument("image verification: images are " + std::to_string(l.cols) +
+		                            "x" + std::to_string(l.rows) + " and " +
+		                            std::to_string(r.cols) + "x" + std::to_string(r.rows) +
+		                            " px, the calibration's " +
+		                            std::to_string(calib.image_size.width) + "x" +
+		                            std::to_string(calib.image_size.height));
+	images_.emplace_back(l, calib.K_left, calib.D_left,
+	                     cameraInL(cv::Matx33d::eye(), cv::Vec3d(0, 0, 0)), o);
+	images_.emplace_back(r, calib.K_right, calib.D_right,
+	                     cameraInL(calib.R_RfromL, calib.t_LinR_mm), o);
+}
+
+ImageScore ImageVerifier::score(const std::vector<EdgeSample>& samples_O,
+                                const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ) const
+{
+	ImageScore s;
+	for (size_t i = 0; i < images_.size(); ++i)
+	{
+		int considered = 0, supported = 0;
+		images_[i].count(samples_O, T_OinL, occ, opts_.truncate_px, considered, supported, s.cost);
+		s.per_image[i] = considered ? static_cast<double>(supported) / considered : 0.0;
+		s.considered += considered, s.supported += supported;
+	}
+	s.cost = s.considered ? s.cost / s.considered : 1e300;
+	if (s.considered >= opts_.min_samples)
+		s.score = static_cast<double>(s.supported) / s.considered;
+	else
+		s.cost = 1e300;  // too little in view to judge: never preferred
+	return s;
+}
+
+ImageScore ImageVerifier::score(const std::vector<Feature>& features_O,
+                                const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ) const
+{
+	return score(edgeSamplesOf(features_O, opts_.sample_spacing_mm), T_OinL, occ);
+}
+
+}  // namespace mrolr::recog

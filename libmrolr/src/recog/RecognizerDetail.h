@@ -1,0 +1,29 @@
+#pragma once
+// Internal to Recognizer*.cpp: the verification tolerances of a level and a verified hypothesis.
+
+#include <mrolr/recog/RecognitionOptions.h>
+#include <mrolr/recog/Verification.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrolr::recog::detail
+{
+inline double verifyBeta_mm(const LevelParams& p, const RecognitionOptions& o)
+{
+	return std::min(2 * p.position_error_mm, o.verify_position_error_mm);
+}
+
+inline double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
+{
+	return std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
+}
+
+/** Ranking of a verified pose: by its image score when there is one (3D score as tie-break). */
+inline double rankOf(const VerificationResult& v, double image_score)
+{
+	return image_score >= 0 ? image_score + 0.05 * v.score : recog::rankOf(v);
+}
+}  // namespace mrolr::recog::detail
