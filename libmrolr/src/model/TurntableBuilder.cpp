@@ -90,6 +90,8 @@ void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 	    util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
 	util::requireInRange(cfg, section, "keep_radius_mm", keep_radius_mm, 1, 1e5);
 	support.loadFromConfigFile(cfg, section);
+	rims.max_radius_mm = keep_radius_mm;
+	rims.loadFromConfigFile(cfg, section);
 }
 
 void cropToObject(WireFrame& wf, const TurntableOptions& o)
@@ -171,9 +173,6 @@ WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions
                              const TurntableOptions& o)
 {
 	const stereo::StereoCalibration calib = stereo::loadStereoCalibration(set.calib_path);
-	WireFrame all;
-	all.name = set.object;
-	all.frame = WireFrameFrame::Object;
 	std::vector<WireFrame> views;
 	std::vector<double> angles_deg;
 	std::vector<ViewEdges> edges;
@@ -185,6 +184,17 @@ WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions
 		angles_deg.push_back(v.angle_deg);
 		edges.push_back(makeViewEdges(left, calib, set.T_LinT_mm, v.angle_deg));
 	}
+	WireFrame all = integrateViews(std::move(views), angles_deg, edges, o);
+	all.name = set.object;
+	return all;
+}
+
+WireFrame integrateViews(std::vector<WireFrame> views, const std::vector<double>& angles_deg,
+                         const std::vector<ViewEdges>& edges, const TurntableOptions& o)
+{
+	WireFrame all;
+	all.frame = WireFrameFrame::Object;
+	all.conics = fitRimsAcrossViews(views, o.rims);
 	keepFeaturesSeenFromNearViews(views, angles_deg, o.support, edges);
 	for (const auto& v : views)
 	{

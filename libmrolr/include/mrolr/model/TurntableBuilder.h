@@ -20,6 +20,7 @@
  */
 
 #include <mrolr/model/ModelEditor.h>
+#include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/TurntableBuilderSupport.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/SceneReconstruction.h>
@@ -62,6 +63,7 @@ struct TurntableOptions
 	int min_views = 2;  ///< a feature must be seen in this many views (dropUnsupported, support)
 	MergeOptions merge;
 	ViewSupportOptions support;  ///< which single-view features are edges (buildFromTurntable)
+	RimOptions rims;             ///< circles fitted to the arcs of all views (buildFromTurntable)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
@@ -76,6 +78,12 @@ WireFrame viewInObjectFrame(const stereo::StereoScene& scene, const Eigen::Isome
 /** Builds the object model from all views, merged; ids renumbered 1, 2, … */
 WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& scene_options,
                              const TurntableOptions& options);
+
+/** The integration of buildFromTurntable: @p views in frame O at turntable angles @p angles_deg
+ * (their left images' @p edges, may be empty) keep the features other views support
+ * (keepFeaturesSeenFromNearViews), are joined and merged (mergeDuplicates); ids renumbered. */
+WireFrame integrateViews(std::vector<WireFrame> views, const std::vector<double>& angles_deg,
+                         const std::vector<ViewEdges>& edges, const TurntableOptions& o);
 
 /** Drops features of @p merged that fewer than @p min_views of the single views duplicate. */
 size_t dropUnsupported(WireFrame& merged, const std::vector<WireFrame>& views, int min_views,
