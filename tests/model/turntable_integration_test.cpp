@@ -1,0 +1,175 @@
+// Integration of turntable views (thesis 6.1, B.2.1) on synthetic views in frame O: silhouettes of
+// round bodies dropped, fixed edges kept (TurntableBuilderSupport), circles fitted to the arcs of
+// several views (TurntableBuilderRims).
+#include <mrolr/model/TurntableBuilderRims.h>
+#include <mrolr/model/TurntableBuilderSupport.h>
+#include <mrolr/model/WireFrameSampling.h>
+
+#include <gtest/gtest.h>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+using namespace mrolr::model;
+
+namespace
+{
+constexpr double kR = 35;  // mm, cylinder radius
+
+Eigen::Vector3d onCylinder(double azimuth_deg, double z, double r = kR)
+{
+	const double a = azimuth_deg * M_PI / 180;
+	return {r * std::cos(a), r * std::sin(a), z};
+}
+
+/** Turntable view at angle k·45°: the camera looks from O's azimuth −k·45° (frame O turns). */
+double cameraAzimuthDeg(int k)
+{
+	return -45.0 * k;
+}
+
+/** View k of an upright cylinder: its two contour generators (at ±(90° + 3°) from the camera's
+ * azimuth) and a fixed vertical seam at azimuth 22.5° when the seam faces the camera. */
+WireFrame cylinderView(int k)
+{
+	WireFrame v;
+	v.frame = WireFrameFrame::Object;
+	const double cam = cameraAzimuthDeg(k);
+	for (double side : {-93.0, 93.0})
+		v.lines.push_back({0, onCylinder(cam + side, 5), onCylinder(cam + side, 110)});
+	if (std::cos((cam - 22.5) * M_PI / 180) > 0.5)
+		v.lines.push_back({0, onCylinder(22.5, 5), onCylinder(22.5, 110)});
+	return v;
+}
+
+std::vector<double> angles(size_t n)
+{
+	std::vector<double> a;
+	for (size_t k = 0; k < n; ++k) a.push_back(45.0 * k);
+	return a;
+}
+
+Conic3 circleArc(const Eigen::Vector3d& c, double r, double t1, double t2)
+{
+	return {0, c, Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX(), r, r, t1, t2};
+}
+}  // namespace
+
+TEST(TurntableSupport, SilhouettesOfACylinderGoAndAFixedSeamStays)
+{
+	std::vector<WireFrame> views;
+	for (int k = 0; k < 8; ++k) views.push_back(cylinderView(k));
+	ViewSupportOptions o;
+	const size_t removed = keepFeaturesSeenFromNearViews(views, angles(8), o);
+	EXPECT_EQ(removed, 16u);  // both contours of every view
+	size_t seams = 0;
+	for (const auto& v : views)
+		for (const auto& l : v.lines)
+		{
+			EXPECT_LT((l.p1 - onCylinder(22.5, 5)).norm(), 1e-9) << "a contour generator survived";
+			++seams;
+		}
+	EXPECT_EQ(seams, 2u);  // views 0 and 7 see the seam
+	// every view counts (no silhouette rule): the contours agree with the opposite views'
+	std::vector<WireFrame> all;
+	for (int k = 0; k < 8; ++k) all.push_back(cylinderView(k));
+	o.max_view_angle_deg = 180;
+	EXPECT_EQ(keepFeaturesSeenFromNearViews(all, angles(8), o), 0u);
+}
+
+TEST(TurntableSupport, EdgeAcrossTheViewSeenOnlyFromOppositeSidesStays)
+{
+	// a horizontal top edge lies along the scanlines of the views across it: seen from 0° and 180°
+	std::vector<WireFrame> views(8);
+	const Line3 edge{0, {-40, 20, 60}, {40, 20, 60}};
+	views[0].lines.push_back(edge);
+	views[4].lines.push_back(edge);
+	EXPECT_EQ(keepFeaturesSeenFromNearViews(views, angles(8), ViewSupportOptions()), 0u);
+	// the same seen once only goes
+	views[4].lines.clear();
+	EXPECT_EQ(keepFeaturesSeenFromNearViews(views, angles(8), ViewSupportOptions()), 1u);
+}
+
+TEST(TurntableSupport, SteepEdgeFromOppositeViewsNeedsAnEdgeInANearImage)
+{
+	// a box corner seen in views 0 and 4 only: kept when view 1's left image shows it
+	const Line3 corner{0, {30, 20, 5}, {30, 20, 100}};
+	auto twoViews = [&]
+	{
+		std::vector<WireFrame> v(8);
+		v[0].lines.push_back(corner);
+		v[4].lines.push_back(corner);
+		return v;
+	};
+	std::vector<ViewEdges> edges(8);
+	for (auto& e : edges)
+	{
+		e.gradient = cv::Mat::zeros(480, 640, CV_32F);
+		e.K = cv::Matx33d(700, 0, 320, 0, 700, 240, 0, 0, 1);
+		e.T_OinL = Eigen::Translation3d(-30, 0, 600) * Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX());
+	}
+	auto views = twoViews();
+	EXPECT_EQ(keepFeaturesSeenFromNearViews(views, angles(8), ViewSupportOptions(), edges), 2u);
+	std::vector<cv::Point3d> ends;
+	for (const auto* p : {&corner.p1, &corner.p2})
+	{
+		const Eigen::Vector3d q = edges[1].T_OinL * *p;
+		ends.emplace_back(-q.x(), -q.y(), q.z());
+	}
+	std::vector<cv::Point2d> px;
+	cv::projectPoints(ends, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), edges[1].K, edges[1].D, px);
+	cv::line(edges[1].gradient, px[0], px[1], cv::Scalar(40), 1);
+	views = twoViews();
+	EXPECT_EQ(keepFeaturesSeenFromNearViews(views, angles(8), ViewSupportOptions(), edges), 1u);
+	EXPECT_EQ(views[0].lines.size(), 1u);  // view 1 (near view 0) shows the edge
+	EXPECT_TRUE(views[4].lines.empty());   // views 2, 3, 5, 6 (near view 4) do not
+	EXPECT_GT(imageEdgeShare(sampleLine(corner, 2, 0), edges[1], 8), 0.9);
+}
+
+TEST(TurntableRims, ArcsOfFourViewsGiveOneCircleAndNestedRimsStaySeparate)
+{
+	const Eigen::Vector3d c(6, -4, 115);  // off the turntable axis: no centre is assumed
+	std::vector<WireFrame> views(4);
+	for (int k = 0; k < 4; ++k)
+	{
+		const double t = k * M_PI / 2 + 0.05 * k;
+		views[k].conics.push_back(circleArc(c, 33 + 0.2 * (k % 2), t - 0.9, t + 0.9));
+		views[k].conics.push_back(circleArc(c + Eigen::Vector3d(0, 0, 5), 28, t - 0.8, t + 0.8));
+		views[k].lines.push_back({0, {-60, 50, 40}, {-60, 50, 90}});  // not on any circle
+	}
+	const auto rims = fitRimsAcrossViews(views, RimOptions());
+	ASSERT_EQ(rims.size(), 2u);
+	for (const auto& rim : rims)
+	{
+		const bool outer = rim.a > 30.5;
+		EXPECT_NEAR(rim.a, outer ? 33.1 : 28, 0.3);
+		EXPECT_NEAR(rim.a, rim.b, 1e-9);
+		EXPECT_LT((rim.centre - c - Eigen::Vector3d(0, 0, outer ? 0 : 5)).norm(), 0.3);
+		EXPECT_GT(std::abs(rim.normal.z()), 0.999);
+		EXPECT_GT(rim.t2 - rim.t1, 1.9 * M_PI);  // four arcs of ~100° around the circle
+	}
+	for (const auto& v : views)
+	{
+		EXPECT_TRUE(v.conics.empty()) << "single-view arcs on a rim are replaced by it";
+		EXPECT_EQ(v.lines.size(), 1u);
+	}
+}
+
+TEST(TurntableRims, NoCircleFromOneViewOrFromStraightEdges)
+{
+	std::vector<WireFrame> one(2);
+	one[0].conics.push_back(circleArc({0, 0, 50}, 30, 0, 5));
+	EXPECT_TRUE(fitRimsAcrossViews(one, RimOptions()).empty());
+	EXPECT_EQ(one[0].conics.size(), 1u);
+	// a square's four edges touch its inscribed circle, but no arc supports a circle
+	std::vector<WireFrame> square(4);
+	for (auto& v : square)
+		for (int s = 0; s < 4; ++s)
+		{
+			const Eigen::Rotation2Dd R(s * M_PI / 2);
+			const Eigen::Vector2d a = R * Eigen::Vector2d(30, -30), b = R * Eigen::Vector2d(30, 30);
+			v.lines.push_back({0, {a.x(), a.y(), 60}, {b.x(), b.y(), 60}});
+		}
+	EXPECT_TRUE(fitRimsAcrossViews(square, RimOptions()).empty());
+}
