@@ -1,10 +1,13 @@
 #include <mrolr/geometry/IdealHead.h>
 
+#include "geometry_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 using namespace mrolr::geometry;
+using mrolr::geometry::test_util::numericJacobian;
 
 namespace
 {
@@ -14,20 +17,6 @@ Eigen::Vector3d randomPoint(std::mt19937& rng)
 {
 	std::uniform_real_distribution<double> lat(-3, 3), up(-1, 2.5), fwd(0.3, 6);
 	return {lat(rng), up(rng), fwd(rng)};
-}
-
-template <class F>
-Eigen::Matrix3d numericJacobian(F f, const Eigen::Vector3d& x, double h = 1e-6)
-{
-	Eigen::Matrix3d J;
-	for (int i = 0; i < 3; ++i)
-	{
-		Eigen::Vector3d a = x, b = x;
-		a[i] += h;
-		b[i] -= h;
-		J.col(i) = (f(a) - f(b)) / (2 * h);
-	}
-	return J;
 }
 }  // namespace
 
@@ -53,10 +42,11 @@ TEST(IdealHead, JacobiansMatchCentralDifferences)
 	{
 		const Eigen::Vector3d m = randomPoint(rng);
 		const auto num =
-		    numericJacobian([](const Eigen::Vector3d& x) { return idealHeadMeasure(x, kI); }, m);
+		    numericJacobian<3, 3>(
+		    [](const Eigen::Vector3d& x) { return idealHeadMeasure(x, kI); }, m, 1e-6);
 		EXPECT_LT((idealHeadJacobian(m, kI) - num).cwiseAbs().maxCoeff(), 1e-7) << m.transpose();
 		const Eigen::Vector3d h = idealHeadMeasure(m, kI);
-		const auto numInv = numericJacobian(
+		const auto numInv = numericJacobian<3, 3>(
 		    [](const Eigen::Vector3d& x) { return idealHeadInverse(x, kI); }, h, 1e-7);
 		const double scale = 1 + numInv.cwiseAbs().maxCoeff();
 		EXPECT_LT((idealHeadInverseJacobian(h, kI) - numInv).cwiseAbs().maxCoeff() / scale, 1e-6);
