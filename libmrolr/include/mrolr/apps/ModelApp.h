@@ -2,6 +2,7 @@
 /** `mrolr-model`: wire-frame models from stereo (issue 6, thesis 4.3, 6.1, 6.2, 7.1).
  *
  *     mrolr-model build --turntable DIR --out M.wf [--truth T.wf] [--json]
+ *                       [--align turntable|recog]
  *     mrolr-model scene --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out
  * S.wf mrolr-model edit M.wf [--out M2.wf] [--remove 3,5] [--remove-box x0,y0,z0,x1,y1,z1]
  *                 [--add-line x1,y1,z1,x2,y2,z2] [--add-conic cx,cy,cz,nx,ny,nz,ax,ay,az,a,b,t1,t2]
@@ -14,6 +15,7 @@
  * Options of every stage come from --config (default config/model.ini). Head angles in degrees. */
 
 #include <mrolr/model/ModelStats.h>
+#include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
@@ -46,6 +48,9 @@ class ModelApp
 	std::vector<std::vector<double>> remove_boxes, add_lines, add_conics;
 	std::optional<std::vector<double>> grasp;
 	std::optional<double> azimuth_deg, elevation_deg;
+	/** build: "turntable" (the known angles) or "recog" (views registered by recognition,
+	 * thesis 6.5, RecognitionAlignment.h). */
+	std::string align = "turntable";
 	bool merge = false, list = false, replace = false, json = false, help_shown = false;
 
 	// Results (set by run)
@@ -61,6 +66,11 @@ class ModelApp
 	void parseShow(const std::vector<std::string>& a);
 	void parseStats(const std::vector<std::string>& a);
 	int runBuild();
+	/** build --align recog: the model of @p set, registrations in report["registration"]. */
+	model::WireFrame buildByRecognition(const model::TurntableSet& set,
+	                                    const stereo::SceneOptions& so,
+	                                    const model::TurntableOptions& to,
+	                                    const std::string& truth_path);
 	int runScene();
 	int runEdit(std::ostream& out);
 	int runCliques();

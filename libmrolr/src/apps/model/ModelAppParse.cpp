@@ -12,7 +12,7 @@ using Str = TCLAP::ValueArg<std::string>;
 
 const char* kUsage =
     "mrolr-model: 3D wire-frame models from stereo (docs/model.md)\n"
-    "  build   --turntable DIR --out M.wf [--truth T.wf] [--json]\n"
+    "  build   --turntable DIR --out M.wf [--truth T.wf] [--align turntable|recog] [--json]\n"
     "  scene   --left L.png --right R.png (--calib C.ini | --head pan,tilt,vl,vr) --out S.wf\n"
     "  edit    M.wf [--out M2.wf] [--remove IDS] [--remove-box BOX] [--add-line L] [--add-conic "
     "C]\n"
@@ -84,10 +84,16 @@ void ModelApp::parseBuild(const std::vector<std::string>& a)
 	Str truth("", "truth", "exact model for statistics (default: the directory's)", false, "",
 	          "T.wf", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);
+	Str al("", "align",
+	       "how views are put together: turntable (the known angles) or recog (each view "
+	       "registered to the model so far by recognition, thesis 6.5)",
+	       false, align, "METHOD", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON summary", cmd);
-	if (!(help_shown = !parseTclap(cmd, a)))
-		turntable_dir = dir.getValue(), out_path = out.getValue(), truth_path = truth.getValue(),
-		config_path = cfg.getValue(), json = js.getValue();
+	if ((help_shown = !parseTclap(cmd, a))) return;
+	turntable_dir = dir.getValue(), out_path = out.getValue(), truth_path = truth.getValue(),
+	config_path = cfg.getValue(), json = js.getValue(), align = al.getValue();
+	if (align != "turntable" && align != "recog")
+		throw util::UsageError("--align: unknown method '" + align + "' (turntable, recog)");
 }
 
 void ModelApp::parseScene(const std::vector<std::string>& a)

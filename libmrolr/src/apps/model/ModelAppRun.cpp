@@ -113,12 +113,14 @@ int ModelApp::runBuild()
 	const auto set = model::loadTurntableSet(turntable_dir);
 	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
 	const auto to = loadOptions<model::TurntableOptions>(config_path, "turntable");
-	result = model::buildFromTurntable(set, so, to);
+	const std::string truth = truth_path.empty() ? set.truth_path : truth_path;
+	result = align == "recog" ? buildByRecognition(set, so, to, truth)
+	                          : model::buildFromTurntable(set, so, to);
 	model::addAutomaticCliques(result, loadOptions<model::CliqueOptions>(config_path, "cliques"));
 	model::saveWireFrame(result, out_path);
 	report["views"] = set.views.size();
+	report["align"] = align;
 	report["out"] = out_path;
-	const std::string truth = truth_path.empty() ? set.truth_path : truth_path;
 	if (!truth.empty()) addStatsToReport(model::loadWireFrame(truth));
 	return util::kExitOk;
 }
