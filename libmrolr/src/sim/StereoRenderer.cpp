@@ -131,7 +131,7 @@ StereoFrame StereoRenderer::render(const mrpt::opengl::COpenGLScene& scene,
 	f.T_LinW = T_C0inW * head_.T_LinC0(angles);
 	f.T_RinW = T_C0inW * head_.T_RinC0(angles);
 	f.left = renderView(scene, T_C0inW * head_.T_CamCvInC0(Side::Left, angles), &f.depth_left_m);
-	f.right = renderView(scene, T_C0inW * head_.T_CamCvInC0(Side::Right, angles));
+	f.right = renderView(scene, T_C0inW * head_.T_CamCvInC0(Side::Right, angles), &f.depth_right_m);
 	degrade(f.left, 2 * frame_index);
 	degrade(f.right, 2 * frame_index + 1);
 	f.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

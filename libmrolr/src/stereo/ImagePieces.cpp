@@ -80,28 +80,44 @@ void split(const std::vector<cv::Point2d>& p, int s, size_t lo, size_t hi, const
 	split(p, s, lo, worst, g, o, out);
 	split(p, s, worst, hi, g, o, out);
 }
-/** Joins neighbouring pieces of one string into one arc while their union is elliptical: the
- * top-down split cuts a rim at its lowest point, and a quarter of an ellipse is too short for a
- * reliable fit. */
+/** Do two consecutive line pieces turn by less than 45°, as the chords of a flat image ellipse do
+ * (a box corner turns more)? */
+bool smoothTurn(const ImagePiece& a, const ImagePiece& b)
+{
+	const cv::Point2d u = a.b - a.a, v = b.b - b.a;
+	return std::abs(u.dot(v)) >= std::cos(M_PI / 4) * cv::norm(u) * cv::norm(v);
+}
+
+/** Can pieces a and b (consecutive in one string) belong to one image ellipse: adjacent (at most
+ * a dropped short piece between them) and, for two lines, turning smoothly? */
+bool mayJoin(const ImagePiece& a, const ImagePiece& b, const FitOptions& o)
+{
+	return b.lo <= a.hi + static_cast<size_t>(o.min_line_edgels) &&
+	       (!a.is_line || !b.is_line || smoothTurn(a, b));
+}
+
+/** Joins runs of neighbouring pieces of one string into one arc when their union is elliptical
+ * (the longest such run from each piece): the top-down split cuts a rim at its lowest point, a
+ * quarter of an ellipse is too short for a reliable fit, and a flat rim seen nearly edge-on is
+ * split into short chords that are each straight within line_tol_px. */
 void mergeArcs(const std::vector<cv::Point2d>& p, const FitOptions& o,
                std::vector<ImagePiece>& pieces)
 {
-	for (size_t i = 0; i + 1 < pieces.size();)
+	for (size_t i = 0; i + 1 < pieces.size(); ++i)
 	{
-		ImagePiece &a = pieces[i], &b = pieces[i + 1];
-		std::optional<cv::RotatedRect> el;
-		if ((!a.is_line || !b.is_line) && b.lo <= a.hi)
-			el = fitEllipse2D(
-			    {p.begin() + static_cast<long>(a.lo), p.begin() + static_cast<long>(b.hi)}, o);
-		if (!el)
-		{
-			++i;
-			continue;
-		}
-		a.is_line = false;
-		a.ellipse = *el;
-		a.hi = b.hi;
-		pieces.erase(pieces.begin() + static_cast<long>(i) + 1);
+		size_t last = i;
+		std::optional<cv::RotatedRect> best;
+		for (size_t j = i + 1; j < pieces.size() && mayJoin(pieces[j - 1], pieces[j], o); ++j)
+			if (auto el = fitEllipse2D({p.begin() + static_cast<long>(pieces[i].lo),
+			                            p.begin() + static_cast<long>(pieces[j].hi)},
+			                           o))
+				last = j, best = el;
+		if (!best) continue;
+		pieces[i].is_line = false;
+		pieces[i].ellipse = *best;
+		pieces[i].hi = pieces[last].hi;
+		pieces.erase(pieces.begin() + static_cast<long>(i) + 1,
+		             pieces.begin() + static_cast<long>(last) + 1);
 	}
 }
 }  // namespace

@@ -7,19 +7,21 @@
 
 namespace mrolr::stereo
 {
-Rectifier::Rectifier(const StereoCalibration& c) : size_(c.image_size)
+Rectifier::Rectifier(const StereoCalibration& c, const RectifyOptions& o) : size_(c.image_size)
 {
 	if (size_.width <= 0 || size_.height <= 0 || c.baseline_mm() <= 0)
 		throw std::runtime_error(
 		    "rectification needs a calibration with an image size and baseline");
+	rect_size_ =
+	    cv::Size(cvRound(size_.width * o.size_scale), cvRound(size_.height * o.size_scale));
 	cv::Mat R1, R2, P1, P2, Q;
 	cv::stereoRectify(cv::Mat(c.K_left), cv::Mat(c.D_left), cv::Mat(c.K_right), cv::Mat(c.D_right),
-	                  size_, cv::Mat(c.R_RfromL), cv::Mat(c.t_LinR_mm), R1, R2, P1, P2, Q,
-	                  0, 0);
-	cv::initUndistortRectifyMap(cv::Mat(c.K_left), cv::Mat(c.D_left), R1, P1, size_, CV_32FC1,
+	                  size_, cv::Mat(c.R_RfromL), cv::Mat(c.t_LinR_mm), R1, R2, P1, P2, Q, 0,
+	                  o.alpha, rect_size_);
+	cv::initUndistortRectifyMap(cv::Mat(c.K_left), cv::Mat(c.D_left), R1, P1, rect_size_, CV_32FC1,
 	                            map_lx_, map_ly_);
-	cv::initUndistortRectifyMap(cv::Mat(c.K_right), cv::Mat(c.D_right), R2, P2, size_, CV_32FC1,
-	                            map_rx_, map_ry_);
+	cv::initUndistortRectifyMap(cv::Mat(c.K_right), cv::Mat(c.D_right), R2, P2, rect_size_,
+	                            CV_32FC1, map_rx_, map_ry_);
 	R1_ = R1;
 	f_px_ = P1.at<double>(0, 0);
 	cx_px_ = P1.at<double>(0, 2);
@@ -45,8 +47,21 @@ void Rectifier::rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left
 		                         std::to_string(left.rows) + " and " + std::to_string(right.cols) +
 		                         "x" + std::to_string(right.rows) + " but the calibration is for " +
 		                         std::to_string(size_.width) + "x" + std::to_string(size_.height));
-	cv::remap(left, left_rect, map_lx_, map_ly_, cv::INTER_LINEAR);
-	cv::remap(right, right_rect, map_rx_, map_ry_, cv::INTER_LINEAR);
+	// replicated borders: no artificial step edge where the source image ends (validMasks)
+	cv::remap(left, left_rect, map_lx_, map_ly_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+	cv::remap(right, right_rect, map_rx_, map_ry_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+}
+
+void Rectifier::validMasks(int margin_px, cv::Mat& left_mask, cv::Mat& right_mask) const
+{
+	const cv::Mat all(size_, CV_8U, cv::Scalar(255));
+	cv::remap(all, left_mask, map_lx_, map_ly_, cv::INTER_NEAREST, cv::BORDER_CONSTANT, 0);
+	cv::remap(all, right_mask, map_rx_, map_ry_, cv::INTER_NEAREST, cv::BORDER_CONSTANT, 0);
+	if (margin_px <= 0) return;
+	const cv::Mat k =
+	    cv::getStructuringElement(cv::MORPH_RECT, {2 * margin_px + 1, 2 * margin_px + 1});
+	cv::erode(left_mask, left_mask, k, {-1, -1}, 1, cv::BORDER_CONSTANT, 0);
+	cv::erode(right_mask, right_mask, k, {-1, -1}, 1, cv::BORDER_CONSTANT, 0);
 }
 
 Eigen::Vector3d Rectifier::pointInLeftCamera(double x_px, double y_px, double d_px) const

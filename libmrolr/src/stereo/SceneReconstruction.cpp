@@ -61,6 +61,32 @@ size_t addNewFeatures(StereoScene& scene, const std::vector<LineFit3>& lines,
 	return n;
 }
 
+/** The parts of the strings inside @p mask (non-zero), at least min_edgels long. */
+std::vector<EdgeString> keepInside(const std::vector<EdgeString>& strings, const cv::Mat& mask,
+                                   int min_edgels)
+{
+	std::vector<EdgeString> out;
+	const auto flush = [&](EdgeString& run)
+	{
+		if (static_cast<int>(run.size()) >= min_edgels) out.push_back(std::move(run));
+		run.clear();
+	};
+	for (const auto& s : strings)
+	{
+		EdgeString run;
+		for (const auto& e : s)
+		{
+			const cv::Point q(cvRound(e.p.x), cvRound(e.p.y));
+			if (q.inside(cv::Rect({0, 0}, mask.size())) && mask.at<uchar>(q))
+				run.push_back(e);
+			else
+				flush(run);
+		}
+		flush(run);
+	}
+	return out;
+}
+
 bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
 {
 	return m.string == prev.string && m.edgel - prev.edgel <= o.max_gap_edgels + 1 &&
@@ -75,6 +101,13 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	max_depth_mm = util::readDouble(cfg, section, "max_depth_mm", max_depth_mm);
 	util::requireInRange(cfg, section, "min_depth_mm", min_depth_mm, 1, 1e6);
 	util::requireInRange(cfg, section, "max_depth_mm", max_depth_mm, min_depth_mm + 1, 1e7);
+	rectify.alpha = util::readDouble(cfg, section, "rectify_alpha", rectify.alpha);
+	rectify.size_scale = util::readDouble(cfg, section, "rectify_size_scale", rectify.size_scale);
+	border_margin_px =
+	    static_cast<int>(util::readInt(cfg, section, "border_margin_px", border_margin_px));
+	util::requireInRange(cfg, section, "rectify_alpha", rectify.alpha, 0, 1);
+	util::requireInRange(cfg, section, "rectify_size_scale", rectify.size_scale, 0.25, 4);
+	util::requireInRange(cfg, section, "border_margin_px", border_margin_px, 0, 50);
 	edges.loadFromConfigFile(cfg, section);
 	match.loadFromConfigFile(cfg, section);
 	fit.loadFromConfigFile(cfg, section);
@@ -90,7 +123,9 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 void SceneOptions::dump(std::ostream& out) const
 {
-	out << "min_depth_mm = " << min_depth_mm << "\nmax_depth_mm = " << max_depth_mm << "\n";
+	out << "min_depth_mm = " << min_depth_mm << "\nmax_depth_mm = " << max_depth_mm
+	    << "\nrectify_alpha = " << rectify.alpha << "\nrectify_size_scale = " << rectify.size_scale
+	    << "\nborder_margin_px = " << border_margin_px << "\n";
 	edges.dump(out);
 	match.dump(out);
 	fit.dump(out);
@@ -119,10 +154,12 @@ std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>
 StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
                              const StereoCalibration& calib, const SceneOptions& o)
 {
-	const Rectifier rect(calib);
-	cv::Mat lr, rr;
+	const Rectifier rect(calib, o.rectify);
+	cv::Mat lr, rr, lm, rm;
 	rect.rectify(toGrey8(left), toGrey8(right), lr, rr);
-	const auto ls = detectEdgeStrings(lr, o.edges), rs = detectEdgeStrings(rr, o.edges);
+	rect.validMasks(o.border_margin_px, lm, rm);
+	const auto ls = keepInside(detectEdgeStrings(lr, o.edges), lm, o.edges.min_string_edgels);
+	const auto rs = keepInside(detectEdgeStrings(rr, o.edges), rm, o.edges.min_string_edgels);
 	const auto matches = matchEdgeStrings(ls, rs, rect.disparityAtDepth(o.max_depth_mm),
 	                                      rect.disparityAtDepth(o.min_depth_mm), o.match);
 	StereoScene scene;

@@ -1,3 +1,4 @@
+#include <mrolr/stereo/CornerPairStereo.h>
 #include <mrolr/stereo/EllipseStereo.h>
 #include <mrolr/stereo/SegmentStereo.h>
 #include <mrolr/util/Config.h>
@@ -206,11 +207,15 @@ void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const 
 			continue;
 		}
 		if (p.is_line && nearScanline(p, o.horizontal_deg))
-			if (auto h = horizontalLine(in, p, pairs, rect, o))
+		{
+			auto h = horizontalLine(in, p, pairs, rect, o);
+			if (!h && o.corner_pairs) h = cornerPairLine(in, i, rect, o);
+			if (h)
 			{
 				lines.push_back(*h);
 				continue;
 			}
+		}
 		if (p.is_line) continue;  // left to the 3D strings of the point matches
 		auto e = ellipsePairSamples(in, p, rect);
 		if (static_cast<int>(e.size()) < 2 * o.min_conic_matches) e = matchedEdgels(p, m, rect);
@@ -236,6 +241,9 @@ void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBas
 	rd("segment_max_disparity_gradient", max_disparity_gradient);
 	min_conic_matches = static_cast<int>(
 	    util::readInt(cfg, section, "segment_min_conic_matches", min_conic_matches));
+	corner_pairs = util::readBool(cfg, section, "segment_corner_pairs", corner_pairs);
+	rd("segment_corner_row_tol_px", corner_row_tol_px);
+	util::requireInRange(cfg, section, "segment_corner_row_tol_px", corner_row_tol_px, 0.01, 10);
 	util::requireInRange(cfg, section, "segment_min_row_overlap", min_row_overlap, 0, 1);
 	util::requireInRange(cfg, section, "segment_min_conic_matches", min_conic_matches, 3, 1e6);
 }
@@ -249,7 +257,9 @@ void SegmentStereoOptions::dump(std::ostream& out) const
 	    << "\nsegment_corner_radius_px = " << corner_radius_px
 	    << "\nsegment_duplicate_mm = " << duplicate_mm
 	    << "\nsegment_max_disparity_gradient = " << max_disparity_gradient
-	    << "\nsegment_min_conic_matches = " << min_conic_matches << "\n";
+	    << "\nsegment_min_conic_matches = " << min_conic_matches
+	    << "\nsegment_corner_pairs = " << corner_pairs
+	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px << "\n";
 }
 
 }  // namespace mrolr::stereo

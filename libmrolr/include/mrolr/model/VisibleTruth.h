@@ -6,7 +6,7 @@
  * inside the image and the rendered depth at its pixel (or one of the 8 neighbours, so that an
  * edge on a silhouette counts) agrees with its own depth within depth_tol_mm. Runs of visible
  * samples become line pieces or conic sub-arcs of the same feature (a conic keeps its centre and
- * axes, so radius errors still compare). */
+ * axes, so radius errors still compare). visibleInBothCameras clips to what both cameras see. */
 
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/StereoCalibration.h>
@@ -29,5 +29,16 @@ struct VisibilityOptions
 WireFrame visibleWireFrame(const WireFrame& truth_L, const cv::Mat& depth_mm,
                            const stereo::StereoCalibration& calib,
                            const VisibilityOptions& options = {});
+
+/** The parts of @p truth_L that BOTH cameras of @p calib see: a stereo pair can only reconstruct
+ * an edge seen in the left and the right image. As visibleWireFrame, with the right camera's
+ * depth image @p depth_right_mm (the simulator's depth_right_mm.png) checked too; a sample is
+ * moved into the right camera with the calibration's R_RfromL, t_LinR_mm and projected with
+ * K_right, D_right. Throws std::invalid_argument as visibleWireFrame does, naming which depth
+ * image is wrong. */
+WireFrame visibleInBothCameras(const WireFrame& truth_L, const cv::Mat& depth_left_mm,
+                               const cv::Mat& depth_right_mm,
+                               const stereo::StereoCalibration& calib,
+                               const VisibilityOptions& options = {});
 
 }  // namespace mrolr::model

@@ -45,7 +45,8 @@ struct RenderOptions
 struct StereoFrame
 {
 	mrpt::img::CImage left, right;          ///< 8-bit greyscale
-	mrpt::math::CMatrixFloat depth_left_m;  ///< z depth per left pixel (m); 0 where nothing
+	mrpt::math::CMatrixFloat depth_left_m;   ///< z depth per left pixel (m); 0 where nothing
+	mrpt::math::CMatrixFloat depth_right_m;  ///< the same for the right camera (both-camera truth)
 	Eigen::Isometry3d T_LinW = Eigen::Isometry3d::Identity();
 	Eigen::Isometry3d T_RinW = Eigen::Isometry3d::Identity();
 	double render_s = 0;  ///< wall-clock time spent rendering (reported apart from processing)

@@ -2,9 +2,9 @@
 /** Epipolar rectification of a calibrated stereo pair (thesis 4.3.1, fig 4.3.1.1) with OpenCV's
  * stereoRectify: both images are re-projected onto a common plane parallel to the baseline so that
  * conjugate epipolar lines are the same image row. Rectified left pixel (x, y) with disparity
- * d = x_left − x_right (px) is the 3D point Z = f·B/(d − d0), X = (x − cx)·Z/f, Y = (y − cy)·Z/f in the
- * rectified left camera (OpenCV axes); pointInLeftCamera returns it in the thesis left camera frame
- * L of the unrectified left camera (x left, y up, z along the optic axis), millimetres. The
+ * d = x_left − x_right (px) is the 3D point Z = f·B/(d − d0), X = (x − cx)·Z/f, Y = (y − cy)·Z/f in
+ * the rectified left camera (OpenCV axes); pointInLeftCamera returns it in the thesis left camera
+ * frame L of the unrectified left camera (x left, y up, z along the optic axis), millimetres. The
  * principal points of the rectified images differ by d0 = cx_left − cx_right (not forced to zero
  * disparity at infinity) so that verged cameras keep their common field of view. */
 
@@ -15,17 +15,32 @@
 
 namespace mrolr::stereo
 {
+/** How much of the original images the rectified ones keep (cv::stereoRectify's alpha and new
+ * image size). */
+struct RectifyOptions
+{
+	double alpha = 0;       ///< 0: only valid pixels (zoomed in); 1: every source pixel kept
+	double size_scale = 1;  ///< rectified image size = this × the calibration's image size
+};
+
 class Rectifier
 {
  public:
 	/** Computes the rectifying rotations and the remap tables (full-resolution, alpha = 0: only
 	 * valid pixels). Throws std::runtime_error for a degenerate calibration. */
-	explicit Rectifier(const StereoCalibration& calib);
+	explicit Rectifier(const StereoCalibration& calib, const RectifyOptions& options = {});
 
 	/** Rectified left and right images (same type as the input). Throws std::runtime_error if a
 	 * size differs from the calibration's image size. */
 	void rectify(const cv::Mat& left, const cv::Mat& right, cv::Mat& left_rect,
 	             cv::Mat& right_rect) const;
+
+	/** Masks (CV_8U, 255 = a source pixel) of the rectified left and right images, shrunk by
+	 * @p margin_px so that the border between image and no image is outside. */
+	void validMasks(int margin_px, cv::Mat& left_mask, cv::Mat& right_mask) const;
+
+	/** Size of the rectified images (px). */
+	cv::Size rectifiedSize() const { return rect_size_; }
 
 	/** 3D point (mm, thesis frame L of the original left camera) of rectified left pixel (x, y) px
 	 * at disparity d px (d > 0). */
@@ -44,7 +59,7 @@ class Rectifier
 	const cv::Matx33d& R_RectFromL() const { return R1_; }
 
  private:
-	cv::Size size_;
+	cv::Size size_, rect_size_;
 	cv::Mat map_lx_, map_ly_, map_rx_, map_ry_;
 	cv::Matx33d R1_;
 	Eigen::Matrix3d R_LthesisFromRect_;

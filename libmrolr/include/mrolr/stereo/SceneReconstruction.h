@@ -7,6 +7,7 @@
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
 #include <mrolr/stereo/HorizontalEdges.h>
+#include <mrolr/stereo/Rectifier.h>
 #include <mrolr/stereo/SegmentStereo.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
@@ -23,6 +24,8 @@ struct SceneOptions
 {
 	double min_depth_mm = 300;   ///< nearest depth searched (sets the largest disparity)
 	double max_depth_mm = 3000;  ///< farthest depth searched (sets the smallest disparity)
+	RectifyOptions rectify;      ///< how much of the source images the rectified ones keep
+	int border_margin_px = 2;    ///< edgels this near the edge of the source image are dropped
 	EdgeOptions edges;
 	MatchOptions match;
 	FitOptions fit;

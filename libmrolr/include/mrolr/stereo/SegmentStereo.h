@@ -35,6 +35,8 @@ struct SegmentStereoOptions
 	double duplicate_mm = 4;         ///< a piece feature this near a 3D-string one is not added
 	double max_disparity_gradient = 1.0;  ///< |Δd| / image length along a matched segment
 	int min_conic_matches = 8;            ///< point matches inside an arc for its disparity plane
+	bool corner_pairs = true;             ///< pair pieces along the scanlines by their end corners
+	double corner_row_tol_px = 1.0;       ///< rows of corresponding corners (CornerPairStereo.h)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;

@@ -34,13 +34,15 @@ int SimApp::runSnapshot(std::ostream&)
 	saveImage(f.left, p("left.png"));
 	saveImage(f.right, p("right.png"));
 	saveDepthPng(f.depth_left_m, p("depth_left_mm.png"));
+	saveDepthPng(f.depth_right_m, p("depth_right_mm.png"));
 	savePair(f.left, f.right, p("pair.png"));
 	std::ofstream(p("truth.json")) << truthJson(w, head, xv, a, f).dump(2) << "\n";
 	// exact wire-frame of the objects in the left camera (mrolr-model stats --truth --depth)
 	model::saveWireFrame(sim::tableSceneInCamera(w, lab.shapes, f.T_LinW, sim::SceneParts::Objects),
 	                     p("truth_left.wf"));
-	files_written = {p("left.png"),          p("right.png"),  p("pair.png"),
-	                 p("depth_left_mm.png"), p("truth.json"), p("truth_left.wf")};
+	files_written = {p("left.png"),           p("right.png"),  p("pair.png"),
+	                 p("depth_left_mm.png"),  p("depth_right_mm.png"),
+	                 p("truth.json"),         p("truth_left.wf")};
 	frames_written = 1;
 	render_s = f.render_s;
 	return 0;
