@@ -117,10 +117,16 @@ bool edgeInNearImages(const std::vector<FeatureSample>& samples, size_t own,
 	return false;
 }
 
-std::vector<std::vector<FeatureSample>> samplesOfViews(const std::vector<WireFrame>& views)
+/** Samples of every view; of its conics only with @p conics_only. */
+std::vector<std::vector<FeatureSample>> samplesOfViews(const std::vector<WireFrame>& views,
+                                                       bool conics_only = false)
 {
 	std::vector<std::vector<FeatureSample>> out;
-	for (const auto& v : views) out.push_back(sampleWireFrame(v, kSampleStepMm));
+	for (auto v : views)
+	{
+		if (conics_only) v.lines.clear();
+		out.push_back(sampleWireFrame(v, kSampleStepMm));
+	}
 	return out;
 }
 
@@ -153,14 +159,16 @@ size_t keepFeaturesSeenFromNearViews(std::vector<WireFrame>& views,
 {
 	if (angles_deg.size() != views.size() || (!edges.empty() && edges.size() != views.size()))
 		throw std::invalid_argument("keepFeaturesSeenFromNearViews: one angle (image) per view");
-	const auto view_samples = samplesOfViews(views);
+	// a conic must be seen as an arc in other views too: a thin ellipse fitted to straight strokes
+	// would otherwise be supported by the lines of the strokes
+	const auto all_samples = samplesOfViews(views), arc_samples = samplesOfViews(views, true);
 	size_t removed = 0;
 	for (size_t k = 0; k < views.size(); ++k)
 	{
 		std::vector<bool> drop;
 		for (size_t i = 0; i < featureCount(views[k]); ++i)
-			drop.push_back(
-			    !seenEnough(view_samples, angles_deg, k, featureSamples(views[k], i), edges, o));
+			drop.push_back(!seenEnough(i < views[k].lines.size() ? all_samples : arc_samples,
+			                           angles_deg, k, featureSamples(views[k], i), edges, o));
 		removed += static_cast<size_t>(std::count(drop.begin(), drop.end(), true));
 		const size_t n_lines = views[k].lines.size();
 		eraseMarked(views[k].lines, drop, 0);

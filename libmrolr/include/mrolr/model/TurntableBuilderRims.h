@@ -23,10 +23,10 @@ namespace mrolr::model
 struct RimOptions
 {
 	bool enabled = true;          ///< rim_fit
-	double tol_mm = 1.5;          ///< inlier: distance to the circle
+	double tol_mm = 1.0;          ///< inlier: distance to the circle
 	double max_tangent_deg = 20;  ///< inlier: tangent against the circle's
 	double min_arc_deg = 120;     ///< conic inliers must cover this much of the circle
-	int min_views = 2;            ///< inliers from this many views
+	int min_views = 3;            ///< inliers from this many views
 	double min_radius_mm = 5, max_radius_mm = 150;
 	double consume_fraction = 0.6;  ///< a feature this much on a kept circle is replaced by it
 	int iterations = 3000;          ///< RANSAC hypotheses per circle (fixed seed: reproducible)
