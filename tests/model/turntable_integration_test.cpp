@@ -107,7 +107,8 @@ TEST(TurntableSupport, SteepEdgeFromOppositeViewsNeedsAnEdgeInANearImage)
 	{
 		e.gradient = cv::Mat::zeros(480, 640, CV_32F);
 		e.K = cv::Matx33d(700, 0, 320, 0, 700, 240, 0, 0, 1);
-		e.T_OinL = Eigen::Translation3d(-30, 0, 600) * Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX());
+		e.T_OinL = Eigen::Translation3d(-30, 0, 600) *
+		           Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX());
 	}
 	auto views = twoViews();
 	EXPECT_EQ(keepFeaturesSeenFromNearViews(views, angles(8), ViewSupportOptions(), edges), 2u);

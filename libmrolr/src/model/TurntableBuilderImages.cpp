@@ -16,7 +16,8 @@ ViewEdges makeViewEdges(const cv::Mat& left_grey, const stereo::StereoCalibratio
 	cv::Sobel(smooth, gx, CV_32F, 1, 0, 3, 0.125);  // 1/8: grey levels per pixel
 	cv::Sobel(smooth, gy, CV_32F, 0, 1, 3, 0.125);
 	cv::magnitude(gx, gy, v.gradient);
-	const Eigen::Isometry3d T_OinT(Eigen::AngleAxisd(angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+	const Eigen::Isometry3d T_OinT(
+	    Eigen::AngleAxisd(angle_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
 	v.T_OinL = T_LinT_mm.inverse() * T_OinT;
 	v.K = calib.K_left;
 	v.D = calib.D_left;

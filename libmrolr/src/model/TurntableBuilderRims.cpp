@@ -53,7 +53,8 @@ std::optional<Circle> circleThrough(const Eigen::Vector3d& a, const Eigen::Vecto
 	const Eigen::Vector3d ab = b - a, ac = c - a, n = ab.cross(ac);
 	if (n.norm() < 1e-3 * ab.norm() * ac.norm()) return std::nullopt;
 	const Eigen::Vector3d centre =
-	    a + (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n.squaredNorm());
+	    a +
+	    (ac.squaredNorm() * n.cross(ab) + ab.squaredNorm() * ac.cross(n)) / (2 * n.squaredNorm());
 	return withBasis(centre, n, (a - centre).norm());
 }
 
@@ -124,8 +125,8 @@ size_t viewCount(const std::vector<PoolSample>& pool, const std::vector<size_t>&
 	return views.size();
 }
 
-bool acceptable(const Circle& k, const std::vector<PoolSample>& pool,
-                const std::vector<size_t>& in, const RimOptions& o)
+bool acceptable(const Circle& k, const std::vector<PoolSample>& pool, const std::vector<size_t>& in,
+                const RimOptions& o)
 {
 	if (k.r < o.min_radius_mm || k.r > o.max_radius_mm) return false;
 	if (static_cast<int>(viewCount(pool, in)) < o.min_views) return false;
@@ -159,7 +160,8 @@ std::optional<Circle> bestHypothesis(const std::vector<PoolSample>& pool, const 
 	size_t best_n = 0;
 	for (int it = 0; it < o.iterations; ++it)
 	{
-		const auto &a = pool[arcs[pick(rng)]], &b = pool[arcs[pick(rng)]], &c = pool[arcs[pick(rng)]];
+		const auto &a = pool[arcs[pick(rng)]], &b = pool[arcs[pick(rng)]],
+		           &c = pool[arcs[pick(rng)]];
 		const auto key = [](const PoolSample& s) { return std::pair(s.view, s.feature); };
 		if (key(a) == key(b) && key(b) == key(c)) continue;
 		const auto k = circleThrough(a.p, b.p, c.p);

@@ -93,8 +93,8 @@ int supportingViews(const std::vector<std::vector<FeatureSample>>& view_samples,
 	for (size_t j = 0; j < view_samples.size(); ++j)
 	{
 		if (j == own) continue;
-		const bool near_view =
-		    any_view || turntableAngleBetween(angles_deg[j], angles_deg[own]) <= o.max_view_angle_deg;
+		const bool near_view = any_view || turntableAngleBetween(angles_deg[j], angles_deg[own]) <=
+		                                       o.max_view_angle_deg;
 		n += supportedShare(samples, view_samples[j], near_view, o) >= o.min_fraction;
 	}
 	return n;

@@ -17,10 +17,11 @@ namespace mrolr::model
 /** The left image of one turntable view, ready for edge look-ups. */
 struct ViewEdges
 {
-	cv::Mat gradient;                                             ///< Sobel |∇I| (CV_32F), grey levels/px
-	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();  ///< p_L = T_OinL · p_O (thesis L, mm)
-	cv::Matx33d K = cv::Matx33d::eye();                          ///< left intrinsics (px)
-	cv::Vec<double, 5> D = {};                                   ///< left distortion
+	cv::Mat gradient;  ///< Sobel |∇I| (CV_32F), grey levels/px
+	Eigen::Isometry3d T_OinL =
+	    Eigen::Isometry3d::Identity();   ///< p_L = T_OinL · p_O (thesis L, mm)
+	cv::Matx33d K = cv::Matx33d::eye();  ///< left intrinsics (px)
+	cv::Vec<double, 5> D = {};           ///< left distortion
 };
 
 /** Gradient map and pose of the left image @p left_grey of a view at turntable angle @p angle_deg,

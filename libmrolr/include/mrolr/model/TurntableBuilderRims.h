@@ -1,6 +1,6 @@
 #pragma once
-/** Circles from the union of arcs of all turntable views (thesis 6.1, B.2.1). One view sees only the
- * front of a rim, and its conic fitted to that short arc can have its centre and radius far off
+/** Circles from the union of arcs of all turntable views (thesis 6.1, B.2.1). One view sees only
+ * the front of a rim, and its conic fitted to that short arc can have its centre and radius far off
  * (the bottle's shoulder: a = 25, b = 11 mm for a 35 mm circle), so that neither merging (equal
  * centre and size) nor the support of other views keeps it. The arcs of several views of one rim
  * lie on the same 3D circle in frame O, so a circle is fitted to the samples of all views' arcs

@@ -24,13 +24,13 @@ namespace mrolr::model
 /** Options of the view support test ([turntable] keys `support_*` of config/model.ini). */
 struct ViewSupportOptions
 {
-	double tol_mm = 4;              ///< a sample is supported by a sample of another view this near
-	double max_tangent_deg = 20;    ///< ... whose tangent is within this angle
+	double tol_mm = 4;            ///< a sample is supported by a sample of another view this near
+	double max_tangent_deg = 20;  ///< ... whose tangent is within this angle
 	double max_view_angle_deg = 90;  ///< steep pieces: only views turned at most this far count
 	double steep_max_deg = 45;       ///< a piece is steep when this near to O's z axis (deg)
 	double image_min_gradient = 8;   ///< image edge: Sobel |∇I| at least this (grey levels/px)
-	double min_fraction = 0.5;      ///< of a feature's length supported by one supporting view
-	int min_views = 2;              ///< views seeing a feature, its own included
+	double min_fraction = 0.5;       ///< of a feature's length supported by one supporting view
+	int min_views = 2;               ///< views seeing a feature, its own included
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
@@ -39,7 +39,8 @@ struct ViewSupportOptions
 double turntableAngleBetween(double a_deg, double b_deg);
 
 /** How many views other than @p own (in @p angles_deg order, frame O) support @p wf's feature
- * index @p feature (line index, then lines.size() + conic index) over min_fraction of its length. */
+ * index @p feature (line index, then lines.size() + conic index) over min_fraction of its length.
+ */
 int supportingViews(const std::vector<WireFrame>& views, const std::vector<double>& angles_deg,
                     size_t own, size_t feature, const ViewSupportOptions& o);
 
