@@ -42,7 +42,14 @@ void emptyView(const std::string& dir, int v)
 	cv::imwrite(stem + "_right.png", R);
 }
 
-AlignmentResult build(const std::string& dir, const apps::AlignOptions& ao = {})
+apps::AlignOptions matching(const std::string& match)
+{
+	apps::AlignOptions ao;
+	ao.match = match;
+	return ao;
+}
+
+AlignmentResult build(const std::string& dir, const apps::AlignOptions& ao)
 {
 	const auto set = model::loadTurntableSet(dir);
 	const auto truth = model::loadWireFrame(set.truth_path);
@@ -65,20 +72,20 @@ void print(const AlignmentResult& r)
 }
 }  // namespace
 
-TEST(AlignRecog, EveryBoxViewRegistersNearItsKnownAngle)
+/** Every view registered, within @p max_deg and @p max_mm of its known turn modulo the box's
+ * 180° symmetry; the model meets issue 6's targets. */
+void expectEveryViewRegistered(const AlignmentResult& r, double max_deg, double max_mm)
 {
-	const auto r = build(boxDir("all"));
 	print(r);
 	ASSERT_EQ(r.views.size(), 8u);
 	EXPECT_EQ(r.registered, 8u);
 	for (const auto& v : r.views)
 	{
 		EXPECT_TRUE(v.registered) << "view " << v.view << ": " << v.reason;
-		EXPECT_LT(v.rot_err_deg, 4.0) << "view " << v.view;
-		EXPECT_LT(v.trans_err_mm, 5.0) << "view " << v.view;
-		// the recovered turn, modulo the box's 180° symmetry
+		EXPECT_LT(v.rot_err_deg, max_deg) << "view " << v.view;
+		EXPECT_LT(v.trans_err_mm, max_mm) << "view " << v.view;
 		const double d = std::remainder(v.turn_deg + v.symmetry_deg - v.known_angle_deg, 360.0);
-		EXPECT_LT(std::abs(d), 4.0) << "view " << v.view;
+		EXPECT_LT(std::abs(d), max_deg) << "view " << v.view;
 	}
 	const auto q = model::compareToTruth(r.model, model::test::boxTruth());
 	model::printQuality(q, std::cout);
@@ -86,11 +93,22 @@ TEST(AlignRecog, EveryBoxViewRegistersNearItsKnownAngle)
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 }
 
+TEST(AlignRecog, EveryBoxViewRegistersNearItsKnownAngleIn3D)
+{
+	expectEveryViewRegistered(build(boxDir("all_3d"), matching("shorter")), 4.0, 5.0);
+}
+
+TEST(AlignRecog, EveryBoxViewRegistersNearItsKnownAngleInTheImages)
+{
+	// the image refinement pulls the translation towards image edges: a few mm looser than 3D
+	expectEveryViewRegistered(build(boxDir("all_images"), matching("images")), 4.0, 12.0);
+}
+
 TEST(AlignRecog, AnEmptyViewIsReportedNotMerged)
 {
 	const std::string dir = boxDir("empty_view");
 	emptyView(dir, 3);
-	const auto r = build(dir);
+	const auto r = build(dir, matching("shorter"));
 	print(r);
 	EXPECT_FALSE(r.views[3].registered);
 	EXPECT_FALSE(r.views[3].reason.empty());
@@ -106,7 +124,7 @@ TEST(AlignRecog, AnEmptySeedIsAnErrorNamingIt)
 	emptyView(dir, 0);
 	try
 	{
-		build(dir);
+		build(dir, matching("shorter"));
 		ADD_FAILURE() << "no error for an empty first view";
 	}
 	catch (const std::invalid_argument& e)
@@ -114,7 +132,7 @@ TEST(AlignRecog, AnEmptySeedIsAnErrorNamingIt)
 		EXPECT_NE(std::string(e.what()).find("seed view 0 has 0 features"), std::string::npos)
 		    << e.what();
 	}
-	apps::AlignOptions ao;
+	auto ao = matching("shorter");
 	ao.seed_view = 8;
 	EXPECT_THROW(build(dir, ao), std::invalid_argument);
 }
@@ -145,17 +163,21 @@ TEST(AlignRecog, OptionsAreReadAndCheckedByKey)
 	apps::AlignOptions o;
 	o.loadFromConfigFile(mrpt::config::CConfigFile("config/model.ini"), "align");
 	EXPECT_GE(o.passes, 1);
-	EXPECT_FALSE(apps::alignmentRecognitionOptions(o).verify_visible_only);
-	mrpt::config::CConfigFileMemory bad;
-	bad.setContent(std::string("[align]\npasses = 0\n"));
-	try
+	EXPECT_FALSE(apps::alignmentRecognitionOptions(matching("shorter")).verify_visible_only);
+	for (const std::string key : {"passes = 0", "match = icp", "seed_view = -1"})
 	{
-		o.loadFromConfigFile(bad, "align");
-		ADD_FAILURE();
-	}
-	catch (const std::exception& e)
-	{
-		EXPECT_NE(std::string(e.what()).find("passes"), std::string::npos) << e.what();
+		mrpt::config::CConfigFileMemory bad;
+		bad.setContent("[align]\n" + key + "\n");
+		try
+		{
+			apps::AlignOptions().loadFromConfigFile(bad, "align");
+			ADD_FAILURE() << key;
+		}
+		catch (const std::exception& e)
+		{
+			const std::string name = key.substr(0, key.find(' '));
+			EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+		}
 	}
 }
 
@@ -195,7 +217,7 @@ TEST(AlignRecog, AppReportsEveryViewsRegistration)
 	ASSERT_EQ(j["registration"].size(), 8u);
 	EXPECT_EQ(j["align"], "recog");
 	EXPECT_EQ(j["views_registered"], 7);
-	EXPECT_TRUE(j["registration"][0]["seed"].get<bool>());
+	EXPECT_TRUE(j["registration"][1]["seed"].get<bool>());  // config/model.ini: seed_view = 1
 	EXPECT_FALSE(j["registration"][5]["registered"].get<bool>());
 	EXPECT_TRUE(j["registration"][5].contains("reason"));
 	EXPECT_GE(j["quality"]["recovered_fraction"].get<double>(), 0.8);

@@ -8,7 +8,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 
 namespace mrolr::apps
@@ -76,80 +76,35 @@ double nearestSymmetryDeg(const Eigen::Isometry3d& dT, const model::WireFrame& t
 	return quarter != 0 && isSymmetry(truth, quarter) ? quarter : 0.0;
 }
 
-std::string notRecognised(const recog::RecognitionResult& r)
-{
-	std::ostringstream s;
-	s << "not recognised in the accumulated model (best score " << r.score << ")";
-	return s.str();
-}
-
-/** Recognises @p model in @p scene (frame M, up +z when @p upright): T_OinS, or not found. */
-recog::RecognitionResult recognise(const model::WireFrame& model, const model::WireFrame& scene,
-                                   const recog::RecognitionOptions& ro, bool upright)
-{
-	const recog::Recognizer rec(model, ro);
-	const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
-	return rec.recognize(scene, upright ? &up : nullptr);
-}
-
-/** One attempt. The shorter of the two wire-frames is the recogniser's model, the longer its
- * scene: the verified score is the supported fraction of the model, and the part the two share
- * is a larger fraction of the shorter one. */
-void tryRegister(ViewRegistration& r, const model::WireFrame& view_T, const model::WireFrame& acc,
-                 const recog::RecognitionOptions& ro, const AlignOptions& ao)
-{
-	if (r.features < 2)
-	{
-		r.reason = "view has " + std::to_string(r.features) + " features (needs 2)";
-		return;
-	}
-	try
-	{
-		r.view_is_model = model::totalLength(view_T) <= model::totalLength(acc);
-		const auto res = r.view_is_model ? recognise(view_T, acc, ro, ao.upright_prior)
-		                                 : recognise(acc, view_T, ro, ao.upright_prior);
-		r.registered = res.found;
-		r.reason = res.found ? "" : notRecognised(res);
-		r.T_VinM = r.view_is_model ? res.T_OinS : res.T_OinS.inverse();
-		r.score = res.score, r.level = res.level;
-	}
-	catch (const std::invalid_argument& e)
-	{
-		r.reason = std::string("cannot be matched: ") + e.what();
-	}
-}
 }  // namespace
 
-std::vector<ViewRegistration> registerViews(const std::vector<model::WireFrame>& views_T,
-                                            double seed_angle_deg,
-                                            const recog::RecognitionOptions& ro,
-                                            const AlignOptions& ao,
-                                            const model::TurntableOptions& to)
+std::vector<ViewRegistration> registerViews(const std::vector<AlignView>& views,
+                                            double seed_angle_deg, const AlignContext& c)
 {
-	const size_t seed = static_cast<size_t>(ao.seed_view);
-	if (seed >= views_T.size())
+	const size_t seed = static_cast<size_t>(c.align.seed_view);
+	if (seed >= views.size())
 		throw std::invalid_argument("alignment by recognition: seed_view " + std::to_string(seed) +
-		                            " but there are " + std::to_string(views_T.size()) + " views");
-	if (model::featureCount(views_T[seed]) < 2)
+		                            " but there are " + std::to_string(views.size()) + " views");
+	if (model::featureCount(views[seed].wf_T) < 2)
 		throw std::invalid_argument(
 		    "alignment by recognition: the seed view " + std::to_string(seed) + " has " +
-		    std::to_string(model::featureCount(views_T[seed])) +
+		    std::to_string(model::featureCount(views[seed].wf_T)) +
 		    " features on the object; it seeds the model and needs at least 2");
-	std::vector<ViewRegistration> regs(views_T.size());
+	std::vector<ViewRegistration> regs(views.size());
 	for (size_t i = 0; i < regs.size(); ++i)
-		regs[i].view = i, regs[i].features = model::featureCount(views_T[i]);
+		regs[i].view = i, regs[i].features = model::featureCount(views[i].wf_T);
 	regs[seed].registered = true, regs[seed].T_VinM = turnAboutZ(-seed_angle_deg);
 	regs[seed].turn_deg = seed_angle_deg;
-	model::WireFrame acc = moved(views_T[seed], regs[seed].T_VinM);
+	model::WireFrame acc = moved(views[seed].wf_T, regs[seed].T_VinM);
 	model::renumber(acc);
-	for (int pass = 1; pass <= ao.passes; ++pass)
+	for (int pass = 1; pass <= c.align.passes; ++pass)
 		for (auto& r : regs)
 		{
 			if (r.registered) continue;
-			tryRegister(r, views_T[r.view], acc, ro, ao);
+			matchView(r, views[r.view], acc, c);
 			if (!r.registered) continue;
 			r.pass = pass, r.turn_deg = -yawDeg(r.T_VinM);  // p_M = Rz(−angle) · p_T
-			integrateInto(acc, moved(views_T[r.view], r.T_VinM), to.merge);
+			integrateInto(acc, moved(views[r.view].wf_T, r.T_VinM), c.turntable.merge);
 		}
 	return regs;
 }
@@ -163,26 +118,28 @@ cv::Mat readImage(const std::string& path)
 	return img;
 }
 
-/** Every view reconstructed and moved into the turntable frame (not turned), cropped, and its
- * left image's edges posed in the turntable frame. */
+/** Every view reconstructed and moved into the turntable frame (not turned), cropped; its left
+ * image's edges posed in the turntable frame; its stereo pair when matching in the images. */
 struct ViewsInTurntableFrame
 {
-	std::vector<model::WireFrame> wf;
+	std::vector<AlignView> views;
 	std::vector<model::ViewEdges> edges;
 };
 
 ViewsInTurntableFrame reconstructViews(const model::TurntableSet& set,
-                                       const stereo::SceneOptions& so,
-                                       const model::TurntableOptions& to)
+                                       const stereo::SceneOptions& so, const AlignContext& c)
 {
 	const stereo::StereoCalibration calib = stereo::loadStereoCalibration(set.calib_path);
+	const auto io = c.align.match == "images" ? std::optional(imageOptions(c.align)) : std::nullopt;
 	ViewsInTurntableFrame out;
 	for (const auto& v : set.views)
 	{
-		const cv::Mat left = readImage(v.left_png);
-		out.wf.push_back(model::viewInObjectFrame(
-		    stereo::reconstructScene(left, readImage(v.right_png), calib, so), set.T_LinT_mm, 0.0,
-		    to));
+		const cv::Mat left = readImage(v.left_png), right = readImage(v.right_png);
+		AlignView view;
+		view.wf_T = model::viewInObjectFrame(stereo::reconstructScene(left, right, calib, so),
+		                                     set.T_LinT_mm, 0.0, c.turntable);
+		if (io) view.images = std::make_shared<recog::ImageVerifier>(left, right, calib, *io);
+		out.views.push_back(std::move(view));
 		out.edges.push_back(model::makeViewEdges(left, calib, set.T_LinT_mm, 0.0));
 	}
 	return out;
@@ -200,7 +157,7 @@ model::WireFrame integrate(const ViewsInTurntableFrame& views,
 	for (const auto& r : regs)
 	{
 		if (!r.registered) continue;
-		views_M.push_back(moved(views.wf[r.view], r.T_VinM));
+		views_M.push_back(moved(views.views[r.view].wf_T, r.T_VinM));
 		angles_deg.push_back(r.turn_deg);
 		edges.push_back(views.edges[r.view]);
 		edges.back().T_OinL = edges.back().T_OinL * r.T_VinM.inverse();
@@ -213,18 +170,20 @@ AlignmentResult buildByRecognition(const model::TurntableSet& set, const stereo:
                                    const model::TurntableOptions& to, const AlignOptions& ao,
                                    const model::WireFrame* truth)
 {
-	const auto ro = alignmentRecognitionOptions(ao);
-	const auto views = reconstructViews(set, so, to);
-	AlignmentResult out;
+	const AlignContext c{alignmentRecognitionOptions(ao), ao, to, set.T_LinT_mm};
 	if (static_cast<size_t>(ao.seed_view) >= set.views.size())
 		throw std::invalid_argument("[align] seed_view = " + std::to_string(ao.seed_view) +
 		                            " but the turntable set has " +
 		                            std::to_string(set.views.size()) + " views");
-	out.views = registerViews(views.wf, set.views[ao.seed_view].angle_deg, ro, ao, to);
+	const auto views = reconstructViews(set, so, c);
+	AlignmentResult out;
+	out.views = registerViews(views.views, set.views[ao.seed_view].angle_deg, c);
 	for (auto& r : out.views)
 	{
 		r.known_angle_deg = set.views[r.view].angle_deg;
-		if (r.registered) measureRegistrationError(r, views.wf[r.view], truth), ++out.registered;
+		if (!r.registered) continue;
+		measureRegistrationError(r, views.views[r.view].wf_T, truth);
+		++out.registered;
 	}
 	out.model = integrate(views, out.views, to);
 	out.model.name = set.object;
