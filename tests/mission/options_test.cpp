@@ -139,3 +139,30 @@ TEST(MissionOptions, SceneSourceIsSimulatedOrReconstructedWithItsSceneFile)
 	EXPECT_EQ(o.search.scene_source, "reconstructed");
 	EXPECT_GT(o.scene.max_depth_mm, o.scene.min_depth_mm);
 }
+
+TEST(MissionOptions, MeasurementSourceIsIdealOrImagesWithTheVisionFile)
+{
+	const auto ideal = test::optionsFrom(test::defaultMissionConfig());
+	EXPECT_EQ(ideal.navigation.measurement_source, "ideal");
+	expectError("navigation", "measurement_source", "camera", "ideal, images");
+	auto cfg = test::defaultMissionConfig();
+	cfg.write("navigation", "measurement_source", "images");
+	cfg.write("files", "vision_file", "no_such_vision.ini");
+	EXPECT_NE(errorOf(cfg).find("[files] vision_file"), std::string::npos) << errorOf(cfg);
+	cfg.write("files", "vision_file", "slam.ini");
+	const auto o = test::optionsFrom(cfg);
+	// The filter takes the vision file's R (image measurements), the head constants stay.
+	EXPECT_DOUBLE_EQ(o.slam.std_pan_rad, 0.001);
+	EXPECT_NE(o.slam.std_elevation_rad, ideal.slam.std_elevation_rad);
+	EXPECT_EQ(o.slam.head.constants.head_height_m, ideal.slam.head.constants.head_height_m);
+	EXPECT_EQ(o.vision.patch_size_px, 13);
+}
+
+TEST(MissionOptions, TurnStepsAndReversingAreOptionalNavigationKeys)
+{
+	const auto o = test::optionsFrom(test::defaultMissionConfig());
+	EXPECT_DOUBLE_EQ(o.trajectory.max_rotation_step_deg, o.navigation.max_rotation_step_deg);
+	EXPECT_GT(o.navigation.reverse_max_m, 0);
+	expectError("navigation", "reverse_max_m", "-1", "reverse_max_m");
+	expectError("navigation", "max_rotation_step_deg", "400", "max_rotation_step_deg");
+}

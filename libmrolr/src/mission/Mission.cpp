@@ -3,6 +3,7 @@
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionDevices.h>
+#include <mrolr/mission/MissionStereoHead.h>
 #include <mrolr/mission/ObstacleAvoidance.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/sim/ObjectWireFrame.h>
@@ -50,14 +51,15 @@ struct Mission::Impl
 	const MissionOptions& o;
 	MissionResult r;
 	std::map<std::string, model::WireFrame> models;
-	std::shared_ptr<SimulatedLab> lab;  ///< the truth behind the devices
-	MissionDevices dev;                 ///< sim or serial (driver = ...)
+	std::shared_ptr<SimulatedLab> lab;                ///< the truth behind the devices
+	MissionDevices dev;                               ///< sim or serial (driver = ...)
 	std::map<std::string, Eigen::Isometry3d>& poses;  ///< true object poses (the arm moves them)
 	sim::SimBase& base;                               ///< the true base (truth only, no commands)
 	std::mt19937 rng;
 	std::unique_ptr<Navigator> nav;
 	std::unique_ptr<ObjectSearch> search;
 	std::unique_ptr<ObstacleAvoidance> obstacles;  ///< obstacle mode
+	std::unique_ptr<MissionStereoHead> nav_head;   ///< measurement_source = images
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
 	bool render_failed = false;
 	std::string carried;  ///< instance standing on the base after retrieval
@@ -178,6 +180,11 @@ void Mission::Impl::navigate()
 		if (progress && *progress) (*progress)(r.timeline.stage(), s);
 	};
 	if (o.obstacle_mode) attachObstacleMode();
+	if (o.mode == NavigationMode::Slam && o.navigation.measurement_source == "images")
+	{
+		nav_head = std::make_unique<MissionStereoHead>(dev.head());
+		nav->useImages(*nav_head, [this] { return nav_head->grabSeconds(); });
+	}
 	for (size_t i = 1; i < o.route.size(); ++i) nav->driveTo(waypoint(o, o.route[i]));
 }
 
@@ -258,7 +265,10 @@ void Mission::Impl::finish()
 		r.map = nav->map();
 		r.measurements = nav->measurements;
 		r.measurements_rejected = nav->rejected;
+		r.image_searches = nav->image_cycles;
+		r.image_matches = nav->image_matched;
 	}
+	if (nav_head) r.navigation_pairs = nav_head->grabs();
 	r.success = r.found && r.retrieved && r.returned_home && !r.stopped;
 	if (r.failure.empty() && !r.found)
 		r.failure = "target '" + o.target + "' not found at any of " +

@@ -165,6 +165,16 @@ void readModelFiles(const CConfigFileBase& cfg, const std::string& dir, MissionO
 	o.rtx.loadFromConfigFile(rtx, "rtx");
 	o.grasp.loadFromConfigFile(rtx, "arm_grasp");
 }
+/** measurement_source = images: the vision area's [vision] and its filter ([slam], with the
+ * covariance R of image measurements) from [files] vision_file; the head constants stay. */
+void readVisionFile(const CConfigFileBase& cfg, const std::string& dir, MissionOptions& o)
+{
+	const auto vf = openNamed(cfg, "files", "vision_file", dir);
+	o.vision.loadFromConfigFile(vf, "vision");
+	const auto head = o.slam.head;
+	o.slam.loadFromConfigFile(vf, "slam");
+	o.slam.head = head;
+}
 }  // namespace
 
 MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std::string& base_dir)
@@ -177,7 +187,10 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 	o.sim_base.loadFromConfigFile(cfg, "sim_base");
 	o.sim_arm.loadFromConfigFile(cfg, "sim_arm");
 	o.navigation.loadFromConfigFile(cfg, "navigation");
+	if (o.navigation.max_rotation_step_deg > 0)
+		o.trajectory.max_rotation_step_deg = o.navigation.max_rotation_step_deg;
 	o.search.loadFromConfigFile(cfg, "search");
+	if (o.navigation.measurement_source == "images") readVisionFile(cfg, base_dir, o);
 	if (o.search.scene_source == "reconstructed")
 		o.scene.loadFromConfigFile(openNamed(cfg, "files", "scene_file", base_dir), "scene");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");

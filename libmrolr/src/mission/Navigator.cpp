@@ -31,8 +31,10 @@ Navigator::Navigator(const MissionOptions& o, hw::BaseDevice& base,
       rng_(o.seed + 101)
 {
 	filter_.reset(base_.odometry().xv_zxphi);
-	for (const auto& l : o_.world.landmarks)
-		if (l.known) filter_.addKnownFeature(l.name, l.p_LinW);
+	// With images every feature needs a saved patch (VisualSlam): no world landmarks then.
+	if (o_.navigation.measurement_source != "images")
+		for (const auto& l : o_.world.landmarks)
+			if (l.known) filter_.addKnownFeature(l.name, l.p_LinW);
 	record();
 }
 
@@ -75,7 +77,9 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs
 		std::vector<base::PlannedStep> plan;
 		{
 			ComputeTimer t(timeline_);
-			plan = base::planLeg(e, goal, model_, o_.trajectory);
+			// Obstacle mode looks ahead before each translation: no reversing blind.
+			const double reverse_m = before_translation ? 0.0 : o_.navigation.reverse_max_m;
+			plan = planMissionLeg(e, goal, model_, o_.trajectory, reverse_m);
 		}
 		if (!executeLeg(plan, goal, detours)) leg = -1;  // round an obstacle: plan the leg anew
 	}
@@ -106,7 +110,9 @@ void Navigator::execute(const base::PlannedStep& step)
 {
 	base_.step(step.u);
 	timeline_.advance(step.u.dt_s);
-	if (o_.mode == NavigationMode::Slam)
+	if (o_.mode == NavigationMode::Slam && vslam_)
+		measureInImages(step.u);
+	else if (o_.mode == NavigationMode::Slam)
 	{
 		{
 			ComputeTimer t(timeline_);

@@ -101,6 +101,10 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"steps", r.path.size()},
 	          {"measurements", r.measurements},
 	          {"measurements_rejected", r.measurements_rejected},
+	          {"measurement_source", o.navigation.measurement_source},
+	          {"navigation_pairs", r.navigation_pairs},
+	          {"image_searches", r.image_searches},
+	          {"image_matches", r.image_matches},
 	          {"features", r.map.size()},
 	          {"timeline", timelineJson(r.timeline)}};
 	if (o.obstacle_mode) j["obstacle"] = obstacleJson(r.obstacle);

@@ -21,6 +21,15 @@ void NavigationOptions::loadFromConfigFile(const CConfigFileBase& c, const std::
 	waypoint_tolerance_m = readDouble(c, s, "waypoint_tolerance_m");
 	max_correction_legs = static_cast<int>(util::readInt(c, s, "max_correction_legs"));
 	table_clearance_m = readDouble(c, s, "table_clearance_m");
+	max_rotation_step_deg = readDouble(c, s, "max_rotation_step_deg", max_rotation_step_deg);
+	reverse_max_m = readDouble(c, s, "reverse_max_m", reverse_max_m);
+	if (util::hasKey(c, s, "measurement_source"))
+		measurement_source = util::readString(c, s, "measurement_source");
+	if (measurement_source != "ideal" && measurement_source != "images")
+		throw util::ConfigError(util::describeKey(c, s, "measurement_source") + ": '" +
+		                        measurement_source + "' is not one of ideal, images");
+	util::requireInRange(c, s, "max_rotation_step_deg", max_rotation_step_deg, 0, 360);
+	util::requireInRange(c, s, "reverse_max_m", reverse_max_m, 0, 10);
 	util::requireInRange(c, s, "measurements_per_step", measurements_per_step, 0, 20);
 	util::requireInRange(c, s, "max_correction_legs", max_correction_legs, 0, 10);
 	util::requireInRange(c, s, "waypoint_tolerance_m", waypoint_tolerance_m, 1e-4, 1);
@@ -36,7 +45,10 @@ void NavigationOptions::dump(std::ostream& out) const
 	    << "\nmeasurement_time_s = " << measurement_time_s
 	    << "\nwaypoint_tolerance_m = " << waypoint_tolerance_m
 	    << "\nmax_correction_legs = " << max_correction_legs
-	    << "\ntable_clearance_m = " << table_clearance_m << "\n";
+	    << "\ntable_clearance_m = " << table_clearance_m
+	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
+	    << "\nreverse_max_m = " << reverse_max_m << "\nmeasurement_source = " << measurement_source
+	    << "\n";
 }
 
 void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

@@ -16,6 +16,7 @@
 #include <mrolr/sim/SimBase.h>
 #include <mrolr/slam/SlamOptions.h>
 #include <mrolr/stereo/SceneReconstruction.h>
+#include <mrolr/vision/VisionOptions.h>
 #include <mrolr/world/World.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -52,6 +53,19 @@ struct NavigationOptions
 	double waypoint_tolerance_m = 0.03;  ///< correction legs until the estimate is this close
 	int max_correction_legs = 3;
 	double table_clearance_m = 0.45;  ///< distance kept from a table edge when going round it
+	/** Optional: rotations in place are split into steps of at most this (deg), with measurements
+	 * after each, so mapped features keep the heading through a turn; 0: the labmate file's
+	 * [trajectory] max_rotation_step_deg. */
+	double max_rotation_step_deg = 0;
+	/** Optional: a goal behind the robot closer than this (m) is reached by driving backwards
+	 * (the head keeps facing the features it mapped) instead of turning round; 0: never. */
+	double reverse_max_m = 0;
+	/** Optional: where the landmark measurements come from. `ideal` (default): the ideal-head
+	 * angles (eq 5.40) of the true pose plus Gaussian noise (true_std_*). `images`: the vision
+	 * area's cycle (vision::VisualSlam) on the head's stereo pairs: features acquired and fixated
+	 * in the images, saved patches sought by NSSD in their innovation ellipses, triangulated
+	 * (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's filter). */
+	std::string measurement_source = "ideal";
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
@@ -117,7 +131,7 @@ struct MissionOptions
 	recog::RecognitionOptions recognition = recog::RecognitionOptions::defaults();
 	arm::RtxOptions rtx;
 	arm::GraspFeasibilityOptions grasp;
-	arm::ArmMount dock;  ///< known T_C0inA of the simulated docking (section [arm_mount])
+	arm::ArmMount dock;     ///< known T_C0inA of the simulated docking (section [arm_mount])
 	DeviceOptions devices;  ///< [device.base|head|arm]: sim or serial (and the serial links)
 	sim::SimBaseOptions sim_base;
 	sim::SimArmOptions sim_arm;
@@ -125,6 +139,8 @@ struct MissionOptions
 	SearchOptions search;
 	RetrievalOptions retrieval;
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
+	/** [vision] of [files] vision_file, read for measurement_source = images. */
+	vision::VisionOptions vision;
 	/** [scene] of [files] scene_file, read for scene_source = reconstructed. */
 	stereo::SceneOptions scene;
 

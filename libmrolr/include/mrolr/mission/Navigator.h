@@ -1,13 +1,16 @@
 #pragma once
 /** Waypoint navigation of the mission (thesis 5.6.3, 7.2.1): rotate–translate–rotate legs in 20 cm
  * steps on the base device, localised either by active-vision EKF-SLAM on the world's landmarks or
- * by dead reckoning. The simulated head measures the ideal-head angles (eq 5.40) of visible
- * landmarks with Gaussian noise (not image-based vision); legs are repeated from the new estimate
- * until it is within waypoint_tolerance_m. Straight legs that would cross a table go round it. */
+ * by dead reckoning. The head measures either the ideal-head angles (eq 5.40) of the world's
+ * visible landmarks with Gaussian noise (`ideal`), or features it acquires and finds again in its
+ * stereo pairs through the vision area (`images`, useImages()); legs are repeated from the new
+ * estimate until it is within waypoint_tolerance_m. Straight legs that would cross a table go round
+ * it. */
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/slam/ActiveSlamFilter.h>
+#include <mrolr/vision/VisualSlam.h>
 
 #include <functional>
 #include <memory>
@@ -39,6 +42,10 @@ class Navigator
 	/** @p truth: the true vehicle pose (for the simulated head's measurements only). */
 	Navigator(const MissionOptions& o, hw::BaseDevice& base, std::function<Eigen::Vector3d()> truth,
 	          Timeline& timeline);
+	/** measurement_source = images: from now on every step's measurements are made by
+	 * vision::VisualSlam on the pairs of @p head (features of its own, no world landmarks; the
+	 * grabbing time goes to the timeline's render time, the rest to compute). */
+	void useImages(vision::StereoHeadDevice& head, const std::function<double()>& grab_seconds);
 	/** Drives to @p goal (z, x, φ in W), going round tables in the way. */
 	void driveTo(const NamedPose& goal);
 	/** The current estimate (SLAM or odometry). */
@@ -55,6 +62,7 @@ class Navigator
 	    before_translation;
 	int max_detours_per_leg = 3;  ///< detours on one leg before the rest is driven unchecked
 	int measurements = 0, rejected = 0;
+	int image_cycles = 0, image_matched = 0;  ///< images: cycles that searched, matches found
 
  private:
 	/** Drives through @p via (z, x in W), arriving at each in the direction of travel. */
@@ -67,6 +75,8 @@ class Navigator
 	                int& detours);
 	void execute(const base::PlannedStep& step);
 	void measure();
+	/** measurements_per_step cycles of the vision area (the first one predicts with @p u). */
+	void measureInImages(const base::WheelControl& u);
 	std::vector<size_t> visibleMapped(const Eigen::Vector3d& xv_true);
 	void initialiseNewFeature(const Eigen::Vector3d& xv_true);
 	bool canSee(const Eigen::Vector3d& xv_true, const world::Landmark& l) const;
@@ -81,8 +91,21 @@ class Navigator
 	slam::ActiveSlamFilter filter_;
 	std::mt19937 rng_;
 	std::vector<PathSample> path_;
-	int detour_depth_ = 0;  ///< detours being driven inside detours
+	int detour_depth_ = 0;                       ///< detours being driven inside detours
+	std::unique_ptr<vision::VisualSlam> vslam_;  ///< images: the vision area's cycle
+	vision::StereoHeadDevice* images_head_ = nullptr;
+	std::function<double()> grab_seconds_;
 };
+
+/** Rotate–translate–rotate from @p from to @p to (z, x, φ in W) as base::planLeg, except that a
+ * goal behind the robot and at most @p reverse_max_m away is reached backwards: turn by less than
+ * 90° to face directly away from it, back up in the planner's steps (negative distances), turn to
+ * the goal's heading. */
+std::vector<base::PlannedStep> planMissionLeg(const Eigen::Vector3d& from,
+                                              const Eigen::Vector3d& to,
+                                              const base::LabmateModel& model,
+                                              const base::TrajectoryOptions& o,
+                                              double reverse_max_m);
 
 /** Via points that take the straight path from @p from to @p to (z, x in W) round every table of
  * @p w it would cross, keeping @p clearance_m from the table's edges; empty when the path is

@@ -1,0 +1,30 @@
+// The default mission with navigation measurements made in the rendered stereo pairs
+// ([navigation] measurement_source = images): the vision area's features, patches and matches.
+#include "MissionTestConfig.h"
+
+#include <mrolr/mission/Mission.h>
+
+#include <gtest/gtest.h>
+
+using namespace mrolr;
+
+TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("navigation", "measurement_source", "images");
+	cfg.write("search", "render_stereo", "false");  // the sweep's pairs are not needed here
+	const auto o = mission::test::optionsFrom(cfg);
+	const auto r = mission::Mission(o).run();
+	EXPECT_TRUE(r.success) << r.failure;
+	EXPECT_GT(r.navigation_pairs, r.image_searches);  // acquisitions grab pairs too
+	EXPECT_GT(r.image_searches, 20);
+	EXPECT_GE(r.image_matches, r.measurements);  // a measurement needs a match in both images
+	EXPECT_GT(r.measurements, static_cast<int>(0.8 * r.image_searches));
+	// The map holds the features acquired in the images, none of the world's landmarks.
+	ASSERT_FALSE(r.map.empty());
+	for (const auto& f : r.map) EXPECT_EQ(o.world.findLandmark(f.label), nullptr) << f.label;
+	EXPECT_LT(r.final_estimate_error_m, 0.1);
+	// Rendering is the simulator's time, kept out of the robot's compute.
+	EXPECT_GT(r.timeline.renderSeconds(), 0);
+	EXPECT_TRUE(r.shots.empty());
+}
