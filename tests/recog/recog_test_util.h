@@ -2,6 +2,7 @@
 /** Shared helpers of the recog tests: default options, pose errors. */
 
 #include <mrolr/recog/RecognitionOptions.h>
+#include <mrolr/recog/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 
 #include <Eigen/Geometry>
@@ -17,6 +18,35 @@ inline double rotationErrorDeg(const Eigen::Isometry3d& a, const Eigen::Isometry
 inline double translationErrorMm(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
 {
 	return (a.translation() - b.translation()).norm();
+}
+
+/** The noise of the fixed synthetic table scenes: endpoint noise 0.7 mm, 30 % of lines fragmented,
+ * 15 % missing, the far half hidden. */
+inline SceneNoise realisticNoise()
+{
+	SceneNoise n;
+	n.endpoint_sigma_mm = 0.7;
+	n.fragment_probability = 0.3;
+	n.missing_fraction = 0.15;
+	n.hide_back_side = true;
+	return n;
+}
+
+/** Calls @p trial(scene, seed) on the fixed synthetic table scenes of object @p k (6 seeds, 3
+ * other objects) that show at least half of it; returns how many there were. */
+template <class Trial>
+int forEachVisibleTableScene(const std::vector<model::WireFrame>& objects, size_t k, Trial trial)
+{
+	int trials = 0;
+	for (unsigned s = 0; s < 6; ++s)
+	{
+		const auto ts =
+		    makeTableScene(objects, static_cast<int>(k), 3, realisticNoise(), 1000 * k + s);
+		if (ts.visible_fraction < 0.5) continue;
+		++trials;
+		trial(ts, s);
+	}
+	return trials;
 }
 
 }  // namespace mrolr::recog::test

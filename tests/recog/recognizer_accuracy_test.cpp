@@ -19,17 +19,9 @@ double median(std::vector<double> v)
 	std::sort(v.begin(), v.end());
 	return v[v.size() / 2];
 }
-
-SceneNoise realisticNoise()
-{
-	SceneNoise n;
-	n.endpoint_sigma_mm = 0.7;
-	n.fragment_probability = 0.3;
-	n.missing_fraction = 0.15;
-	n.hide_back_side = true;
-	return n;
-}
 }  // namespace
+
+using test::realisticNoise;
 
 // The fixed set of synthetic table scenes: every lab object in 6 random poses among 3 other
 // objects, noisy, fragmented, its far side hidden and some segments missing.
@@ -42,27 +34,25 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 	for (size_t k = 0; k < objects.size(); ++k)
 	{
 		const Recognizer rec(objects[k], opts);
-		for (unsigned s = 0; s < 6; ++s)
-		{
-			const auto ts =
-			    makeTableScene(objects, static_cast<int>(k), 3, realisticNoise(), 1000 * k + s);
-			if (ts.visible_fraction < 0.5) continue;
-			++trials;
-			const auto r = rec.recognize(ts.scene);
-			const double er = test::rotationErrorDeg(r.T_OinS, ts.T_OinS);
-			const double et = test::translationErrorMm(r.T_OinS, ts.T_OinS);
-			if (!r.found || er > 10 || et > 30)
-			{
-				std::printf(
-				    "miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f vis %.2f\n",
-				    objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
-				    ts.visible_fraction);
-				continue;
-			}
-			++recognised;
-			rot.push_back(er);
-			trans.push_back(et);
-		}
+		trials += test::forEachVisibleTableScene(
+		    objects, k,
+		    [&](const TableScene& ts, unsigned s)
+		    {
+			    const auto r = rec.recognize(ts.scene);
+			    const double er = test::rotationErrorDeg(r.T_OinS, ts.T_OinS);
+			    const double et = test::translationErrorMm(r.T_OinS, ts.T_OinS);
+			    if (!r.found || er > 10 || et > 30)
+			    {
+				    std::printf("miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f "
+				                "vis %.2f\n",
+				                objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
+				                ts.visible_fraction);
+				    return;
+			    }
+			    ++recognised;
+			    rot.push_back(er);
+			    trans.push_back(et);
+		    });
 	}
 	const double rate = static_cast<double>(recognised) / trials;
 	std::printf("trials %d recognised %.3f median rot %.3f deg median trans %.3f mm\n", trials,

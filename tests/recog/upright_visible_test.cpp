@@ -1,5 +1,7 @@
 // The upright prior and the expected-visible verification score (SelfOcclusion.h): what a camera
 // sees of a box, and the synthetic table scenes searched with the scene's up direction.
+#include "recog_test_util.h"
+
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/recog/SyntheticObjects.h>
@@ -11,19 +13,10 @@
 #include <cmath>
 
 using namespace mrolr::recog;
+using test::realisticNoise;
 
 namespace
 {
-SceneNoise realisticNoise()
-{
-	SceneNoise n;
-	n.endpoint_sigma_mm = 0.7;
-	n.fragment_probability = 0.3;
-	n.missing_fraction = 0.15;
-	n.hide_back_side = true;
-	return n;
-}
-
 /** makeTableScene tilts every object 20–40° towards the camera: the room's up is the camera's
  * +y turned by the mean tilt, 30°, about x (tablePose). */
 Eigen::Vector3d tableUp()
@@ -103,16 +96,14 @@ TEST(upright_prior, table_scenes_with_up_keep_the_targets_and_no_false_positive)
 	for (size_t k = 0; k < objects.size(); ++k)
 	{
 		const Recognizer rec(objects[k], opts);
-		for (unsigned s = 0; s < 6; ++s)
-		{
-			const auto ts =
-			    makeTableScene(objects, static_cast<int>(k), 3, realisticNoise(), 1000 * k + s);
-			if (ts.visible_fraction < 0.5) continue;
-			++trials;
-			const auto r = rec.recognize(ts.scene, &up);
-			recognised += r.found && angleDeg(r.T_OinS.linear(), ts.T_OinS.linear()) < 10 &&
-			              (r.T_OinS.translation() - ts.T_OinS.translation()).norm() < 30;
-		}
+		trials += test::forEachVisibleTableScene(
+		    objects, k,
+		    [&](const TableScene& ts, unsigned)
+		    {
+			    const auto r = rec.recognize(ts.scene, &up);
+			    recognised += r.found && angleDeg(r.T_OinS.linear(), ts.T_OinS.linear()) < 10 &&
+			                  (r.T_OinS.translation() - ts.T_OinS.translation()).norm() < 30;
+		    });
 		auto others = objects;
 		others.erase(others.begin() + static_cast<long>(k));
 		for (unsigned s = 0; s < 3; ++s)

@@ -27,9 +27,12 @@ Eigen::Isometry3d moved(const Eigen::Isometry3d& T, const Eigen::Vector3d& c_L, 
 	       Eigen::Translation3d(-c_L) * T;
 }
 
+/** The yaw sweep prefers more supported samples, not a higher fraction: turned so that a cup's
+ * handle is hidden behind it, the rims alone are all supported (a high fraction); turned so that
+ * the handle shows and is supported, more samples are. */
 bool better(const ImageScore& a, const ImageScore& b)
 {
-	return a.score > b.score || (a.score == b.score && a.cost < b.cost);
+	return a.supported > b.supported || (a.supported == b.supported && a.cost < b.cost);
 }
 }  // namespace
 
@@ -65,7 +68,7 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
 			}
 		if (!improved) step_mm /= 2, step_rad /= 2;
 	}
-	return best_s.score >= swept_s.score ? best : swept;
+	return best_s.supported >= swept_s.supported ? best : swept;
 }
 
 }  // namespace mrolr::recog

@@ -1,3 +1,4 @@
+#include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/ImageVerifier.h>
 
 #include <opencv2/calib3d.hpp>
@@ -72,6 +73,14 @@ std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, doub
 			out.push_back({p, t, static_cast<int>(k)});
 		}
 	}
+	return out;
+}
+
+std::vector<EdgeSample> edgeSamplesOf(const model::WireFrame& wf, double spacing_mm)
+{
+	std::vector<EdgeSample> out;
+	for (const auto& s : model::sampleWireFrame(wf, spacing_mm))
+		out.push_back({s.p, s.tangent, s.feature});
 	return out;
 }
 

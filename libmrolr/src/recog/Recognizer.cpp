@@ -18,6 +18,7 @@ namespace mrolr::recog
 {
 using detail::rankOf;
 using detail::verifyBeta_mm;
+using detail::verifyAndRefine;
 using detail::verifyTheta_rad;
 
 namespace
@@ -57,8 +58,9 @@ std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const Oriented
 	return hyps;
 }
 
-/** Verifies a pose, then re-estimates it from all verified correspondences while that helps. */
-std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
+}  // namespace
+
+std::pair<Eigen::Isometry3d, VerificationResult> detail::verifyAndRefine(
     const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
     const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ)
 {
@@ -78,6 +80,8 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
 	return {T, std::move(v)};
 }
 
+namespace
+{
 double rankOf(const RecognitionResult& r)
 {
 	return r.image_score >= 0 ? r.image_score + 0.05 * r.score : r.score + 0.05 * r.coverage;
@@ -108,7 +112,9 @@ double confidenceOf(double score, size_t level, size_t levels)
 }  // namespace
 
 Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
-    : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques), opts_(opts)
+    : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques),
+      model_(model),
+      opts_(opts)
 {
 	if (opts_.levels.empty()) throw std::invalid_argument("recognition options have no levels");
 	centroid_O_.setZero();

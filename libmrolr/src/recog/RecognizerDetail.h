@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 #include <cmath>
 
 namespace mrolr::recog::detail
@@ -20,6 +22,12 @@ inline double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
 {
 	return std::min(2 * p.rotation_deg, o.verify_rotation_deg) * M_PI / 180.0;
 }
+
+/** Verifies @p T against @p scene at level @p p, then re-estimates it by Faugeras–Hebert from all
+ * verified correspondences while that helps (Recognizer.cpp). */
+std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
+    const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
+    const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ);
 
 /** Ranking of a verified pose: by its image score when there is one (3D score as tie-break). */
 inline double rankOf(const VerificationResult& v, double image_score)

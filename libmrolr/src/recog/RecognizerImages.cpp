@@ -13,7 +13,7 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
                                const Eigen::Vector3d* up_S) const
 {
 	const auto& o = images.options();
-	const auto samples = edgeSamplesOf(table_.features(), o.sample_spacing_mm);
+	const auto samples = edgeSamples(o.sample_spacing_mm);
 	for (auto& h : poses) h.image = images.score(samples, h.T, occlusion_.get()).score;
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });

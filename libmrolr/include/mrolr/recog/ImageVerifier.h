@@ -61,8 +61,13 @@ struct EdgeSample
 Eigen::Vector3d upAxisPoint(const std::vector<Feature>& features);
 
 /** Samples every @p spacing_mm along lines and around conics (an ellipse as a circle of its mean
- * semi-axis, as SelfOcclusion does); at least 2 per feature. */
+ * semi-axis, as SelfOcclusion does: a Feature keeps neither the major axis nor the arc's ends, so
+ * a partial arc is sampled whole); at least 2 per feature. */
 std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, double spacing_mm);
+
+/** Samples every @p spacing_mm along the lines and the conic arcs (their true shape and extent)
+ * of @p wf (model::sampleWireFrame); feature indices as featuresOf(wf): lines, then conics. */
+std::vector<EdgeSample> edgeSamplesOf(const model::WireFrame& wf, double spacing_mm);
 
 /** Result of one hypothesis in the images. */
 struct ImageScore

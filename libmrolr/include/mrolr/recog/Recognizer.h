@@ -98,6 +98,11 @@ class Recognizer
 	double modelLength_mm(size_t level) const;
 
 	const ModelTable& table() const { return table_; }
+	/** The model's edges sampled every @p spacing_mm for image verification (arcs as they are). */
+	std::vector<EdgeSample> edgeSamples(double spacing_mm) const
+	{
+		return edgeSamplesOf(model_, spacing_mm);
+	}
 	/** The self-occlusion verification uses with the scene up direction @p up_S: the model's
 	 * when options().verify_visible_only and an upright prior is set, else nullptr. */
 	const SelfOcclusion* occlusion(const Eigen::Vector3d* up_S) const { return occlusionFor(up_S); }
@@ -138,6 +143,7 @@ class Recognizer
 	                const ImageVerifier* images = nullptr) const;
 
 	ModelTable table_;
+	model::WireFrame model_;  ///< as given: image verification samples its arcs
 	RecognitionOptions opts_;
 	Eigen::Vector3d centroid_O_;
 	std::shared_ptr<const SelfOcclusion> occlusion_;
