@@ -2,7 +2,9 @@
 /** Object models from turntable stereo views (thesis 6.1, B.2.1): each view is reconstructed
  * (stereo::reconstructScene), moved into the object frame O with the calibrated camera-to-turntable
  * transform and the known turntable angle, cut to the object's cylinder above the table, and all
- * views are integrated by merging duplicated segments (ModelEditor mergeDuplicates).
+ * views are integrated (integrateViews): circles fitted to the arcs of all views together
+ * (TurntableBuilderRims.h), single-view features kept when other views see them, contours of round
+ * bodies dropped (TurntableBuilderSupport.h), then duplicated segments merged (mergeDuplicates).
  *
  * A turntable directory holds `turntable.ini` (docs/model.md "Turntable directories"):
  *
