@@ -3,6 +3,7 @@
 // gives the whole conic (row crossings and epipolar tangencies correspond).
 #include "SyntheticStereo.h"
 
+#include <mrolr/stereo/CornerPairStereo.h>
 #include <mrolr/stereo/ImagePieces.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 
@@ -70,4 +71,61 @@ TEST(PieceStereo, ImagePiecesKeepAWholeEllipseAsOneArc)
 	EXPECT_GE(arcs, 1u);
 	// the rim's outline (2π · 40 mm at 0.8 m, f = 700 px: about 220 px) is one arc, not quarters
 	EXPECT_GT(longest, 150u);
+}
+
+namespace
+{
+/** An image line piece from a to b (px), grey 100 above and 30 below. */
+ImagePiece segment(cv::Point2d a, cv::Point2d b)
+{
+	ImagePiece p;
+	p.is_line = true;
+	p.a = a.y <= b.y ? a : b;
+	p.b = a.y <= b.y ? b : a;
+	p.side_left = 100;
+	p.side_right = 30;
+	p.hi = 20;
+	return p;
+}
+
+/** A box face's top edge along the scanlines from corner (x1, y1) to corner (x2, y2) with the two
+ * side edges running down from the corners; the pieces stop 2 px short of the corners, as edge
+ * chains break there. */
+std::vector<ImagePiece> faceTop(double x1, double y1, double x2, double y2)
+{
+	const double s = (y2 - y1) / (x2 - x1);
+	return {segment({x1 + 2, y1 + 2 * s}, {x2 - 2, y2 - 2 * s}),
+	        segment({x1 - 0.2, y1 + 2}, {x1 - 4, y1 + 40}),
+	        segment({x2 + 0.4, y2 + 2}, {x2 + 8, y2 + 40})};
+}
+}  // namespace
+
+TEST(PieceStereo, EdgeAlongTheScanlinesFromItsTwoCorners)
+{
+	const Rectifier rect(testRig());
+	const std::vector<EdgeString> none;
+	const std::vector<EdgeMatch> no_matches;
+	const auto left = faceTop(200, 150, 300, 153);
+	const double d1 = 60, d2 = 56;  // the right end is farther away
+	const auto right = faceTop(200 - d1, 150, 300 - d2, 153);
+	const PieceStereoInput in{none, left, right, no_matches, 10, 200, &none};
+	const auto l = cornerPairLine(in, 0, rect, SegmentStereoOptions{});
+	ASSERT_TRUE(l.has_value());
+	// the corners are the intersections with the side edges, not the piece's own ends
+	const Eigen::Vector3d c1 = rect.pointInLeftCamera(200, 150, d1);
+	const Eigen::Vector3d c2 = rect.pointInLeftCamera(300, 153, d2);
+	EXPECT_LT((l->p1 - c1).norm(), 1e-6 * (c1 - c2).norm());
+	EXPECT_LT((l->p2 - c2).norm(), 1e-6 * (c1 - c2).norm());
+	// a right edge whose corners are on other rows is not the same edge
+	const auto shifted = faceTop(200 - d1, 152, 300 - d2, 155);
+	EXPECT_FALSE(cornerPairLine({none, left, shifted, no_matches, 10, 200, &none}, 0, rect,
+	                            SegmentStereoOptions{}));
+	// two equally good right edges: ambiguous, nothing is guessed
+	auto twice = right;
+	const auto other = faceTop(200 - 40, 150, 300 - 36, 153);
+	twice.insert(twice.end(), other.begin(), other.end());
+	EXPECT_FALSE(cornerPairLine({none, left, twice, no_matches, 10, 200, &none}, 0, rect,
+	                            SegmentStereoOptions{}));
+	// a side edge is not along the scanlines: no corner pair for it
+	EXPECT_FALSE(cornerPairLine(in, 1, rect, SegmentStereoOptions{}));
 }
