@@ -90,6 +90,8 @@ struct RenderedFixture
 	std::unique_ptr<Recognizer> skip, full;
 	cv::Mat ppf_scene;
 	std::unique_ptr<cv::ppf_match_3d::PPF3DDetector> ppf;
+	ImageVerificationOptions image_options;
+	std::unique_ptr<ImageVerifier> images;  ///< the scene's stereo pair
 
 	RenderedFixture()
 	{
@@ -97,7 +99,10 @@ struct RenderedFixture
 		const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile(app.config_path));
 		mrolr::apps::EvaluationOptions eo;
 		eo.loadFromConfigFile(cfg, "evaluation");
+		image_options.loadFromConfigFile(cfg, "image_verification");
 		scene = app.makeGenerator(eo)->make(0);
+		images = std::make_unique<ImageVerifier>(scene.left, scene.right, scene.calib,
+		                                         image_options);
 		for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",
 		                         "hole_punch", "large_cup", "stapler"})
 			if (!scene.find(name) && absent.name.empty())
@@ -146,6 +151,37 @@ void BM_RecogAbsentRendered(benchmark::State& state)
 	timeRecognition(state, state.range(0) ? *f.skip : *f.full, f.scene.scene);
 }
 BENCHMARK(BM_RecogAbsentRendered)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/** The same absent model searched with verification in the scene's stereo images (the edge maps
+ * built once per scene, BM_ImageEdgeMaps). */
+void BM_RecogAbsentRenderedImages(benchmark::State& state)
+{
+	auto& f = rendered();
+	for (auto _ : state)
+		benchmark::DoNotOptimize(f.skip->recognize(f.scene.scene, &f.scene.up_L, f.images.get()));
+}
+BENCHMARK(BM_RecogAbsentRenderedImages)->Unit(benchmark::kMillisecond);
+
+/** Canny, distance transform and edge directions of one stereo pair (once per scene). */
+void BM_ImageEdgeMaps(benchmark::State& state)
+{
+	auto& f = rendered();
+	for (auto _ : state)
+		benchmark::DoNotOptimize(
+		    ImageVerifier(f.scene.left, f.scene.right, f.scene.calib, f.image_options));
+}
+BENCHMARK(BM_ImageEdgeMaps)->Unit(benchmark::kMillisecond);
+
+/** One hypothesis scored in both images (the absent model at the first object's true pose). */
+void BM_ImageScoreOneHypothesis(benchmark::State& state)
+{
+	auto& f = rendered();
+	const auto samples = f.skip->edgeSamples(f.image_options.sample_spacing_mm);
+	for (auto _ : state)
+		benchmark::DoNotOptimize(f.images->score(samples, f.scene.objects.front().T_OinL,
+		                                         &f.skip->selfOcclusion()));
+}
+BENCHMARK(BM_ImageScoreOneHypothesis)->Unit(benchmark::kMillisecond);
 
 void BM_PpfAbsentRendered(benchmark::State& state)
 {
@@ -249,6 +285,12 @@ int main(int argc, char** argv)
 	    "rendered scene %.2f ms without, %.2f ms with, PPF %.2f ms; ratio MROLR (with "
 	    "skips) / PPF on the rendered scene = %.3f\n",
 	    abs0, abs1, rend0, rend1, rppf, rppf > 0 ? rend1 / rppf : 0.0);
+	const double rimg = get("BM_RecogAbsentRenderedImages"), maps = get("BM_ImageEdgeMaps"),
+	             hyp = get("BM_ImageScoreOneHypothesis");
+	std::printf(
+	    "image verification (CPU time): absent model on the rendered scene %.2f ms (3D only "
+	    "%.2f ms; ratio to PPF %.3f), edge maps of the pair %.2f ms, one hypothesis %.3f ms\n",
+	    rimg, rend1, rppf > 0 ? rimg / rppf : 0.0, maps, hyp);
 	std::printf(
 	    "summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
 	    "time ratio MROLR/PPF = %.3f\n",

@@ -110,10 +110,10 @@ TEST(rendered_eval, shipped_set_has_no_false_positive_and_keeps_its_rate)
 	const EvalSummary s = summarize(cases, opts);
 	EXPECT_GT(s.absent_cases, 0);
 	EXPECT_EQ(s.false_positives, 0);
-	// Regression guard, not the target (95 %): measured 4 of 28 with the image
-	// verification (3 of 28 in 3D only with the upright prior and the expected-visible score, 1 of
-	// 28 before them); docs/recog.md "Rendered table scenes".
-	EXPECT_GE(s.recognised, 3);
+	// Regression guard, not the target (95 %): measured 8 of 28 with the image
+	// verification (1 of 28 in 3D only with the same stereo code, 3 of 28 with the stereo of
+	// c2a26d4; the margin absorbs reconstruction changes); docs/recog.md "Rendered table scenes".
+	EXPECT_GE(s.recognised, 6);
 	RecordProperty("rate_cases", s.rate_cases);
 	RecordProperty("recognised", s.recognised);
 	RecordProperty("wrong_poses", s.wrong_poses);
