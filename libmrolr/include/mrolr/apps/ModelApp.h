@@ -9,8 +9,8 @@
  *                 [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]
  *     mrolr-model cliques M.wf [--out M2.wf] [--replace] [--json]
  *     mrolr-model show M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]
- *     mrolr-model stats M.wf [--truth T.wf [--depth D.png (--calib C.ini | --head ANGLES)]]
- * [--json]
+ *     mrolr-model stats M.wf [--truth T.wf [--depth D.png [--depth-right DR.png]
+ *                            (--calib C.ini | --head ANGLES)]] [--json]
  *
  * Options of every stage come from --config (default config/model.ini). Head angles in degrees. */
 
@@ -43,6 +43,7 @@ class ModelApp
 	std::string turntable_dir, left_png, right_png, calib_path, bisight_path = "config/bisight.ini";
 	std::string png_path, scene3d_path;
 	std::string depth_png;  ///< stats: left depth image (mm) restricting the truth to what is seen
+	std::string depth_right_png;  ///< stats: right depth image: the truth both cameras see
 	std::optional<std::vector<double>> head_deg;  ///< pan, tilt, γL, γR
 	std::vector<int> remove_ids;
 	std::vector<std::vector<double>> remove_boxes, add_lines, add_conics;

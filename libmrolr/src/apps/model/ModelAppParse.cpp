@@ -19,7 +19,8 @@ const char* kUsage =
     "          [--merge] [--grasp x,y,z,yaw,pitch,roll] [--list]\n"
     "  cliques M.wf [--out M2.wf] [--replace] [--json]\n"
     "  show    M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]\n"
-    "  stats   M.wf [--truth T.wf [--depth D.png (--calib C.ini | --head ANGLES)]] [--json]\n"
+    "  stats   M.wf [--truth T.wf [--depth D.png [--depth-right DR.png] (--calib C.ini | --head "
+    "ANGLES)]] [--json]\n"
     "'mrolr-model COMMAND --help' lists a command's options.\n";
 
 /** The subcommand's own arguments with "mrolr-model COMMAND" as argv[0]. */
@@ -186,6 +187,10 @@ void ModelApp::parseStats(const std::vector<std::string>& a)
 	          "left depth image (16-bit mm): compare with the visible part of the truth only "
 	          "(both models in left_camera; needs --calib or --head)",
 	          false, "", "D.png", cmd);
+	Str depth_r("", "depth-right",
+	            "right depth image (16-bit mm, with --depth): the part of the truth BOTH cameras "
+	            "see, all a stereo pair can reconstruct",
+	            false, "", "D.png", cmd);
 	Str calib("", "calib", "stereo calibration of the view (with --depth)", false, "", "C.ini",
 	          cmd);
 	Str head("", "head", "head angles pan,tilt,vl,vr (deg) of the view: the ideal head cameras",
@@ -196,10 +201,13 @@ void ModelApp::parseStats(const std::vector<std::string>& a)
 	if ((help_shown = !parseTclap(cmd, a))) return;
 	model_path = model.getValue(), truth_path = truth.getValue(), config_path = cfg.getValue();
 	depth_png = depth.getValue(), calib_path = calib.getValue(), bisight_path = bis.getValue();
+	depth_right_png = depth_r.getValue();
 	json = js.getValue();
 	if (!head.getValue().empty()) head_deg = numbers(head.getValue(), 4, "--head");
 	if (!depth_png.empty() && (truth_path.empty() || (calib_path.empty() && !head_deg)))
 		throw util::UsageError("stats --depth needs --truth and --calib or --head");
+	if (!depth_right_png.empty() && depth_png.empty())
+		throw util::UsageError("stats --depth-right needs --depth (the left depth image)");
 }
 
 }  // namespace mrolr::apps

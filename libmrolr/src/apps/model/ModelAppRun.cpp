@@ -234,10 +234,19 @@ void ModelApp::statsAgainstTruth(const std::string& name)
 	const auto compared = inFrameOf(result, truth, name);
 	if (!depth_png.empty())
 	{
-		const cv::Mat depth = cv::imread(depth_png, cv::IMREAD_UNCHANGED);
-		if (depth.empty()) throw std::runtime_error("cannot read depth image " + depth_png);
-		truth = model::visibleWireFrame(truth, depth, viewCalibration());
+		const auto read = [](const std::string& png)
+		{
+			const cv::Mat d = cv::imread(png, cv::IMREAD_UNCHANGED);
+			if (d.empty()) throw std::runtime_error("cannot read depth image " + png);
+			return d;
+		};
+		const cv::Mat depth = read(depth_png);
+		truth = depth_right_png.empty()
+		            ? model::visibleWireFrame(truth, depth, viewCalibration())
+		            : model::visibleInBothCameras(truth, depth, read(depth_right_png),
+		                                          viewCalibration());
 		report["visible_truth_length_mm"] = model::totalLength(truth);
+		report["visible_in"] = depth_right_png.empty() ? "left" : "both";
 	}
 	addStatsToReport(compared, truth);
 }
