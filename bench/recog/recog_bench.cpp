@@ -101,8 +101,8 @@ struct RenderedFixture
 		eo.loadFromConfigFile(cfg, "evaluation");
 		image_options.loadFromConfigFile(cfg, "image_verification");
 		scene = app.makeGenerator(eo)->make(0);
-		images = std::make_unique<ImageVerifier>(scene.left, scene.right, scene.calib,
-		                                         image_options);
+		images =
+		    std::make_unique<ImageVerifier>(scene.left, scene.right, scene.calib, image_options);
 		for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",
 		                         "hole_punch", "large_cup", "stapler"})
 			if (!scene.find(name) && absent.name.empty())
@@ -178,8 +178,8 @@ void BM_ImageScoreOneHypothesis(benchmark::State& state)
 	auto& f = rendered();
 	const auto samples = f.skip->edgeSamples(f.image_options.sample_spacing_mm);
 	for (auto _ : state)
-		benchmark::DoNotOptimize(f.images->score(samples, f.scene.objects.front().T_OinL,
-		                                         &f.skip->selfOcclusion()));
+		benchmark::DoNotOptimize(
+		    f.images->score(samples, f.scene.objects.front().T_OinL, &f.skip->selfOcclusion()));
 }
 BENCHMARK(BM_ImageScoreOneHypothesis)->Unit(benchmark::kMillisecond);
 

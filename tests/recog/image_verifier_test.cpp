@@ -6,11 +6,15 @@
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/imgproc.hpp>
+
+#include <sstream>
 
 using namespace mrolr::recog;
 
@@ -33,7 +37,8 @@ cv::Point2d pixel(const Eigen::Vector3d& p_L, double cam_x_cv_mm)
 	return {kFocal_px * c.x() / c.z() + 320, kFocal_px * c.y() / c.z() + 240};
 }
 
-void fillPolygon(cv::Mat& img, const std::vector<Eigen::Vector3d>& p_L, double cam_x_cv_mm, int grey)
+void fillPolygon(cv::Mat& img, const std::vector<Eigen::Vector3d>& p_L, double cam_x_cv_mm,
+                 int grey)
 {
 	std::vector<cv::Point> px;
 	for (const auto& p : p_L)
@@ -60,15 +65,16 @@ cv::Mat draw(const Eigen::Isometry3d& T_OinL, double cam_x_cv_mm)
 		std::vector<Eigen::Vector3d> q;
 		Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 		for (int i : faces[f]) q.push_back(corner(i)), centre += corner(i) / 4;
-		const Eigen::Vector3d n = T_OinL.linear() * (0.5 * (-Eigen::Vector3d::Unit(f / 2)) *
-		                                                  (f % 2 ? -2.0 : 2.0));
+		const Eigen::Vector3d n =
+		    T_OinL.linear() * (0.5 * (-Eigen::Vector3d::Unit(f / 2)) * (f % 2 ? -2.0 : 2.0));
 		if (n.dot(camera_L - centre) <= 0) continue;
 		fillPolygon(img, q, cam_x_cv_mm, 70 + 30 * f);
 		top = top || f == 5;
 	}
 	if (!top) return img;
 	std::vector<Eigen::Vector3d> slot, button;
-	for (const auto& p : std::vector<Eigen::Vector3d>{{-50, -5, 55}, {30, -5, 55}, {30, 5, 55}, {-50, 5, 55}})
+	for (const auto& p :
+	     std::vector<Eigen::Vector3d>{{-50, -5, 55}, {30, -5, 55}, {30, 5, 55}, {-50, 5, 55}})
 		slot.push_back(T_OinL * p);
 	for (int i = 0; i < 72; ++i)
 		button.push_back(T_OinL * Eigen::Vector3d(55 + 10 * std::cos(i * M_PI / 36),
@@ -92,8 +98,8 @@ struct Pair
 {
 	std::vector<Feature> box = featuresOf(makeStaplerBox());
 	SelfOcclusion occ{box};
-	ImageVerifier images{draw(boxPose(), 0), draw(boxPose(), -kBaseline_mm),
-	                     calibration(), ImageVerificationOptions()};
+	ImageVerifier images{draw(boxPose(), 0), draw(boxPose(), -kBaseline_mm), calibration(),
+	                     ImageVerificationOptions()};
 };
 }  // namespace
 
@@ -201,4 +207,16 @@ TEST(image_verifier, options_name_the_bad_key)
 	}
 	cfg.setContent(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
 	EXPECT_THROW(o.loadFromConfigFile(cfg, "iv"), mrolr::util::ConfigError);
+}
+
+// The shipped [image_verification] equals the defaults (tests and the mission use the defaults).
+TEST(image_verifier, shipped_options_are_the_defaults)
+{
+	const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile("config/recognition.ini"));
+	ImageVerificationOptions shipped;
+	shipped.loadFromConfigFile(cfg, "image_verification");
+	std::ostringstream a, b;
+	shipped.dump(a);
+	ImageVerificationOptions().dump(b);
+	EXPECT_EQ(a.str(), b.str());
 }

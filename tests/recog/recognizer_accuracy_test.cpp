@@ -43,10 +43,11 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 			    const double et = test::translationErrorMm(r.T_OinS, ts.T_OinS);
 			    if (!r.found || er > 10 || et > 30)
 			    {
-				    std::printf("miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f "
-				                "vis %.2f\n",
-				                objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
-				                ts.visible_fraction);
+				    std::printf(
+				        "miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f "
+				        "vis %.2f\n",
+				        objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
+				        ts.visible_fraction);
 				    return;
 			    }
 			    ++recognised;

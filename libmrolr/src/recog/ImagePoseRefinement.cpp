@@ -59,7 +59,8 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
 		for (int k = 0; k < 6 && !improved; ++k)
 			for (const double sign : {1.0, -1.0})
 			{
-				const Eigen::Isometry3d T = moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
+				const Eigen::Isometry3d T =
+				    moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
 				const ImageScore s = score(samples_O, T, occ);
 				++evals;
 				if (s.cost >= best_s.cost) continue;

@@ -3,32 +3,34 @@
 
 namespace mrolr::recog
 {
+using util::readDoubleInRange;
+
 namespace
 {
-double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-              const std::string& key, double lo, double hi)
+int readIntInRange(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                   const std::string& key, int lo, int hi)
 {
-	const double v = util::readDouble(cfg, section, key);
-	util::requireInRange(cfg, section, key, v, lo, hi);
-	return v;
+	const long v = util::readInt(cfg, section, key);
+	util::requireInRange(cfg, section, key, static_cast<double>(v), lo, hi);
+	return static_cast<int>(v);
 }
 }  // namespace
 
 void ImageVerificationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                                   const std::string& section)
 {
-	blur_sigma_px = readIn(cfg, section, "blur_sigma_px", 0, 20);
-	canny_low = readIn(cfg, section, "canny_low", 0, 10000);
-	canny_high = readIn(cfg, section, "canny_high", canny_low, 10000);
-	edge_distance_px = readIn(cfg, section, "edge_distance_px", 0, 100);
-	orientation_tol_deg = readIn(cfg, section, "orientation_tol_deg", 0, 90);
-	sample_spacing_mm = readIn(cfg, section, "sample_spacing_mm", 0.1, 1000);
-	min_samples = static_cast<int>(readIn(cfg, section, "min_samples", 1, 1e6));
-	min_score = readIn(cfg, section, "min_score", 0, 1);
-	prefilter_score = readIn(cfg, section, "prefilter_score", 0, 1);
-	refine_candidates = static_cast<int>(readIn(cfg, section, "refine_candidates", 0, 1000));
-	yaw_step_deg = readIn(cfg, section, "yaw_step_deg", 0, 180);
-	truncate_px = readIn(cfg, section, "truncate_px", 0.1, 1000);
+	blur_sigma_px = readDoubleInRange(cfg, section, "blur_sigma_px", 0, 20);
+	canny_low = readDoubleInRange(cfg, section, "canny_low", 0, 10000);
+	canny_high = readDoubleInRange(cfg, section, "canny_high", canny_low, 10000);
+	edge_distance_px = readDoubleInRange(cfg, section, "edge_distance_px", 0, 100);
+	orientation_tol_deg = readDoubleInRange(cfg, section, "orientation_tol_deg", 0, 90);
+	sample_spacing_mm = readDoubleInRange(cfg, section, "sample_spacing_mm", 0.1, 1000);
+	min_samples = readIntInRange(cfg, section, "min_samples", 1, 1000000);
+	min_score = readDoubleInRange(cfg, section, "min_score", 0, 1);
+	prefilter_score = readDoubleInRange(cfg, section, "prefilter_score", 0, 1);
+	refine_candidates = readIntInRange(cfg, section, "refine_candidates", 0, 1000);
+	yaw_step_deg = readDoubleInRange(cfg, section, "yaw_step_deg", 0, 180);
+	truncate_px = readDoubleInRange(cfg, section, "truncate_px", 0.1, 1000);
 }
 
 void ImageVerificationOptions::dump(std::ostream& out) const

@@ -147,8 +147,8 @@ void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3
 }
 
 void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                      const SelfOcclusion* occ, double truncate_px, int& considered,
-                      int& supported, double& cost_px2) const
+                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
+                      double& cost_px2) const
 {
 	const Eigen::Isometry3d T_OinC = T_CcvInL_.inverse() * T_OinL;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
@@ -185,12 +185,11 @@ ImageVerifier::ImageVerifier(const cv::Mat& left, const cv::Mat& right,
 {
 	const cv::Mat l = greyOf(left, "left"), r = greyOf(right, "right");
 	if (l.size() != calib.image_size || r.size() != calib.image_size)
-		throw std::invalid_argument("image verification: images are " + std::to_string(l.cols) +
-		                            "x" + std::to_string(l.rows) + " and " +
-		                            std::to_string(r.cols) + "x" + std::to_string(r.rows) +
-		                            " px, the calibration's " +
-		                            std::to_string(calib.image_size.width) + "x" +
-		                            std::to_string(calib.image_size.height));
+		throw std::invalid_argument(
+		    "image verification: images are " + std::to_string(l.cols) + "x" +
+		    std::to_string(l.rows) + " and " + std::to_string(r.cols) + "x" +
+		    std::to_string(r.rows) + " px, the calibration's " +
+		    std::to_string(calib.image_size.width) + "x" + std::to_string(calib.image_size.height));
 	images_.emplace_back(l, calib.K_left, calib.D_left,
 	                     cameraInL(cv::Matx33d::eye(), cv::Vec3d(0, 0, 0)), o);
 	images_.emplace_back(r, calib.K_right, calib.D_right,

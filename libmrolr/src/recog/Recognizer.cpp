@@ -17,8 +17,8 @@
 namespace mrolr::recog
 {
 using detail::rankOf;
-using detail::verifyBeta_mm;
 using detail::verifyAndRefine;
+using detail::verifyBeta_mm;
 using detail::verifyTheta_rad;
 
 namespace
@@ -128,7 +128,7 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 const SelfOcclusion* Recognizer::occlusionFor(const Eigen::Vector3d* up_S) const
 {
 	return up_S && opts_.upright_max_tilt_deg < 180 && opts_.verify_visible_only ? occlusion_.get()
-	                                                                              : nullptr;
+	                                                                             : nullptr;
 }
 
 double Recognizer::visibleShare(const Eigen::Vector3d* up_S) const
@@ -152,8 +152,7 @@ bool Recognizer::upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d*
 }
 
 RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
-                                               FocusBounds* bounds,
-                                               const Eigen::Vector3d* up_S,
+                                               FocusBounds* bounds, const Eigen::Vector3d* up_S,
                                                const ImageVerifier* images) const
 {
 	const LevelParams& p = opts_.levels.at(level);
@@ -162,9 +161,8 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 	best.image_score = images ? 0.0 : -1.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	FocusBounds own;
-	const auto hyps =
-	    hypothesesAt(table_, os, opts_, p,
-	                 focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
+	const auto hyps = hypothesesAt(
+	    table_, os, opts_, p, focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	std::vector<VerifiedPose> verified;
@@ -239,8 +237,7 @@ double Recognizer::supportBound_mm(const std::vector<Feature>& scene) const
 }
 
 FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
-                                    size_t level, FocusBounds& bounds,
-                                    const Eigen::Vector3d* up_S,
+                                    size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
                                     const ImageVerifier* images) const
 {
 	if (!opts_.skip_hopeless_levels) return {};
@@ -274,8 +271,7 @@ double Recognizer::modelLength_mm(size_t level) const
 	return len;
 }
 
-RecognitionResult Recognizer::recognize(const model::WireFrame& scene,
-                                        const Eigen::Vector3d* up_S,
+RecognitionResult Recognizer::recognize(const model::WireFrame& scene, const Eigen::Vector3d* up_S,
                                         const ImageVerifier* images) const
 {
 	return recognize(featuresOf(scene), up_S, images);

@@ -7,9 +7,9 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
-#include <cmath>
 
 namespace mrolr::recog::detail
 {

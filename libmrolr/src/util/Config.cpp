@@ -158,4 +158,13 @@ void requireInRange(
 	}
 }
 
+double readDoubleInRange(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+	double lo, double hi)
+{
+	const double v = readDouble(cfg, section, key);
+	requireInRange(cfg, section, key, v, lo, hi);
+	return v;
+}
+
 }  // namespace mrolr::util

@@ -26,24 +26,25 @@ namespace mrolr::recog
 /** Section [image_verification] of config/recognition.ini. */
 struct ImageVerificationOptions
 {
-	double blur_sigma_px = 1.0;        ///< Gaussian blur before Canny (px; 0: none)
-	double canny_low = 20;             ///< Canny hysteresis thresholds (grey levels, L2 gradient)
+	double blur_sigma_px = 1.0;  ///< Gaussian blur before Canny (px; 0: none)
+	double canny_low = 20;       ///< Canny hysteresis thresholds (grey levels, L2 gradient)
 	double canny_high = 50;
-	double edge_distance_px = 2.0;     ///< a sample is supported within this of an edge pixel (px)
-	double orientation_tol_deg = 20;   ///< ... whose edge direction is within this of its own
-	double sample_spacing_mm = 3;      ///< model edges sampled every this many mm
-	int min_samples = 30;              ///< fewer expected-visible samples in view: score 0
-	double min_score = 0.6;            ///< image score needed to accept a hypothesis, [0, 1]
+	double edge_distance_px = 2.0;    ///< a sample is supported within this of an edge pixel (px)
+	double orientation_tol_deg = 20;  ///< ... whose edge direction is within this of its own
+	double sample_spacing_mm = 3;     ///< model edges sampled every this many mm
+	int min_samples = 30;             ///< fewer expected-visible samples in view: score 0
+	double min_score = 0.7;           ///< image score needed to accept a hypothesis, [0, 1]
 	/** 3D verification score (expected-visible when the up direction is known) a hypothesis
 	 * needs before the images are asked: with images the 3D score is only a pre-filter. */
-	double prefilter_score = 0.1;
+	double prefilter_score = 0.0;
 	/** The best hypotheses of a level (by image score, at least half of min_score) are refined in
 	 * the images: rotations about the model's up axis (z through its rims' centres) every
 	 * yaw_step_deg (0: none; a cup's handle is what fixes its yaw), then a pattern search over
 	 * the 6 pose parameters minimising the truncated oriented chamfer distance. */
 	int refine_candidates = 3;
 	double yaw_step_deg = 10;
-	double truncate_px = 5;  ///< chamfer distance cap (px); also the cost of a wrongly oriented edge
+	double truncate_px =
+	    5;  ///< chamfer distance cap (px); also the cost of a wrongly oriented edge
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -72,9 +73,9 @@ std::vector<EdgeSample> edgeSamplesOf(const model::WireFrame& wf, double spacing
 /** Result of one hypothesis in the images. */
 struct ImageScore
 {
-	double score = 0;     ///< supported / considered samples over both images, [0, 1]
-	int considered = 0;   ///< samples expected visible and inside an image (both images summed)
-	int supported = 0;    ///< of those, within edge_distance_px of an edge of compatible direction
+	double score = 0;    ///< supported / considered samples over both images, [0, 1]
+	int considered = 0;  ///< samples expected visible and inside an image (both images summed)
+	int supported = 0;   ///< of those, within edge_distance_px of an edge of compatible direction
 	std::array<double, 2> per_image = {0, 0};  ///< left, right score
 	double cost = 0;  ///< mean squared truncated chamfer distance of the considered samples (px²)
 };
@@ -112,9 +113,9 @@ class EdgeImage
 	cv::Vec<double, 5> D_;
 	Eigen::Isometry3d T_CcvInL_;
 	double dist_px_, sin_tol_;
-	cv::Mat edges_;                   ///< CV_8U, 255 on edges
-	cv::Mat dist_;                    ///< CV_32F, px to the nearest edge pixel
-	cv::Mat labels_;                  ///< CV_32S, label of the nearest edge pixel
+	cv::Mat edges_;                    ///< CV_8U, 255 on edges
+	cv::Mat dist_;                     ///< CV_32F, px to the nearest edge pixel
+	cv::Mat labels_;                   ///< CV_32S, label of the nearest edge pixel
 	std::vector<cv::Point2f> normal_;  ///< unit gradient at each label's edge pixel
 };
 
@@ -126,8 +127,8 @@ class ImageVerifier
 	/** @p left, @p right 8-bit grey (or BGR, converted) images of the size in @p calib. Throws
 	 * std::invalid_argument naming what is wrong (empty image, size differing from the
 	 * calibration's). */
-	ImageVerifier(const cv::Mat& left, const cv::Mat& right,
-	              const stereo::StereoCalibration& calib, const ImageVerificationOptions& o);
+	ImageVerifier(const cv::Mat& left, const cv::Mat& right, const stereo::StereoCalibration& calib,
+	              const ImageVerificationOptions& o);
 
 	/** Oriented chamfer score of the model features @p features_O (model frame, mm) at
 	 * @p T_OinL: samples hidden by the object itself (@p occ built on the same features; may be

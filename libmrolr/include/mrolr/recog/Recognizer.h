@@ -60,7 +60,8 @@ class Recognizer
 	 * or null. With images the 3D score is only a pre-filter (images->options().prefilter_score)
 	 * and a hypothesis is accepted, and ranked, by its image score (images->options().min_score);
 	 * the scene's features still generate the hypotheses. */
-	RecognitionResult recognize(const model::WireFrame& scene, const Eigen::Vector3d* up_S = nullptr,
+	RecognitionResult recognize(const model::WireFrame& scene,
+	                            const Eigen::Vector3d* up_S = nullptr,
 	                            const ImageVerifier* images = nullptr) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene,
 	                            const Eigen::Vector3d* up_S = nullptr,

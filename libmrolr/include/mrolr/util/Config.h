@@ -69,4 +69,9 @@ void requireInRange(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
 	double value, double lo, double hi);
 
+/** readDouble, then requireInRange(lo, hi): the common "number within limits" key. */
+double readDoubleInRange(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+	double lo, double hi);
+
 }  // namespace mrolr::util

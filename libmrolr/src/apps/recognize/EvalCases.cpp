@@ -48,11 +48,10 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	c.visible_fraction = truth->visible_fraction;
 	c.truth_score = truthScore(rec, scene, truth->T_OinL, s.up_L);
 	if (images)
-		c.truth_image_score =
-		    images
-		        ->score(rec.edgeSamples(images->options().sample_spacing_mm), truth->T_OinL,
-		                &rec.selfOcclusion())
-		        .score;
+		c.truth_image_score = images
+		                          ->score(rec.edgeSamples(images->options().sample_spacing_mm),
+		                                  truth->T_OinL, &rec.selfOcclusion())
+		                          .score;
 	if (!c.found) return c;
 	c.rot_err_deg = rotationErrorDeg(truth->T_OinL.linear(), r.T_OinS.linear(), symmetry_deg);
 	c.trans_err_mm = (truth->T_OinL.translation() - r.T_OinS.translation()).norm();

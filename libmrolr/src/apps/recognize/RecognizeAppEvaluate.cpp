@@ -139,7 +139,8 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 		const EvalScene s = gen->make(k);
 		std::unique_ptr<recog::ImageVerifier> images;
 		if (image_verify)
-			images = std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, image_options);
+			images =
+			    std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, image_options);
 		std::vector<recog::RecognitionResult> found;
 		for (size_t i = 0; i < recs.size(); ++i)
 		{

@@ -104,7 +104,7 @@ int RecognizeApp::run(std::ostream& out)
 }
 
 recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer& rec,
-                                                        const recog::ImageVerifier& images) const
+                                                         const recog::ImageVerifier& images) const
 {
 	recog::RecognitionResult r = rec.recognize(scenes.front(), nullptr, &images);
 	if (r.found) r.scene_index = 0;
@@ -156,8 +156,8 @@ void RecognizeApp::printText(std::ostream& out) const
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", " << r.matched
-		    << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
+		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
+		    << r.matched << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());
 		out << "  roll pitch yaw (deg): " << rpy.transpose()
 		    << "\n  translation (mm): " << r.T_OinS.translation().transpose()
