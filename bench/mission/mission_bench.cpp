@@ -17,6 +17,7 @@ mission::MissionOptions options()
 {
 	auto o = mission::MissionOptions::load(MROLR_SOURCE_DIR "/config/mission_sim.ini");
 	o.search.render_stereo = false;
+	o.search.scene_source = "simulated";  // no rendering: reconstruction needs the pairs
 	return o;
 }
 

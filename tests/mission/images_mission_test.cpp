@@ -12,7 +12,8 @@ TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
 {
 	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("navigation", "measurement_source", "images");
-	cfg.write("search", "render_stereo", "false");  // the sweep's pairs are not needed here
+	cfg.write("search", "render_stereo", "false");  // no sweep pairs: only navigation grabs
+	cfg.write("search", "scene_source", "simulated");
 	const auto o = mission::test::optionsFrom(cfg);
 	const auto r = mission::Mission(o).run();
 	EXPECT_TRUE(r.success) << r.failure;

@@ -129,15 +129,17 @@ TEST(MissionOptions, MissingFileNamesTheKey)
 
 TEST(MissionOptions, SceneSourceIsSimulatedOrReconstructedWithItsSceneFile)
 {
-	EXPECT_EQ(test::optionsFrom(test::defaultMissionConfig()).search.scene_source, "simulated");
-	expectError("search", "scene_source", "guessed", "simulated, reconstructed");
 	auto cfg = test::defaultMissionConfig();
-	cfg.write("search", "scene_source", "reconstructed");
-	EXPECT_NE(errorOf(cfg).find("[files] scene_file"), std::string::npos) << errorOf(cfg);
-	cfg.write("files", "scene_file", "model.ini");
 	const auto o = test::optionsFrom(cfg);
-	EXPECT_EQ(o.search.scene_source, "reconstructed");
+	EXPECT_EQ(o.search.scene_source, "reconstructed");  // the default mission's
 	EXPECT_GT(o.scene.max_depth_mm, o.scene.min_depth_mm);
+	EXPECT_TRUE(o.search.image_verification);
+	EXPECT_GT(o.image_verification.min_score, 0);
+	expectError("search", "scene_source", "guessed", "simulated, reconstructed");
+	cfg.write("files", "scene_file", "no_such_scene.ini");
+	EXPECT_NE(errorOf(cfg).find("[files] scene_file"), std::string::npos) << errorOf(cfg);
+	cfg.write("search", "scene_source", "simulated");  // then the scene file is not read
+	EXPECT_EQ(test::optionsFrom(cfg).search.scene_source, "simulated");
 }
 
 TEST(MissionOptions, MeasurementSourceIsIdealOrImagesWithTheVisionFile)

@@ -84,8 +84,10 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 	EXPECT_TRUE(j["success"].get<bool>());
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
 		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
-	// One stereo pair per sweep view, stored as external images next to the rawlog.
-	ASSERT_EQ(r.shots.size(), static_cast<size_t>(r.search.views));
+	// One stereo pair per sweep view and one for the visual verification's re-observation (the
+	// default mission reconstructs each view from its pair), stored as external images.
+	ASSERT_EQ(app.options.search.scene_source, "reconstructed");
+	ASSERT_EQ(r.shots.size(), static_cast<size_t>(r.search.views) + 1);
 	size_t images = 0;
 	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
 		images += e.path().extension() == ".png";

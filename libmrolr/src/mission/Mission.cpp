@@ -84,7 +84,7 @@ struct Mission::Impl
 	void lookAt(const geometry::HeadAngles& angles);
 	hw::StereoImages grabStereo();
 	void attachObstacleMode();
-	model::WireFrame reconstructedScene(const geometry::HeadAngles& angles);
+	ObjectSearch::StereoScene reconstructedScene(const geometry::HeadAngles& angles);
 	void stopSafely(const std::string& why);
 	void runStages();
 	void loadTarget();
@@ -114,7 +114,9 @@ void Mission::Impl::loadTarget()
 void Mission::Impl::lookAt(const geometry::HeadAngles& angles)
 {
 	dev.head().moveTo(angles);
-	if (!o.search.render_stereo || render_failed) return;
+	// A reconstructed view grabs (and records) its own pair.
+	const bool reconstructed = o.search.scene_source == "reconstructed";
+	if (!o.search.render_stereo || render_failed || reconstructed) return;
 	try
 	{
 		grabStereo();
@@ -142,16 +144,22 @@ hw::StereoImages Mission::Impl::grabStereo()
 	return images;
 }
 
-/** The scene of a view reconstructed from a new stereo pair (scene_source = reconstructed). */
-model::WireFrame Mission::Impl::reconstructedScene(const geometry::HeadAngles& angles)
+/** The scene of a view reconstructed from a new stereo pair (scene_source = reconstructed), with
+ * the pair's edges for image verification ([search] image_verification). */
+ObjectSearch::StereoScene Mission::Impl::reconstructedScene(const geometry::HeadAngles& angles)
 {
 	dev.head().moveTo(angles);
 	const auto images = grabStereo();
 	ComputeTimer t(r.timeline);
 	const auto calib = stereo::calibrationFromHead(geometry::BiSightHead(o.bisight), images.angles);
-	return model::sceneToWireFrame(stereo::reconstructScene(
-	    images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
-	    images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), calib, o.scene));
+	const cv::Mat left = images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	const cv::Mat right = images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	ObjectSearch::StereoScene view{
+	    model::sceneToWireFrame(stereo::reconstructScene(left, right, calib, o.scene)), {}};
+	if (o.search.image_verification)
+		view.images =
+		    std::make_shared<recog::ImageVerifier>(left, right, calib, o.image_verification);
+	return view;
 }
 
 void Mission::Impl::attachObstacleMode()

@@ -193,6 +193,9 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 	if (o.navigation.measurement_source == "images") readVisionFile(cfg, base_dir, o);
 	if (o.search.scene_source == "reconstructed")
 		o.scene.loadFromConfigFile(openNamed(cfg, "files", "scene_file", base_dir), "scene");
+	if (o.search.scene_source == "reconstructed" && o.search.image_verification)
+		o.image_verification.loadFromConfigFile(
+		    openNamed(cfg, "files", "recognition_file", base_dir), "image_verification");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
 	return o;
 }

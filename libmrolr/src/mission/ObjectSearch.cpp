@@ -93,15 +93,16 @@ SearchResult ObjectSearch::observe(const WorldObjects& objects, const Eigen::Iso
                                    const geometry::HeadAngles& angles, std::mt19937& rng,
                                    Timeline& timeline) const
 {
-	const auto scene =
-	    scene_from_stereo ? scene_from_stereo(angles) : sceneOf(objects, T_C0inW, angles, rng);
+	const StereoScene view = scene_from_stereo
+	                             ? scene_from_stereo(angles)
+	                             : StereoScene{sceneOf(objects, T_C0inW, angles, rng), {}};
 	SearchResult r;
 	r.angles = angles;
 	const auto t0 = std::chrono::steady_clock::now();
 	// C0 stands level on the base: its +y is the scene's up (upright prior, expected-visible
 	// verification; docs/recog.md).
 	const Eigen::Vector3d up_L = head_.up_L(angles);
-	r.recognition = recognizer_.recognize(scene, &up_L);
+	r.recognition = recognizer_.recognize(view.scene, &up_L, view.images.get());
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found;

@@ -65,6 +65,7 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	max_object_range_m = readDouble(c, s, "max_object_range_m");
 	render_stereo = util::readBool(c, s, "render_stereo", render_stereo);
 	if (util::hasKey(c, s, "scene_source")) scene_source = util::readString(c, s, "scene_source");
+	image_verification = util::readBool(c, s, "image_verification", image_verification);
 	if (scene_source != "simulated" && scene_source != "reconstructed")
 		throw util::ConfigError(util::describeKey(c, s, "scene_source") + ": '" + scene_source +
 		                        "' is not one of simulated, reconstructed");
@@ -84,7 +85,8 @@ void SearchOptions::dump(std::ostream& out) const
 	    << "\nhide_back_side = " << (hide_back_side ? "true" : "false")
 	    << "\nmax_object_range_m = " << max_object_range_m
 	    << "\nrender_stereo = " << (render_stereo ? "true" : "false")
-	    << "\nscene_source = " << scene_source << "\n";
+	    << "\nscene_source = " << scene_source
+	    << "\nimage_verification = " << (image_verification ? "true" : "false") << "\n";
 }
 
 void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

@@ -11,6 +11,7 @@
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/mission/DeviceOptions.h>
 #include <mrolr/mission/ObstacleOptions.h>
+#include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
@@ -88,6 +89,9 @@ struct SearchOptions
 	 * (exact object wire-frames, corrupted) or `reconstructed` (stereo::reconstructScene on the
 	 * view's rendered pair, options [scene] of `[files] scene_file`). */
 	std::string scene_source = "simulated";
+	/** Optional, used with scene_source = reconstructed: the recogniser also verifies in the
+	 * view's stereo images (recog::ImageVerifier, [image_verification] of recognition_file). */
+	bool image_verification = true;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
@@ -139,6 +143,9 @@ struct MissionOptions
 	SearchOptions search;
 	RetrievalOptions retrieval;
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
+	/** [image_verification] of [files] recognition_file, read for scene_source = reconstructed
+	 * with search.image_verification. */
+	recog::ImageVerificationOptions image_verification;
 	/** [vision] of [files] vision_file, read for measurement_source = images. */
 	vision::VisionOptions vision;
 	/** [scene] of [files] scene_file, read for scene_source = reconstructed. */

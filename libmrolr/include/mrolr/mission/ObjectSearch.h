@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 
 namespace mrolr::mission
@@ -67,9 +68,15 @@ class ObjectSearch
 	const geometry::BiSightHead& head() const { return head_; }
 	/** Called with the head angles of every sweep view (e.g. to grab a stereo pair). */
 	std::function<void(const geometry::HeadAngles&)> on_view;
-	/** When set, a view's scene wire-frame (L, mm) comes from this (a reconstruction from the
-	 * head's stereo pair) instead of sceneOf(). */
-	std::function<model::WireFrame(const geometry::HeadAngles&)> scene_from_stereo;
+	/** A view reconstructed from the head's stereo pair: its scene wire-frame (L, mm) and, when
+	 * image verification is on, the pair's edge evidence for recog::Recognizer. */
+	struct StereoScene
+	{
+		model::WireFrame scene;
+		std::shared_ptr<const recog::ImageVerifier> images;  ///< null: 3D verification only
+	};
+	/** When set, a view's scene comes from this instead of sceneOf(). */
+	std::function<StereoScene(const geometry::HeadAngles&)> scene_from_stereo;
 
  private:
 	void compareWithTruth(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,
