@@ -5,11 +5,14 @@
 #include <mrolr/model/TurntableBuilderSupport.h>
 #include <mrolr/model/WireFrameSampling.h>
 
+#include <mrpt/config/CConfigFileMemory.h>
+
 #include <gtest/gtest.h>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <sstream>
 
 using namespace mrolr::model;
 
@@ -173,4 +176,37 @@ TEST(TurntableRims, NoCircleFromOneViewOrFromStraightEdges)
 			v.lines.push_back({0, {a.x(), a.y(), 60}, {b.x(), b.y(), 60}});
 		}
 	EXPECT_TRUE(fitRimsAcrossViews(square, RimOptions()).empty());
+}
+
+TEST(TurntableOptions, KeysAreReadDumpedAndCheckedByName)
+{
+	mrpt::config::CConfigFileMemory cfg(
+	    "[turntable]\nsupport_tol_mm = 3\nrim_tol_mm = 0.8\nrim_min_views = 4\n");
+	ViewSupportOptions s;
+	RimOptions r;
+	s.loadFromConfigFile(cfg, "turntable");
+	r.loadFromConfigFile(cfg, "turntable");
+	EXPECT_EQ(s.tol_mm, 3);
+	EXPECT_EQ(r.tol_mm, 0.8);
+	EXPECT_EQ(r.min_views, 4);
+	std::ostringstream out;
+	s.dump(out);
+	r.dump(out);
+	EXPECT_NE(out.str().find("support_tol_mm = 3"), std::string::npos) << out.str();
+	EXPECT_NE(out.str().find("rim_min_views = 4"), std::string::npos) << out.str();
+	for (const std::string bad : {"support_min_fraction = 2", "rim_consume_fraction = -1"})
+	{
+		mrpt::config::CConfigFileMemory b("[turntable]\n" + bad + "\n");
+		const std::string key = bad.substr(0, bad.find(' '));
+		try
+		{
+			ViewSupportOptions().loadFromConfigFile(b, "turntable");
+			RimOptions().loadFromConfigFile(b, "turntable");
+			ADD_FAILURE() << bad;
+		}
+		catch (const std::exception& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+		}
+	}
 }

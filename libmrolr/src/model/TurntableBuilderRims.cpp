@@ -244,6 +244,16 @@ void RimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, co
 	util::requireInRange(cfg, s, "rim_iterations", iterations, 1, 1e6);
 }
 
+void RimOptions::dump(std::ostream& out) const
+{
+	out << "rim_fit = " << (enabled ? "true" : "false") << "\nrim_tol_mm = " << tol_mm
+	    << "\nrim_max_tangent_deg = " << max_tangent_deg << "\nrim_min_arc_deg = " << min_arc_deg
+	    << "\nrim_min_views = " << min_views << "\nrim_min_radius_mm = " << min_radius_mm
+	    << "\nrim_max_radius_mm = " << max_radius_mm
+	    << "\nrim_consume_fraction = " << consume_fraction << "\nrim_iterations = " << iterations
+	    << "\n";
+}
+
 std::vector<Conic3> fitRimsAcrossViews(std::vector<WireFrame>& views, const RimOptions& o)
 {
 	std::vector<Conic3> rims;

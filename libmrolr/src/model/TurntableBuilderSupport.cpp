@@ -74,6 +74,16 @@ void ViewSupportOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	util::requireInRange(cfg, s, "min_views", min_views, 1, 1000);
 }
 
+void ViewSupportOptions::dump(std::ostream& out) const
+{
+	out << "support_tol_mm = " << tol_mm << "\nsupport_max_tangent_deg = " << max_tangent_deg
+	    << "\nsupport_max_view_angle_deg = " << max_view_angle_deg
+	    << "\nsupport_min_fraction = " << min_fraction
+	    << "\nsupport_steep_max_deg = " << steep_max_deg
+	    << "\nsupport_image_gradient = " << image_min_gradient << "\nmin_views = " << min_views
+	    << "\n";
+}
+
 double turntableAngleBetween(double a_deg, double b_deg)
 {
 	const double d = std::fmod(std::abs(a_deg - b_deg), 360.0);

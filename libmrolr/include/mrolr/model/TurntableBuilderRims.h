@@ -14,6 +14,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,8 @@ struct RimOptions
 	int iterations = 3000;          ///< RANSAC hypotheses per circle (fixed seed: reproducible)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	/** Writes the keys and values as loadFromConfigFile reads them. */
+	void dump(std::ostream& out) const;
 };
 
 /** Finds circles seen across @p views (frame O) and removes the single-view features that lie on

@@ -16,6 +16,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ struct ViewSupportOptions
 	int min_views = 2;               ///< views seeing a feature, its own included
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	/** Writes the keys and values as loadFromConfigFile reads them. */
+	void dump(std::ostream& out) const;
 };
 
 /** Smallest angle (deg, 0..180) between two turntable angles (deg). */
