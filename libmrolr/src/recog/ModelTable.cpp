@@ -103,15 +103,20 @@ std::vector<IndexClique> ModelTable::automaticCliques(const model::WireFrame& wf
 }
 
 ModelTable::ModelTable(const model::WireFrame& wf, int auto_count, int auto_size,
-                       const std::string& auto_method)
+                       const std::string& auto_method, const std::string& file_cliques)
     : name_(wf.name), features_(featuresOf(wf)), n_(features_.size())
 {
 	if (features_.size() < 2)
 		throw std::invalid_argument("wire-frame '" + wf.name +
 		                            "' has fewer than two lines and conics to match");
-	automatic_ = wf.cliques.empty();
-	cliques_ = automatic_ ? automaticCliques(wf, auto_method, auto_count, auto_size)
-	                      : cliquesFromModel(wf, features_);
+	if (file_cliques != "use" && file_cliques != "add" && file_cliques != "ignore")
+		throw std::invalid_argument("unknown file clique use '" + file_cliques +
+		                            "' (use | add | ignore)");
+	automatic_ = wf.cliques.empty() || file_cliques == "ignore";
+	if (!automatic_) cliques_ = cliquesFromModel(wf, features_);
+	if (automatic_ || file_cliques == "add")
+		for (auto& c : automaticCliques(wf, auto_method, auto_count, auto_size))
+			cliques_.push_back(std::move(c));
 	table_.resize(n_ * n_);
 	for (size_t i = 0; i < n_; ++i)
 		for (size_t j = 0; j < n_; ++j)

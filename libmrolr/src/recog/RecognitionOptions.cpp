@@ -45,6 +45,16 @@ void readLevelKey(const mrpt::config::CConfigFileBase& cfg, const std::string& s
 	}
 }
 
+/** An optional use | add | ignore key (ModelTable's file_cliques). */
+void readCliqueUse(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                   const char* key, std::string& value)
+{
+	if (util::hasKey(cfg, section, key)) value = util::readString(cfg, section, key);
+	if (value != "use" && value != "add" && value != "ignore")
+		throw util::ConfigError(util::describeKey(cfg, section, key) + ": '" + value +
+		                        "' is not one of use, add, ignore");
+}
+
 void readCliqueSizes(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
                      std::vector<LevelParams>& levels)
 {
@@ -100,6 +110,8 @@ void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	if (auto_cliques != "recog" && auto_cliques != "model")
 		throw util::ConfigError(util::describeKey(cfg, section, "auto_cliques") + ": '" +
 		                        auto_cliques + "' is not one of recog, model");
+	readCliqueUse(cfg, section, "file_cliques", file_cliques);
+	readCliqueUse(cfg, section, "file_cliques_with_images", file_cliques_with_images);
 	auto readCount = [&](const char* key, long lo, long hi)
 	{
 		const long v = util::readInt(cfg, section, key);
@@ -133,6 +145,8 @@ void RecognitionOptions::dump(std::ostream& out) const
 	out << "\n";
 	for (const auto& key : levelKeys()) dumpLevelKey(out, key, levels);
 	out << "pose_method = " << pose_method << "\nauto_cliques = " << auto_cliques
+	    << "\nfile_cliques = " << file_cliques
+	    << "\nfile_cliques_with_images = " << file_cliques_with_images
 	    << "\nauto_clique_count = " << auto_clique_count
 	    << "\nauto_clique_size = " << auto_clique_size
 	    << "\nmax_search_nodes = " << max_search_nodes

@@ -112,11 +112,16 @@ double confidenceOf(double score, size_t level, size_t levels)
 }  // namespace
 
 Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
-    : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques),
+    : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques,
+             opts.file_cliques),
       model_(model),
       opts_(opts)
 {
 	if (opts_.levels.empty()) throw std::invalid_argument("recognition options have no levels");
+	if (opts_.file_cliques_with_images != opts_.file_cliques)
+		image_table_ =
+		    std::make_shared<ModelTable>(model, opts.auto_clique_count, opts.auto_clique_size,
+		                                 opts.auto_cliques, opts.file_cliques_with_images);
 	centroid_O_.setZero();
 	for (const auto& f : table_.features()) centroid_O_ += f.m;
 	centroid_O_ /= static_cast<double>(table_.features().size());
@@ -161,8 +166,9 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 	best.image_score = images ? 0.0 : -1.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	FocusBounds own;
-	const auto hyps = hypothesesAt(
-	    table_, os, opts_, p, focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
+	const auto hyps =
+	    hypothesesAt(tableFor(images != nullptr), os, opts_, p,
+	                 focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	std::vector<VerifiedPose> verified;

@@ -35,9 +35,10 @@ class ModelTable
 	/** Prepares @p wf. Uses its cliques if it has any (ids must exist: std::invalid_argument
 	 * otherwise), else automatic ones: @p auto_method "recog" is chooseCliques(features,
 	 * auto_count, auto_size); "model" is the model area's viewing-direction coverage
-	 * (model::addAutomaticCliques, what `mrolr-model cliques` writes). */
+	 * (model::addAutomaticCliques, what `mrolr-model cliques` writes). @p file_cliques: "use"
+	 * the file's cliques as said, "add" the automatic ones to them, "ignore" them. */
 	ModelTable(const model::WireFrame& wf, int auto_count, int auto_size,
-	           const std::string& auto_method = "recog");
+	           const std::string& auto_method = "recog", const std::string& file_cliques = "use");
 
 	const std::string& name() const { return name_; }
 	const std::vector<Feature>& features() const { return features_; }

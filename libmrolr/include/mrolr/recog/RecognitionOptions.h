@@ -34,6 +34,14 @@ struct RecognitionOptions
 	/** Automatic cliques for models without any: "recog" (nearest features of the longest ones)
 	 * or "model" (model::addAutomaticCliques, viewing-direction coverage). */
 	std::string auto_cliques = "recog";
+	/** A model file's own `clique` lines: "use" them (alone), "add" the automatic ones to them, or
+	 * "ignore" them (automatic ones only). Optional key, default "use". */
+	std::string file_cliques = "use";
+	/** The same when the hypotheses are verified in images (Recognizer::recognize with an
+	 * ImageVerifier). Optional key, default "add": the files' cliques alone missed boxes whose
+	 * edges the scene held, and the image score keeps the extra hypotheses' wrong poses out (in
+	 * 3D only, "add" let one absent model in on the rendered set of seed 101). */
+	std::string file_cliques_with_images = "add";
 	int auto_clique_count = 12;   ///< cliques chosen automatically when a model has none
 	int auto_clique_size = 7;     ///< features per automatic clique, focus included
 	int max_search_nodes = 4000;  ///< budget of the maximal-consistent-set search per focus match

@@ -99,6 +99,11 @@ class Recognizer
 	double modelLength_mm(size_t level) const;
 
 	const ModelTable& table() const { return table_; }
+	/** The table whose cliques generate hypotheses with (@p images true) or without images. */
+	const ModelTable& tableFor(bool images) const
+	{
+		return images && image_table_ ? *image_table_ : table_;
+	}
 	/** The model's edges sampled every @p spacing_mm for image verification (arcs as they are). */
 	std::vector<EdgeSample> edgeSamples(double spacing_mm) const
 	{
@@ -144,6 +149,9 @@ class Recognizer
 	                const ImageVerifier* images = nullptr) const;
 
 	ModelTable table_;
+	/** The table whose cliques are used with images (options().file_cliques_with_images); null
+	 * when it equals file_cliques (table_ then serves). */
+	std::shared_ptr<const ModelTable> image_table_;
 	model::WireFrame model_;  ///< as given: image verification samples its arcs
 	RecognitionOptions opts_;
 	Eigen::Vector3d centroid_O_;
