@@ -144,12 +144,12 @@ TEST(TableScene, PieceStereoRecoversMoreOfTheObjectsAtOneMetre)
 	const auto q0 = measure(v, v.truth_L, strings_only);
 	const auto q = measure(v, v.truth_L, shippedOptions());
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.05);
-	EXPECT_GE(q.recovered_fraction, 0.44);  // measured 0.464; issue target 0.6 (not reached)
+	EXPECT_GE(q.recovered_fraction, 0.44);  // measured 0.461; issue target 0.6 (not reached)
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 	EXPECT_LT(q.median_conic_radius_error_mm, 10.0);
-	EXPECT_LE(q.false_features, 56);  // measured 50 of 91 (silhouettes, table edges)
+	EXPECT_LE(q.false_features, 60);  // measured 55 of 96 (silhouettes, table edges)
 	const auto qb = measure(v, v.truth_L, shippedOptions(), true);
-	EXPECT_GE(qb.recovered_fraction, 0.53);         // measured 0.558
+	EXPECT_GE(qb.recovered_fraction, 0.53);         // measured 0.554
 	measure(v, v.with_tables_L, shippedOptions());  // reported: table tops' edges included
 }
 
@@ -160,10 +160,11 @@ TEST(TableScene, FullImageRectificationKeepsMoreOfTheBorderObjects)
 	const auto v = renderTable(0.35, 0.1, 5, {5, -22, -8, 8});
 	auto cropped = shippedOptions();
 	cropped.rectify = stereo::RectifyOptions{};  // alpha 0, same size
+	const auto full = shippedOptions();          // alpha 1, 1.25 x the image size
 	const auto q0 = measure(v, v.truth_L, cropped, true);
-	const auto q = measure(v, v.truth_L, shippedOptions(), true);
+	const auto q = measure(v, v.truth_L, full, true);
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.03);
-	EXPECT_GE(q.recovered_fraction, 0.30);  // measured 0.323 (cropped: 0.270)
+	EXPECT_GE(q.recovered_fraction, 0.30);  // measured 0.334 (cropped: 0.270)
 }
 
 TEST(TableScene, RecedingEdgesTurnBetweenTheViewsAndAreStillMatched)
@@ -176,6 +177,6 @@ TEST(TableScene, RecedingEdgesTurnBetweenTheViewsAndAreStillMatched)
 	const auto q0 = measure(v, v.truth_L, strict, true);
 	const auto q = measure(v, v.truth_L, shippedOptions(), true);
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.05);
-	EXPECT_GE(q.recovered_fraction, 0.37);  // measured 0.398 (10°: 0.299)
-	EXPECT_LE(q.false_features, 36);        // measured 30 of 77 (10°: 28 of 67)
+	EXPECT_GE(q.recovered_fraction, 0.37);  // measured 0.403 (10°: 0.303)
+	EXPECT_LE(q.false_features, 36);        // measured 31 of 79 (10°: 29 of 68)
 }

@@ -129,3 +129,27 @@ TEST(PieceStereo, EdgeAlongTheScanlinesFromItsTwoCorners)
 	// a side edge is not along the scanlines: no corner pair for it
 	EXPECT_FALSE(cornerPairLine(in, 1, rect, SegmentStereoOptions{}));
 }
+
+TEST(PieceStereo, ShortPiecesMustMatchOnBothSides)
+{
+	const Rectifier rect(testRig());
+	const std::vector<EdgeString> none;
+	const std::vector<EdgeMatch> no_matches;
+	auto l = segment({100, 100}, {101, 108}), r = segment({80, 100}, {81, 108});
+	l.hi = r.hi = 8;    // 8 edgels: a short piece (a letter's stroke)
+	r.side_right = 60;  // the right image's grey on one side differs: an occluding contour
+	const std::vector<ImagePiece> lp{l}, rp{r};
+	const PieceStereoInput in{none, lp, rp, no_matches, 10, 200, &none};
+	const auto count = [&](int both_sides_below)
+	{
+		SegmentStereoOptions o;
+		o.both_sides_below_edgels = both_sides_below;
+		std::vector<LineFit3> lines;
+		std::vector<ConicFit3> conics;
+		reconstructPieces(in, rect, FitOptions{}, o, lines, conics);
+		return lines.size();
+	};
+	EXPECT_EQ(count(0), 1u);   // one side agreeing is enough for a long piece
+	EXPECT_EQ(count(10), 0u);  // not for a short one
+	EXPECT_EQ(count(8), 1u);   // 8 edgels is not below 8
+}

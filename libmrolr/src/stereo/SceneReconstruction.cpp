@@ -173,7 +173,10 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	scene.horizontal_lines = h.size();
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
 	if (!o.segments.enabled) return scene;
-	const auto lp = segmentImageStrings(ls, lr, o.fit), rp = segmentImageStrings(rs, rr, o.fit);
+	FitOptions piece_fit = o.fit;
+	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
+	const auto lp = segmentImageStrings(ls, lr, piece_fit),
+	           rp = segmentImageStrings(rs, rr, piece_fit);
 	std::vector<LineFit3> lines;
 	std::vector<ConicFit3> conics;
 	reconstructPieces({ls, lp, rp, matches, rect.disparityAtDepth(o.max_depth_mm),

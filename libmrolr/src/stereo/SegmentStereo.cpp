@@ -80,8 +80,11 @@ std::optional<Pair> tryPair(const PieceStereoInput& in, size_t i, size_t j, doub
 {
 	const ImagePiece &l = in.left_pieces[i], &r = in.right_pieces[j];
 	const double ang = angleDiffDeg(l, r);
-	const double side =
-	    std::min(std::abs(l.side_left - r.side_left), std::abs(l.side_right - r.side_right));
+	const double sl = std::abs(l.side_left - r.side_left),
+	             sr = std::abs(l.side_right - r.side_right);
+	// a short piece must agree on both sides (a mark on a surface, not an occluding contour)
+	const bool is_short = static_cast<int>(l.hi - l.lo) < o.both_sides_below_edgels;
+	const double side = is_short ? std::max(sl, sr) : std::min(sl, sr);
 	cv::Point3d e1, e2;
 	if (ang > o.max_angle_diff_deg || side > o.max_side_diff_grey || !pairEnds(l, r, o, e1, e2))
 		return std::nullopt;
@@ -243,6 +246,10 @@ void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBas
 	    util::readInt(cfg, section, "segment_min_conic_matches", min_conic_matches));
 	corner_pairs = util::readBool(cfg, section, "segment_corner_pairs", corner_pairs);
 	rd("segment_corner_row_tol_px", corner_row_tol_px);
+	min_line_edgels =
+	    static_cast<int>(util::readInt(cfg, section, "segment_min_line_edgels", min_line_edgels));
+	both_sides_below_edgels = static_cast<int>(
+	    util::readInt(cfg, section, "segment_both_sides_below_edgels", both_sides_below_edgels));
 	util::requireInRange(cfg, section, "segment_corner_row_tol_px", corner_row_tol_px, 0.01, 10);
 	util::requireInRange(cfg, section, "segment_min_row_overlap", min_row_overlap, 0, 1);
 	util::requireInRange(cfg, section, "segment_min_conic_matches", min_conic_matches, 3, 1e6);
@@ -259,7 +266,9 @@ void SegmentStereoOptions::dump(std::ostream& out) const
 	    << "\nsegment_max_disparity_gradient = " << max_disparity_gradient
 	    << "\nsegment_min_conic_matches = " << min_conic_matches
 	    << "\nsegment_corner_pairs = " << corner_pairs
-	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px << "\n";
+	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px
+	    << "\nsegment_min_line_edgels = " << min_line_edgels
+	    << "\nsegment_both_sides_below_edgels = " << both_sides_below_edgels << "\n";
 }
 
 }  // namespace mrolr::stereo

@@ -37,6 +37,8 @@ struct SegmentStereoOptions
 	int min_conic_matches = 8;            ///< point matches inside an arc for its disparity plane
 	bool corner_pairs = true;             ///< pair pieces along the scanlines by their end corners
 	double corner_row_tol_px = 1.0;       ///< rows of corresponding corners (CornerPairStereo.h)
+	int min_line_edgels = 0;              ///< shortest line piece (0: FitOptions::min_line_edgels)
+	int both_sides_below_edgels = 0;      ///< shorter pieces must match in the grey of both sides
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
