@@ -1,5 +1,6 @@
 // The mission's state machine (thesis fig 5.8.1.5) on the devices of the mission's factory.
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/GeometryError.h>
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionDevices.h>
@@ -94,6 +95,8 @@ struct Mission::Impl
 	void goHome();
 	void finish();
 	double tableHeightNear(const Eigen::Vector3d& p_W) const;
+	std::optional<Eigen::Isometry3d> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
+	void compareVerificationWithTruth(const Retrieval& retrieval);
 };
 
 void Mission::Impl::loadTarget()
@@ -224,18 +227,14 @@ void Mission::Impl::retrieve()
 	// Simulated docking: the arm base stands at the known T_C0inA from the true head centre.
 	lab->dockArm();
 	const auto& arm = lab->arm();  // truth: what the gripper holds
-	const auto angles = r.search.angles;
-	auto reobserve = [&]() -> std::optional<Eigen::Isometry3d>
-	{
-		r.timeline.advance(o.search.head_move_time_s);
-		const auto s = search->observe(objects(), trueC0(), angles, rng, r.timeline);
-		return s.found ? std::optional(s.T_OinC0) : std::nullopt;
-	};
+	auto reobserve = [&](const Eigen::Isometry3d& T_OinC0_mm) -> std::optional<Eigen::Isometry3d>
+	{ return reobserveAt(T_OinC0_mm); };
 	const Eigen::Vector3d p_OinW = (trueC0() * metres(r.search.T_OinC0)).translation();
 	Retrieval retrieval(o, models.at(o.target));
 	r.retrieval = retrieval.run(
 	    r.search.T_OinC0, tableHeightNear(p_OinW), dev.arm(), reobserve,
 	    [&] { return arm.grasped(); }, r.timeline);
+	compareVerificationWithTruth(retrieval);
 	r.retrieved = r.retrieval.retrieved && arm.grasped() == r.search.instance;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieved) return;
@@ -246,6 +245,40 @@ void Mission::Impl::retrieve()
 	poses[carried] = trueC0() * T_OinC0_carried;
 	r.timeline.advance(2 * o.retrieval.arm_move_time_s);
 	r.timeline.note("object " + carried + " placed on the base");
+}
+
+/** The visual verification's view: the head fixates the object's estimated centre and a new
+ * stereo pair is recognised as in the sweep. */
+std::optional<Eigen::Isometry3d> Mission::Impl::reobserveAt(const Eigen::Isometry3d& T_OinC0_mm)
+{
+	geometry::HeadAngles angles;
+	try
+	{
+		angles = search->fixationAngles(T_OinC0_mm);
+	}
+	catch (const geometry::GeometryError& e)
+	{
+		r.timeline.note(std::string("verification: cannot fixate the object: ") + e.what());
+		return std::nullopt;
+	}
+	r.timeline.advance(o.search.head_move_time_s);
+	lookAt(angles);
+	const auto s = search->observe(objects(), trueC0(), angles, rng, r.timeline);
+	r.timeline.note(std::string("verification view (object fixated): ") +
+	                (s.found ? "recognised" : "not recognised"));
+	return s.found ? std::optional(s.T_OinC0) : std::nullopt;
+}
+
+void Mission::Impl::compareVerificationWithTruth(const Retrieval& retrieval)
+{
+	auto& g = r.retrieval;
+	if (r.search.instance.empty() || !g.feasible) return;
+	const Eigen::Isometry3d& T_true = r.search.T_OinC0_true;
+	g.object_error_before_mm = (g.T_OinC0_first.translation() - T_true.translation()).norm();
+	if (g.verified)
+		g.object_error_after_mm = (g.T_OinC0_verified.translation() - T_true.translation()).norm();
+	const Eigen::Isometry3d T_GinA_true = retrieval.graspAt(T_true, g.grasp_turn_deg);
+	g.grasp_error_mm = (g.T_GinA.translation() - T_GinA_true.translation()).norm();
 }
 
 void Mission::Impl::goHome()

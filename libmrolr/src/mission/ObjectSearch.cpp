@@ -33,6 +33,16 @@ bool inImage(const geometry::BiSightHead& head, const Eigen::Vector3d& p_C0,
 	}
 }
 
+/** Mean of the line endpoints and conic centres (the frame of @p wf). */
+Eigen::Vector3d centreOf(const model::WireFrame& wf)
+{
+	Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+	for (const auto& l : wf.lines) sum += l.p1 + l.p2;
+	for (const auto& c : wf.conics) sum += c.centre;
+	const size_t n = 2 * wf.lines.size() + wf.conics.size();
+	return n ? Eigen::Vector3d(sum / static_cast<double>(n)) : sum;
+}
+
 double rotationAngleDeg(const Eigen::Matrix3d& R)
 {
 	return Eigen::AngleAxisd(R).angle() * 180.0 / M_PI;
@@ -52,8 +62,14 @@ ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& targ
       head_(o.bisight),
       recognizer_(target, o.recognition),
       target_(o.target),
+      p_centreinO_mm_(centreOf(target)),
       models_(models)
 {
+}
+
+geometry::HeadAngles ObjectSearch::fixationAngles(const Eigen::Isometry3d& T_OinC0_mm) const
+{
+	return head_.fixate(T_OinC0_mm * p_centreinO_mm_ / 1000.0);
 }
 
 geometry::HeadAngles ObjectSearch::sweepAngles(double pan_deg) const

@@ -24,6 +24,11 @@ json orNull(bool available, double v)
 	return available ? json(v) : json(nullptr);
 }
 
+json finiteOrNull(double v)
+{
+	return orNull(std::isfinite(v), v);
+}
+
 json graspJson(const RetrievalResult& g)
 {
 	const auto p = arm::gripperFromPose(g.T_GinA);
@@ -40,6 +45,11 @@ json graspJson(const RetrievalResult& g)
 	          {"verified", g.verified},
 	          {"correction_mm", g.correction_mm},
 	          {"correction_deg", g.correction_deg},
+	          {"correction_applied", g.correction_applied},
+	          {"correction_refused", g.correction_refused},
+	          {"object_error_before_mm", finiteOrNull(g.object_error_before_mm)},
+	          {"object_error_after_mm", finiteOrNull(g.object_error_after_mm)},
+	          {"grasp_error_mm", finiteOrNull(g.grasp_error_mm)},
 	          {"grasped", g.grasped}};
 	if (g.attempted)
 	{
@@ -139,7 +149,12 @@ std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
 		s << "| object pose error | " << r.search.translation_error_mm << " mm, "
 		  << r.search.rotation_error_deg << " deg |\n| recognition confidence | "
 		  << r.search.recognition.confidence << " (level " << r.search.recognition.level
-		  << ") |\n| grasp correction (mm) | " << r.retrieval.correction_mm << " |\n";
+		  << ") |\n| grasp correction (mm) | " << r.retrieval.correction_mm << " ("
+		  << r.retrieval.correction_deg << " deg, "
+		  << (r.retrieval.correction_applied   ? "applied"
+		      : r.retrieval.correction_refused ? "refused"
+		                                       : "not applied")
+		  << ") |\n";
 	s << "| simulated time (s) | " << r.timeline.simulatedSeconds() << " |\n"
 	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n"
 	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n";

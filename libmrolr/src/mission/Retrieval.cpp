@@ -3,6 +3,7 @@
 #include <mrolr/mission/Retrieval.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace mrolr::mission
 {
@@ -19,6 +20,18 @@ Eigen::Isometry3d shifted(const Eigen::Isometry3d& T, const Eigen::Vector3d& d_m
 Eigen::Isometry3d preGrasp(const Eigen::Isometry3d& T_GinA, double back_mm)
 {
 	return T_GinA * Eigen::Translation3d(0, 0, -back_mm);
+}
+
+double angleBetweenDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
+{
+	return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() * 180.0 / M_PI;
+}
+
+std::string mm(double v)
+{
+	char buf[32];
+	std::snprintf(buf, sizeof buf, "%.1f mm", v);
+	return buf;
 }
 }  // namespace
 
@@ -88,16 +101,25 @@ void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& ti
 	timeline.advance(o_.retrieval.arm_move_time_s);
 }
 
+Eigen::Isometry3d Retrieval::graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const
+{
+	return arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm) * graspInObject(turn_deg);
+}
+
 RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
-                               hw::ArmDevice& arm,
-                               const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+                               hw::ArmDevice& arm, const Reobserve& reobserve,
                                const std::function<std::string()>& grasped,
                                Timeline& timeline) const
 {
 	RetrievalResult r;
+	r.T_OinC0_first = T_OinC0_mm;
+	r.T_OinC0_first.translation().x() += o_.retrieval.inject_pose_error_mm;
+	if (o_.retrieval.inject_pose_error_mm != 0)
+		timeline.note("injected pose error " + mm(o_.retrieval.inject_pose_error_mm) +
+		              " along C0's x");
 	{
 		ComputeTimer t(timeline);
-		r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
+		r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, r.T_OinC0_first);
 		r.feasible = planGrasp(r, tableZinA(table_top_height_m));
 	}
 	if (!r.feasible) return r;
@@ -116,8 +138,7 @@ RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table
 	return r;
 }
 
-bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
-                               const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reobserve& reobserve,
                                Timeline& timeline) const
 {
 	arm.setGripper(false);
@@ -129,21 +150,59 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
 	}
 	moveTo(arm, *pre, timeline);
 	if (o_.retrieval.visual_verification)
-		if (const auto T_OinC0 = reobserve())
-		{
-			const Eigen::Isometry3d T_GinA =
-			    arm::objectInArm(o_.dock.T_C0inA, *T_OinC0) * graspInObject(r.grasp_turn_deg);
-			const auto j = solve(T_GinA);
-			r.verified = true;
-			r.correction_mm = (T_GinA.translation() - r.T_GinA.translation()).norm();
-			r.correction_deg =
-			    Eigen::AngleAxisd(T_GinA.linear().transpose() * r.T_GinA.linear()).angle() * 180.0 /
-			    M_PI;
-			if (j) r.T_GinA = T_GinA, r.joints = *j;
-		}
+	{
+		if (const auto T_OinC0 = reobserve(r.T_OinC0_first))
+			correct(r, *T_OinC0, timeline);
+		else
+			timeline.note("verification: the object was not recognised again; first grasp kept");
+	}
 	moveTo(arm, r.joints, timeline);
-	timeline.note("at grasp pose (correction " + std::to_string(r.correction_mm) + " mm)");
+	timeline.note("at grasp pose (correction " + mm(r.correction_mm) +
+	              (r.correction_applied ? ", applied)" : ", not applied)"));
 	return true;
+}
+
+double Retrieval::nearestTurn(const RetrievalResult& r, const Eigen::Isometry3d& T_OinA) const
+{
+	const double step = o_.retrieval.grasp_yaw_search_deg;
+	double best_turn = r.grasp_turn_deg, best = 1e9;
+	for (int k = -3; k <= 3; ++k)
+	{
+		if (step <= 0 && k != 0) continue;
+		const double turn = r.grasp_turn_deg + k * step;
+		const double d = angleBetweenDeg(T_OinA * graspInObject(turn), r.T_GinA);
+		if (d < best - 1e-6) best = d, best_turn = turn;
+	}
+	return best_turn;
+}
+
+void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
+                        Timeline& timeline) const
+{
+	ComputeTimer t(timeline);
+	r.verified = true;
+	r.T_OinC0_verified = T_OinC0_mm;
+	const Eigen::Isometry3d T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
+	const double turn = nearestTurn(r, T_OinA);
+	const Eigen::Isometry3d T_GinA = T_OinA * graspInObject(turn);
+	r.correction_mm = (T_GinA.translation() - r.T_GinA.translation()).norm();
+	r.correction_deg = angleBetweenDeg(T_GinA, r.T_GinA);
+	if (r.correction_mm > o_.retrieval.max_grasp_correction_mm)
+	{
+		r.correction_refused = true;
+		r.reasons.push_back("verification correction " + mm(r.correction_mm) +
+		                    " refused (above max_grasp_correction_mm = " +
+		                    mm(o_.retrieval.max_grasp_correction_mm) + "); first grasp kept");
+		timeline.note(r.reasons.back());
+		return;
+	}
+	const auto j = solve(T_GinA);
+	if (!j)
+	{
+		r.reasons.push_back("no IK solution for the verified grasp; first grasp kept");
+		return;
+	}
+	r.T_GinA = T_GinA, r.joints = *j, r.grasp_turn_deg = turn, r.correction_applied = true;
 }
 
 }  // namespace mrolr::mission

@@ -97,6 +97,10 @@ void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::s
 	visual_verification = util::readBool(c, s, "visual_verification", visual_verification);
 	grasp_yaw_search_deg = readDouble(c, s, "grasp_yaw_search_deg");
 	util::requireInRange(c, s, "grasp_yaw_search_deg", grasp_yaw_search_deg, 0, 180);
+	max_grasp_correction_mm = readDouble(c, s, "max_grasp_correction_mm", max_grasp_correction_mm);
+	util::requireInRange(c, s, "max_grasp_correction_mm", max_grasp_correction_mm, 0, 1000);
+	inject_pose_error_mm = readDouble(c, s, "inject_pose_error_mm", inject_pose_error_mm);
+	util::requireInRange(c, s, "inject_pose_error_mm", inject_pose_error_mm, -500, 500);
 }
 
 void RetrievalOptions::dump(std::ostream& out) const
@@ -104,7 +108,9 @@ void RetrievalOptions::dump(std::ostream& out) const
 	out << "approach_mm = " << approach_mm << "\nlift_mm = " << lift_mm
 	    << "\narm_move_time_s = " << arm_move_time_s
 	    << "\nvisual_verification = " << (visual_verification ? "true" : "false")
-	    << "\ngrasp_yaw_search_deg = " << grasp_yaw_search_deg << "\n";
+	    << "\ngrasp_yaw_search_deg = " << grasp_yaw_search_deg
+	    << "\nmax_grasp_correction_mm = " << max_grasp_correction_mm
+	    << "\ninject_pose_error_mm = " << inject_pose_error_mm << "\n";
 }
 
 }  // namespace mrolr::mission

@@ -106,6 +106,12 @@ struct RetrievalOptions
 	/** 0: only the model's grasp line; > 0: if it is infeasible, also the grasp turned about O's
 	 * vertical axis in steps of this (for objects symmetric about it), smallest turn first. */
 	double grasp_yaw_search_deg = 0;
+	/** Optional: a verification grasp further than this from the first is refused (the first is
+	 * kept and the report says why): a wrong re-recognition must not throw the arm about. */
+	double max_grasp_correction_mm = 40;
+	/** Optional, for tests: the first recognised pose is moved this far along C0's x (left)
+	 * before the grasp is planned, so the verification has a known error to correct. */
+	double inject_pose_error_mm = 0;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

@@ -55,6 +55,10 @@ class ObjectSearch
 	             const std::map<std::string, model::WireFrame>& models);
 	/** Head angles of sweep position @p pan_deg (tilted by gaze_tilt_deg, verged on the table). */
 	geometry::HeadAngles sweepAngles(double pan_deg) const;
+	/** Head angles that fixate the centre of the target's wire-frame (its line endpoints and conic
+	 * centres averaged, O) at the pose @p T_OinC0_mm: the re-observation of the visual
+	 * verification looks straight at the object, gaze lowered to it and cameras verged on it. */
+	geometry::HeadAngles fixationAngles(const Eigen::Isometry3d& T_OinC0_mm) const;
 	/** The simulated scene wire-frame (L, mm) of a view from head centre @p T_C0inW (m). */
 	model::WireFrame sceneOf(const WorldObjects& objects, const Eigen::Isometry3d& T_C0inW,
 	                         const geometry::HeadAngles& angles, std::mt19937& rng) const;
@@ -85,6 +89,7 @@ class ObjectSearch
 	geometry::BiSightHead head_;
 	recog::Recognizer recognizer_;
 	std::string target_;
+	Eigen::Vector3d p_centreinO_mm_;  ///< centre of the target's wire-frame
 	const std::map<std::string, model::WireFrame>& models_;
 };
 

@@ -4,15 +4,18 @@
  *   T_GinA = T_OinA · T_GinO (the model's grasp line),
  * the grasp is checked (reach, opening, table, arm/GraspFeasibility.h, and a reachable pre-grasp
  * pose) before the arm moves; the arm goes to a pre-grasp pose approach_mm back along z_G (or above
- * the grasp when that is out of reach), re-observes the object with the head and
- * corrects the grasp (visual verification, beyond the thesis's open loop), closes the gripper and
- * lifts. An unreachable or infeasible grasp is reported with its reasons and the arm never moves.
+ * the grasp when that is out of reach), the head fixates the object's estimated centre and
+ * recognises it again in a new stereo pair, the grasp is recomputed from that pose (visual
+ * verification, beyond the thesis's open loop; a correction above max_grasp_correction_mm is
+ * refused and reported), then the gripper closes and the arm lifts. An unreachable or infeasible
+ * grasp is reported with its reasons and the arm never moves.
  */
 #include <mrolr/arm/AnalyticIk.h>
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/ObjectSearch.h>
 
+#include <cmath>
 #include <functional>
 
 namespace mrolr::mission
@@ -29,6 +32,17 @@ struct RetrievalResult
 	bool verified = false;      ///< the re-observation recognised the object
 	double correction_mm = 0;   ///< |t(T_GinA corrected) − t(T_GinA first)|
 	double correction_deg = 0;
+	bool correction_applied = false;  ///< the grasp used is the verified one
+	bool correction_refused = false;  ///< verified, but beyond max_grasp_correction_mm
+	/** The object pose (C0, mm) the grasp was first planned on (recognised, plus any injected
+	 * error) and the one the verification recognised. */
+	Eigen::Isometry3d T_OinC0_first = Eigen::Isometry3d::Identity();
+	Eigen::Isometry3d T_OinC0_verified = Eigen::Isometry3d::Identity();
+	/** Filled by the mission from the simulator's truth (NaN when unknown): translation error
+	 * (mm) of the first and the verified object pose, and of the grasp used against the grasp at
+	 * the true pose. */
+	double object_error_before_mm = std::nan(""), object_error_after_mm = std::nan("");
+	double grasp_error_mm = std::nan("");
 	bool retrieved = false;  ///< the gripper holds the target
 	std::string grasped;     ///< the instance in the gripper
 };
@@ -36,22 +50,30 @@ struct RetrievalResult
 class Retrieval
 {
  public:
-	/** @p reobserve: a new recognition of the object from the head (returns T_OinC0 in mm, or
-	 * nothing when not recognised); @p grasped: the instance the gripper holds ("" if none). */
+	/** A new recognition of the object by the head, given the current estimate of T_OinC0 (mm)
+	 * to look at; returns the recognised T_OinC0 (mm), or nothing when not recognised. */
+	using Reobserve = std::function<std::optional<Eigen::Isometry3d>(const Eigen::Isometry3d&)>;
 	Retrieval(const MissionOptions& o, const model::WireFrame& target);
+	/** @p grasped: the instance the gripper holds ("" if none). */
 	RetrievalResult run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
-	                    hw::ArmDevice& arm,
-	                    const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+	                    hw::ArmDevice& arm, const Reobserve& reobserve,
 	                    const std::function<std::string()>& grasped, Timeline& timeline) const;
+	/** The grasp (A, mm) of the model's grasp line turned by @p turn_deg, object at
+	 * @p T_OinC0_mm (eq 6.7.1). */
+	Eigen::Isometry3d graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const;
 	/** The table plane's height in A (mm) for a table top @p top_height_m above the floor. */
 	double tableZinA(double top_height_m) const;
 
  private:
 	arm::GraspCheck check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
 	                      double table_z_mm) const;
-	bool reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm,
-	                    const std::function<std::optional<Eigen::Isometry3d>()>& reobserve,
+	bool reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reobserve& reobserve,
 	                    Timeline& timeline) const;
+	/** Recomputes the grasp from the verified pose and applies it unless refused. */
+	void correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm, Timeline& timeline) const;
+	/** The turn of the grasp at @p T_OinA nearest in rotation to the planned grasp (a symmetric
+	 * object may be recognised turned by a multiple of grasp_yaw_search_deg). */
+	double nearestTurn(const RetrievalResult& r, const Eigen::Isometry3d& T_OinA) const;
 	/** T_GinO of the model's grasp turned by @p turn_deg about O's z axis. */
 	Eigen::Isometry3d graspInObject(double turn_deg) const;
 	/** The first feasible grasp turn (0, +s, −s, +2s, …); fills T_GinA, joints and reasons. */
