@@ -15,9 +15,12 @@ using namespace mrolr;
 
 namespace
 {
+/** A file of this test's own: ctest runs the tests of this binary in parallel processes, so
+ * the running test's name keeps them from overwriting each other's files. */
 std::string tmp(const std::string& name)
 {
-	return ::testing::TempDir() + "model_app_" + name;
+	const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+	return ::testing::TempDir() + "model_app_" + info->name() + "_" + name;
 }
 
 nlohmann::json runApp(const std::vector<std::string>& args)
