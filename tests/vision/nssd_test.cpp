@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include <cmath>
+
 using namespace mrolr::vision;
 
 namespace
@@ -106,4 +108,30 @@ TEST(Nssd, BadInputIsReported)
 	EXPECT_THROW(nssdMap(makeTexture(13, 1), makeTexture(15, 2)), VisionError);
 	cv::Mat color(20, 20, CV_8UC3);
 	EXPECT_THROW(nssdMap(color, makeTexture(13, 1)), VisionError);
+}
+
+// Ambiguity (nssd_ambiguity_margin): the same texture twice in the region gives a rival score as
+// good as the best; two different textures leave a wide gap.
+TEST(Nssd, SecondScoreSeesARepeatedTexture)
+{
+	const cv::Point a{60, 80}, b{140, 80};
+	cv::Mat twice = twoTextureImage(a, b);
+	makeTexture(31, 11).copyTo(twice(cv::Rect(b.x - 15, b.y - 15, 31, 31)));
+	const cv::Mat saved = twice(cv::Rect(a.x - 6, a.y - 6, 13, 13)).clone();
+	const PatchMatch rep = searchSquare(twice, saved, {100, 80}, 60, 0.9);
+	ASSERT_TRUE(rep.found);
+	EXPECT_LT(rep.second_score - rep.score, 0.05);
+	const PatchMatch one = searchSquare(twoTextureImage(a, b), saved, {100, 80}, 60, 0.9);
+	ASSERT_TRUE(one.found);
+	EXPECT_LT((one.uv - Eigen::Vector2d(a.x, a.y)).norm(), 1.0);
+	EXPECT_GT(one.second_score - one.score, 0.3);
+}
+
+TEST(Nssd, SecondScoreIsInfiniteWithoutRivals)
+{
+	const cv::Mat im = twoTextureImage({60, 80}, {140, 80});
+	const cv::Mat saved = im(cv::Rect(54, 74, 13, 13)).clone();
+	const PatchMatch m = searchSquare(im, saved, {60, 80}, 3, 0.9);
+	ASSERT_TRUE(m.found);
+	EXPECT_TRUE(std::isinf(m.second_score));
 }

@@ -19,12 +19,14 @@ TEST(VisionOptions, ShippedConfigHasTheThesisValues)
 	EXPECT_DOUBLE_EQ(o.search_n_sigma, 3);
 	EXPECT_DOUBLE_EQ(o.epipolar_band_px, 7);
 	EXPECT_DOUBLE_EQ(o.lockon_radius_px, 2);
+	EXPECT_DOUBLE_EQ(o.nssd_ambiguity_margin, 0);  // optional key, off: the thesis's matching
 }
 
 TEST(VisionOptions, DumpRoundTrips)
 {
 	VisionOptions a;
 	a.nssd_threshold = 0.7;
+	a.nssd_ambiguity_margin = 0.1;
 	a.fixation_max_attempts = 9;
 	a.selection = Selection::Saccade;
 	std::ostringstream s;

@@ -28,15 +28,25 @@ bool predictRegions(const geometry::BiSightHead& head, const geometry::HeadAngle
 	}
 }
 
+namespace
+{
+/** A best match with a rival within the ambiguity margin elsewhere in the region (repeated
+ * texture) is no measurement. */
+bool ambiguous(const PatchMatch& m, const VisionOptions& o)
+{
+	return o.nssd_ambiguity_margin > 0 && m.second_score - m.score < o.nssd_ambiguity_margin;
+}
+}  // namespace
+
 void matchInRegions(const StereoImages& images, const geometry::BiSightHead& head,
                     const cv::Mat& patch, const VisionOptions& o, NssdMethod method,
                     FeatureMeasurement& m)
 {
 	m.found = false;
 	m.left = searchEllipse(images.left, patch, m.ellipse_left, o.nssd_threshold, method);
-	if (!m.left.found) return;
+	if (!m.left.found || ambiguous(m.left, o)) return;
 	m.right = searchEllipse(images.right, patch, m.ellipse_right, o.nssd_threshold, method);
-	if (!m.right.found) return;
+	if (!m.right.found || ambiguous(m.right, o)) return;
 	m.pixels = {m.left.uv.x(), m.left.uv.y(), m.right.uv.x(), m.right.uv.y()};
 	try
 	{

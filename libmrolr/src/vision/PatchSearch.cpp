@@ -25,6 +25,21 @@ Eigen::Vector2d refine(const cv::Mat& map, int x, int y)
 	if (y > 0 && y + 1 < map.rows) d.y() = parabolaOffset(s(x, y - 1), s(x, y), s(x, y + 1));
 	return d;
 }
+
+/** Best score of the map outside the patch-sized neighbourhood of (bx, by), region only. */
+double secondScore(const cv::Mat& map, const cv::Rect& centres, const RegionTest& inside, int bx,
+                   int by, int rx, int ry)
+{
+	double second = std::numeric_limits<double>::infinity();
+	for (int y = 0; y < map.rows; ++y)
+		for (int x = 0; x < map.cols; ++x)
+		{
+			if (std::abs(x - bx) <= rx && std::abs(y - by) <= ry) continue;
+			if (!inside(Eigen::Vector2d(centres.x + x, centres.y + y))) continue;
+			second = std::min(second, static_cast<double>(map.at<float>(y, x)));
+		}
+	return second;
+}
 }  // namespace
 
 PatchMatch searchPatch(const cv::Mat& image, const cv::Mat& patch, const cv::Rect& box,
@@ -51,6 +66,7 @@ PatchMatch searchPatch(const cv::Mat& image, const cv::Mat& patch, const cv::Rec
 	if (bx < 0) return best;
 	best.uv = Eigen::Vector2d(centres.x + bx, centres.y + by) + refine(map, bx, by);
 	best.found = best.score < threshold;
+	if (best.found) best.second_score = secondScore(map, centres, inside, bx, by, rx, ry);
 	return best;
 }
 

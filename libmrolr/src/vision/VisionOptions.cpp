@@ -36,6 +36,8 @@ void VisionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 		throw util::ConfigError(util::describeKey(cfg, section, "patch_size_px") +
 		                        ": must be odd (a centre pixel)");
 	nssd_threshold = readIn(cfg, section, "nssd_threshold", 1e-6, 4);
+	nssd_ambiguity_margin = util::readDouble(cfg, section, "nssd_ambiguity_margin", 0.0);
+	util::requireInRange(cfg, section, "nssd_ambiguity_margin", nssd_ambiguity_margin, 0, 4);
 	search_n_sigma = readIn(cfg, section, "search_n_sigma", 0.1, 20);
 	epipolar_band_px = readIn(cfg, section, "epipolar_band_px", 0, 1000);
 	epipolar_min_depth_m = readIn(cfg, section, "epipolar_min_depth_m", 1e-3, 1e6);
@@ -69,8 +71,9 @@ VisionOptions VisionOptions::fromFile(const std::string& path, const std::string
 void VisionOptions::dump(std::ostream& out) const
 {
 	out << std::setprecision(17) << "patch_size_px = " << patch_size_px
-	    << "\nnssd_threshold = " << nssd_threshold << "\nsearch_n_sigma = " << search_n_sigma
-	    << "\nepipolar_band_px = " << epipolar_band_px
+	    << "\nnssd_threshold = " << nssd_threshold
+	    << "\nnssd_ambiguity_margin = " << nssd_ambiguity_margin
+	    << "\nsearch_n_sigma = " << search_n_sigma << "\nepipolar_band_px = " << epipolar_band_px
 	    << "\nepipolar_min_depth_m = " << epipolar_min_depth_m
 	    << "\nepipolar_max_depth_m = " << epipolar_max_depth_m
 	    << "\nmin_corner_eigenvalue = " << min_corner_eigenvalue

@@ -22,6 +22,9 @@ struct PatchMatch
 	Eigen::Vector2d uv = Eigen::Vector2d::Zero();  ///< centre of the best patch, sub-pixel
 	double score = std::numeric_limits<double>::infinity();  ///< best NSSD (eq 5.21), any value
 	int candidates = 0;  ///< patch centres scored (inside the region and the image)
+	/** Best NSSD among the candidates more than half a patch side from the best one (in x or y):
+	 * a value close to score means an ambiguous match (repeated texture); infinity if none. */
+	double second_score = std::numeric_limits<double>::infinity();
 };
 
 /** Predicate on a candidate centre (u, v), pixels: true if it belongs to the search region. */

@@ -22,6 +22,10 @@ struct VisionOptions
 {
 	int patch_size_px = 13;       ///< side of the square feature patch (5.2: 13×13)
 	double nssd_threshold = 0.9;  ///< best NSSD (eq 5.21) below this wins (5.2.1, [Dav98 p45])
+	/** Optional key: a feature match (measureInImages) is refused as ambiguous when another place
+	 * of the search ellipse, more than half a patch away, scores within this of the best NSSD in
+	 * either image (repeated texture); 0 = off (the thesis). */
+	double nssd_ambiguity_margin = 0;
 	double search_n_sigma = 3;    ///< half-axes of the search ellipse in σ (eqs 5.37–5.39)
 	double epipolar_band_px = 7;  ///< right-image search within ± this of the epipolar line (5.3)
 	double epipolar_min_depth_m = 0.3;    ///< nearest depth along the left ray that is searched
