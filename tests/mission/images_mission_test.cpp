@@ -29,3 +29,26 @@ TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
 	EXPECT_GT(r.timeline.renderSeconds(), 0);
 	EXPECT_TRUE(r.shots.empty());
 }
+
+// [navigation] image_nssd_ambiguity_margin reaches the vision options of the images mode only;
+// absent, the vision file's value stays; out of range names the key.
+TEST(MissionImages, AmbiguityMarginReplacesTheVisionFilesValue)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("navigation", "measurement_source", "images");
+	cfg.write("navigation", "image_nssd_ambiguity_margin", "0.25");
+	EXPECT_DOUBLE_EQ(mission::test::optionsFrom(cfg).vision.nssd_ambiguity_margin, 0.25);
+	cfg.write("navigation", "image_nssd_ambiguity_margin", "-1");
+	EXPECT_DOUBLE_EQ(mission::test::optionsFrom(cfg).vision.nssd_ambiguity_margin, 0);
+	cfg.write("navigation", "image_nssd_ambiguity_margin", "9");
+	try
+	{
+		mission::test::optionsFrom(cfg);
+		FAIL() << "a margin of 9 was accepted";
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("image_nssd_ambiguity_margin"), std::string::npos)
+		    << e.what();
+	}
+}

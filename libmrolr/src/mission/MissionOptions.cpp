@@ -171,6 +171,8 @@ void readVisionFile(const CConfigFileBase& cfg, const std::string& dir, MissionO
 {
 	const auto vf = openNamed(cfg, "files", "vision_file", dir);
 	o.vision.loadFromConfigFile(vf, "vision");
+	if (o.navigation.image_nssd_ambiguity_margin >= 0)
+		o.vision.nssd_ambiguity_margin = o.navigation.image_nssd_ambiguity_margin;
 	const auto head = o.slam.head;
 	o.slam.loadFromConfigFile(vf, "slam");
 	o.slam.head = head;

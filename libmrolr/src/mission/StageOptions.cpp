@@ -28,6 +28,9 @@ void NavigationOptions::loadFromConfigFile(const CConfigFileBase& c, const std::
 	if (measurement_source != "ideal" && measurement_source != "images")
 		throw util::ConfigError(util::describeKey(c, s, "measurement_source") + ": '" +
 		                        measurement_source + "' is not one of ideal, images");
+	image_nssd_ambiguity_margin =
+	    readDouble(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin);
+	util::requireInRange(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin, -1, 4);
 	util::requireInRange(c, s, "max_rotation_step_deg", max_rotation_step_deg, 0, 360);
 	util::requireInRange(c, s, "reverse_max_m", reverse_max_m, 0, 10);
 	util::requireInRange(c, s, "measurements_per_step", measurements_per_step, 0, 20);
@@ -48,7 +51,7 @@ void NavigationOptions::dump(std::ostream& out) const
 	    << "\ntable_clearance_m = " << table_clearance_m
 	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
 	    << "\nreverse_max_m = " << reverse_max_m << "\nmeasurement_source = " << measurement_source
-	    << "\n";
+	    << "\nimage_nssd_ambiguity_margin = " << image_nssd_ambiguity_margin << "\n";
 }
 
 void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

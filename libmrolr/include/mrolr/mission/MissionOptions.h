@@ -67,6 +67,10 @@ struct NavigationOptions
 	 * in the images, saved patches sought by NSSD in their innovation ellipses, triangulated
 	 * (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's filter). */
 	std::string measurement_source = "ideal";
+	/** Optional, images only: replaces the vision file's [vision] nssd_ambiguity_margin (a match
+	 * with a rival within this NSSD elsewhere in its search ellipse is refused); < 0 (default):
+	 * the vision file's value. */
+	double image_nssd_ambiguity_margin = -1;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
