@@ -122,6 +122,22 @@ TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 	EXPECT_EQ(r.shots.size(), 10u);  // five views at each of the two stations
 }
 
+TEST(MissionRun, LostFeaturesAreDeletedReplacedAndTheRobotStillGetsHome)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("navigation", "lost_feature_probability", "0.5");
+	const auto o = mission::test::optionsFrom(cfg);
+	const auto r = mission::Mission(o).run();
+	// more than half of a feature's last ten searches fail: the 5.7 rule deletes it
+	EXPECT_GT(r.measurements_lost, 20);
+	EXPECT_GT(r.features_deleted, 0);
+	EXPECT_GT(r.measurements, 0);
+	EXPECT_TRUE(r.found);
+	EXPECT_TRUE(r.returned_home);
+	EXPECT_LT(r.final_position_error_m, o.home_tolerance_m);
+	EXPECT_LT(r.final_estimate_error_m, o.home_tolerance_m);
+}
+
 TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 {
 	auto cfg = mission::test::defaultMissionConfig();

@@ -306,6 +306,8 @@ void Mission::Impl::finish()
 		r.map = nav->map();
 		r.measurements = nav->measurements;
 		r.measurements_rejected = nav->rejected;
+		r.measurements_lost = nav->lost;
+		r.features_deleted = nav->deleted_features;
 		r.image_searches = nav->image_cycles;
 		r.image_matches = nav->image_matched;
 	}

@@ -193,15 +193,40 @@ void Navigator::measure()
 		if (!pick) break;
 		const size_t i = visible[*pick];
 		visible.erase(visible.begin() + static_cast<long>(*pick));
+		timeline_.advance(o_.navigation.measurement_time_s);
+		if (lostThisTime(i)) continue;
 		obs.push_back(
 		    {i, noisyMeasurement(xv_true, o_.world.findLandmark(filter_.info(i).label)->p_LinW)});
-		timeline_.advance(o_.navigation.measurement_time_s);
 	}
-	if (obs.empty()) return;
 	ComputeTimer t(timeline_);
-	const auto report = filter_.update(obs);
-	measurements += static_cast<int>(report.accepted.size());
-	rejected += static_cast<int>(report.rejected.size());
+	if (!obs.empty())
+	{
+		const auto report = filter_.update(obs);
+		measurements += static_cast<int>(report.accepted.size());
+		rejected += static_cast<int>(report.rejected.size());
+		for (size_t i : report.accepted) filter_.recordAttempt(i, true);
+		for (size_t i : report.rejected) filter_.recordAttempt(i, false);
+	}
+	deleteFailingFeatures();
+}
+
+bool Navigator::lostThisTime(size_t i)
+{
+	const double p = o_.navigation.lost_feature_probability;
+	if (p <= 0 || std::uniform_real_distribution<double>(0, 1)(rng_) >= p) return false;
+	filter_.recordAttempt(i, false);
+	++lost;
+	return true;
+}
+
+void Navigator::deleteFailingFeatures()
+{
+	for (size_t i = filter_.numFeatures(); i-- > 0;)
+		if (!filter_.info(i).known && filter_.shouldDelete(i))
+		{
+			filter_.deleteFeature(i);
+			++deleted_features;
+		}
 }
 
 void Navigator::record()

@@ -111,6 +111,8 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"steps", r.path.size()},
 	          {"measurements", r.measurements},
 	          {"measurements_rejected", r.measurements_rejected},
+	          {"measurements_lost", r.measurements_lost},
+	          {"features_deleted", r.features_deleted},
 	          {"measurement_source", o.navigation.measurement_source},
 	          {"navigation_pairs", r.navigation_pairs},
 	          {"image_searches", r.image_searches},

@@ -31,6 +31,9 @@ void NavigationOptions::loadFromConfigFile(const CConfigFileBase& c, const std::
 	image_nssd_ambiguity_margin =
 	    readDouble(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin);
 	util::requireInRange(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin, -1, 4);
+	lost_feature_probability =
+	    readDouble(c, s, "lost_feature_probability", lost_feature_probability);
+	util::requireInRange(c, s, "lost_feature_probability", lost_feature_probability, 0, 1);
 	util::requireInRange(c, s, "max_rotation_step_deg", max_rotation_step_deg, 0, 360);
 	util::requireInRange(c, s, "reverse_max_m", reverse_max_m, 0, 10);
 	util::requireInRange(c, s, "measurements_per_step", measurements_per_step, 0, 20);
@@ -51,7 +54,8 @@ void NavigationOptions::dump(std::ostream& out) const
 	    << "\ntable_clearance_m = " << table_clearance_m
 	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
 	    << "\nreverse_max_m = " << reverse_max_m << "\nmeasurement_source = " << measurement_source
-	    << "\nimage_nssd_ambiguity_margin = " << image_nssd_ambiguity_margin << "\n";
+	    << "\nimage_nssd_ambiguity_margin = " << image_nssd_ambiguity_margin
+	    << "\nlost_feature_probability = " << lost_feature_probability << "\n";
 }
 
 void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

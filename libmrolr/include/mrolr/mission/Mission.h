@@ -49,6 +49,7 @@ struct MissionResult
 	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted
 	std::vector<MappedLandmark> map;
 	int measurements = 0, measurements_rejected = 0;
+	int measurements_lost = 0, features_deleted = 0;  ///< lost_feature_probability, rule 5.7
 	/** measurement_source = images: searches for a mapped feature, how many matched in both
 	 * images, and the stereo pairs navigation grabbed (not in shots). */
 	int image_searches = 0, image_matches = 0, navigation_pairs = 0;

@@ -71,6 +71,11 @@ struct NavigationOptions
 	 * with a rival within this NSSD elsewhere in its search ellipse is refused); < 0 (default):
 	 * the vision file's value. */
 	double image_nssd_ambiguity_margin = -1;
+	/** Optional, ideal only (reliability check): probability that a chosen feature is lost
+	 * (occluded, moved, not found where predicted); the failed attempt counts towards the
+	 * deletion rule of 5.7 (more than half of the last ten failed: deleted, known features
+	 * kept) and new features are initialised as usual. 0 (default): features are never lost. */
+	double lost_feature_probability = 0;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

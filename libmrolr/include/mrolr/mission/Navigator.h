@@ -62,6 +62,8 @@ class Navigator
 	    before_translation;
 	int max_detours_per_leg = 3;  ///< detours on one leg before the rest is driven unchecked
 	int measurements = 0, rejected = 0;
+	/** ideal: measurements lost (lost_feature_probability), features deleted by the 5.7 rule. */
+	int lost = 0, deleted_features = 0;
 	int image_cycles = 0, image_matched = 0;  ///< images: cycles that searched, matches found
 
  private:
@@ -75,6 +77,10 @@ class Navigator
 	                int& detours);
 	void execute(const base::PlannedStep& step);
 	void measure();
+	/** True (and the failed attempt recorded) when feature @p i is lost this time. */
+	bool lostThisTime(size_t i);
+	/** Deletes the features failing the 5.7 rule (known features are kept). */
+	void deleteFailingFeatures();
 	/** measurements_per_step cycles of the vision area (the first one predicts with @p u). */
 	void measureInImages(const base::WheelControl& u);
 	std::vector<size_t> visibleMapped(const Eigen::Vector3d& xv_true);

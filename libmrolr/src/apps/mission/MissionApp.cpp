@@ -114,10 +114,10 @@ mission::MissionOptions MissionApp::loadOptions() const
 		cfg.write(section, key, value);
 	}
 	cfg.discardSavingChanges();  // never write the overrides back into the file
-	auto options = mission::MissionOptions::fromConfig(
+	auto loaded = mission::MissionOptions::fromConfig(
 	    cfg, std::filesystem::path(config_path).parent_path().string());
-	options.config_path = config_path;
-	return options;
+	loaded.config_path = config_path;
+	return loaded;
 }
 
 int MissionApp::run(std::ostream& out, std::ostream& progress)
