@@ -18,7 +18,11 @@ std::string demoDir()
 {
 	static const std::string dir = []
 	{
-		const auto d = (fs::temp_directory_path() / "mrolr_recognize_app_test").string();
+		// ctest runs each test of this binary in its own process, in parallel: one folder a test
+		const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+		const auto d =
+		    (fs::temp_directory_path() / ("mrolr_recognize_app_test_" + std::string(info->name())))
+		        .string();
 		fs::remove_all(d);
 		RecognizeApp app;
 		app.initialize({"mrolr-recognize", "--make-demo", d});
