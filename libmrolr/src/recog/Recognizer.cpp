@@ -126,6 +126,8 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	for (const auto& f : table_.features()) centroid_O_ += f.m;
 	centroid_O_ /= static_cast<double>(table_.features().size());
 	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
+	plane_gen_ = std::make_shared<PlaneHypothesisGenerator>(table_.features(),
+	                                                        modelBaseZ_mm(model), opts_.plane);
 	if (!opts_.verify_visible_only) return;
 	min_visible_share_ = minVisibleShare(table_.features(), *occlusion_, centroid_O_);
 }
@@ -204,10 +206,11 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 }
 
 RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
-                                        const Eigen::Vector3d* up_S,
-                                        const ImageVerifier* images) const
+                                        const Eigen::Vector3d* up_S, const ImageVerifier* images,
+                                        const SupportPlane* plane) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
+	if (!up_S && plane) up_S = &plane->n_S;
 	RecognitionResult best;
 	best.model = table_.name();
 	size_t last = opts_.levels.size();
@@ -225,6 +228,13 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
+	}
+	if (images && plane && opts_.plane.enable && (!best.found || opts_.plane.run_when == "always"))
+	{
+		RecognitionResult r = recognizeOnPlane(scene, *plane, *images);
+		if (r.found ? !best.found || rankOf(r) > rankOf(best)
+		            : !best.found && r.image_score > best.image_score)
+			best = r;
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
 	best.levels_skipped = skipped;
@@ -278,9 +288,10 @@ double Recognizer::modelLength_mm(size_t level) const
 }
 
 RecognitionResult Recognizer::recognize(const model::WireFrame& scene, const Eigen::Vector3d* up_S,
-                                        const ImageVerifier* images) const
+                                        const ImageVerifier* images,
+                                        const SupportPlane* plane) const
 {
-	return recognize(featuresOf(scene), up_S, images);
+	return recognize(featuresOf(scene), up_S, images, plane);
 }
 
 RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& scenes) const

@@ -67,6 +67,9 @@ struct EvalScene
 	stereo::StereoCalibration calib;  ///< the head's ideal cameras at the scene's angles
 	model::WireFrame scene;           ///< reconstructed, frame left_camera (mm)
 	Eigen::Vector3d up_L = Eigen::Vector3d::UnitY();  ///< the room's up in L (from the head angles)
+	/** The table top in L (mm; normal up_L): from the table's height in the world and the
+	 * camera's pose. */
+	recog::SupportPlane plane_L;
 	std::vector<EvalObject> objects;
 	double render_s = 0, reconstruct_s = 0;
 	const EvalObject* find(const std::string& model) const;
@@ -142,10 +145,11 @@ struct EvalCase
 
 /** Searches @p rec's model in @p s and compares with the truth (@p symmetry_deg of the model's
  * object, from symmetryAnglesDeg). @p images: the scene's stereo pair for image verification, or
- * null (3D verification only). */
+ * null (3D verification only); @p plane: the support plane (s.plane_L), or null. */
 EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
                       const std::vector<double>& symmetry_deg, const EvaluationOptions& opts,
-                      const recog::ImageVerifier* images = nullptr);
+                      const recog::ImageVerifier* images = nullptr,
+                      const recog::SupportPlane* plane = nullptr);
 
 /** The figures of a set of cases (issue 7's targets). */
 struct EvalSummary
@@ -155,6 +159,7 @@ struct EvalSummary
 	int absent_cases = 0;     ///< model absent from the scene
 	int false_positives = 0;  ///< absent but found
 	int wrong_poses = 0;      ///< present, found at a pose beyond the error limits
+	int recognised_from_plane = 0;  ///< of the recognised, by a support-plane hypothesis
 	double rate = 0;          ///< recognised / rate_cases
 	double median_rot_err_deg = -1, median_trans_err_mm = -1;  ///< over correct rate cases
 	double median_ms = 0, max_ms = 0;                          ///< per model and scene, all cases

@@ -36,6 +36,7 @@
 #include <mrolr/recog/Recognizer.h>
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,12 @@ class RecognizeApp
 	long eval_seed = -1;        ///< --eval-seed (-1: [evaluation] seed)
 	/** Verify hypotheses in the stereo images when there are images (false: --no-image-verify). */
 	bool image_verify = true;
+	/** --support-plane nx,ny,nz,d_mm (--left/--right form): the table top in the scene frame L,
+	 * points x with n·x + d = 0 (n up, normalised here); unset without the option. */
+	std::optional<recog::SupportPlane> support_plane;
+	/** Hypotheses from single features on the support plane ([plane_hypotheses] enable; false:
+	 * --no-plane-hypotheses). */
+	bool plane_hypotheses = true;
 	bool json = false;
 	bool help_shown = false;
 
@@ -84,6 +91,8 @@ class RecognizeApp
 
  private:
 	void loadScenes();
+	/** options from [recognition] and [plane_hypotheses] of config_path (and plane_hypotheses). */
+	void loadRecognitionOptions();
 	/** The single stereo scene searched with verification in @p images. */
 	recog::RecognitionResult recognizeInImages(const recog::Recognizer& rec,
 	                                           const recog::ImageVerifier& images) const;

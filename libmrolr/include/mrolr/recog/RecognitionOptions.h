@@ -2,6 +2,8 @@
 /** The seven matching parameters of thesis 6.3.2 / paper 3.2 and their fine-to-coarse schedule of
  * thesis 6.4 (12 levels by default), read from config/recognition.ini. */
 
+#include <mrolr/recog/PlaneHypothesisOptions.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <ostream>
@@ -70,6 +72,9 @@ struct RecognitionOptions
 	/** verify_min_score is multiplied by this when the visible-only score is used (such scores
 	 * are about twice the whole-model ones). Optional key, default 1.2. */
 	double visible_min_score_factor = 1.2;
+	/** Hypotheses from single features on the support plane: section [plane_hypotheses], read
+	 * by its own loadFromConfigFile (not by this struct's, which reads [recognition] only). */
+	PlaneHypothesisOptions plane;
 
 	/** Twelve levels from fine to coarse (the values shipped in config/recognition.ini). */
 	static RecognitionOptions defaults();

@@ -8,8 +8,10 @@
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/ModelTable.h>
+#include <mrolr/recog/PlaneHypotheses.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/recog/SelfOcclusion.h>
+#include <mrolr/recog/SupportPlane.h>
 #include <mrolr/recog/SupportBound.h>
 #include <mrolr/recog/Verification.h>
 
@@ -41,6 +43,9 @@ struct RecognitionResult
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
 	 * model edge samples on image edges), which decided acceptance; -1 without images. */
 	double image_score = -1;
+	/** The answer's pose came from a single-feature hypothesis on the support plane
+	 * (PlaneHypotheses.h; level is then options().levels.size() + 1), not from a clique. */
+	bool from_plane = false;
 };
 
 class Recognizer
@@ -59,13 +64,28 @@ class Recognizer
 	 * @p images: the stereo pair the scene was reconstructed from (scene frame = left camera L),
 	 * or null. With images the 3D score is only a pre-filter (images->options().prefilter_score)
 	 * and a hypothesis is accepted, and ranked, by its image score (images->options().min_score);
-	 * the scene's features still generate the hypotheses. */
+	 * the scene's features still generate the hypotheses.
+	 * @p plane: the support plane the objects stand on (scene frame), or null. With images and
+	 * options().plane.enable, single scene features on it make further hypotheses
+	 * (recognizeOnPlane) when the levels found nothing (or always, options().plane.run_when).
+	 * Without @p up_S its normal is the up direction. */
 	RecognitionResult recognize(const model::WireFrame& scene,
 	                            const Eigen::Vector3d* up_S = nullptr,
-	                            const ImageVerifier* images = nullptr) const;
+	                            const ImageVerifier* images = nullptr,
+	                            const SupportPlane* plane = nullptr) const;
 	RecognitionResult recognize(const std::vector<Feature>& scene,
 	                            const Eigen::Vector3d* up_S = nullptr,
-	                            const ImageVerifier* images = nullptr) const;
+	                            const ImageVerifier* images = nullptr,
+	                            const SupportPlane* plane = nullptr) const;
+
+	/** Hypotheses from single scene features on @p plane (PlaneHypothesisGenerator), ranked by a
+	 * quick image score (options().plane.prerank_spacing_mm), the best options().plane
+	 * .max_hypotheses scored and refined in @p images as the clique hypotheses are; found when
+	 * the best reaches options().plane.min_image_score (and the images' min_score) with its base
+	 * within max_base_offset_mm of the plane. */
+	RecognitionResult recognizeOnPlane(const std::vector<Feature>& scene, const SupportPlane& plane,
+	                                   const ImageVerifier& images) const;
+	const PlaneHypothesisGenerator& planeGenerator() const { return *plane_gen_; }
 
 	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), computed for the
 	 * coarsest tolerances of all levels so that every level can use them. */
@@ -159,6 +179,7 @@ class Recognizer
 	/** Lower bound of the expected-visible share of the model length over viewpoints (1 without
 	 * occlusion): scales the support a level needs when skipping hopeless levels. */
 	double min_visible_share_ = 1.0;
+	std::shared_ptr<const PlaneHypothesisGenerator> plane_gen_;
 };
 
 }  // namespace mrolr::recog

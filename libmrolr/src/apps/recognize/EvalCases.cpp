@@ -29,13 +29,13 @@ double truthScore(const recog::Recognizer& rec, const std::vector<recog::Feature
 
 EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
                       const std::vector<double>& symmetry_deg, const EvaluationOptions& opts,
-                      const recog::ImageVerifier* images)
+                      const recog::ImageVerifier* images, const recog::SupportPlane* plane)
 {
 	EvalCase c;
 	c.scene = s.index;
 	c.model = rec.table().name();
 	const auto scene = recog::featuresOf(s.scene);
-	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L, images);
+	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L, images, plane);
 	c.result = r;
 	c.image_score = r.image_score;
 	c.found = r.found, c.score = r.score, c.level = r.level, c.ms = r.ms;
@@ -78,6 +78,7 @@ EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOption
 		if (c.visible_fraction < opts.min_visible_fraction) continue;
 		++s.rate_cases;
 		if (!c.correct) continue;
+		s.recognised_from_plane += c.result.from_plane ? 1 : 0;
 		++s.recognised, rot.push_back(c.rot_err_deg), trans.push_back(c.trans_err_mm);
 	}
 	s.rate = s.rate_cases ? static_cast<double>(s.recognised) / s.rate_cases : 0;

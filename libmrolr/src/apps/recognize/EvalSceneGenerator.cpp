@@ -167,6 +167,10 @@ EvalScene EvalSceneGenerator::make(int k)
 	s.left = greyOf(f.left), s.right = greyOf(f.right), s.render_s = f.render_s;
 	s.calib = stereo::calibrationFromHead(head_, v.angles);
 	s.up_L = head_.T_LinC0(v.angles).linear().transpose() * Eigen::Vector3d::UnitY();  // C0: y up
+	const Eigen::Isometry3d T_WinL = (v.T_C0inW * head_.T_LinC0(v.angles)).inverse();
+	const Eigen::Vector3d p_topInW =
+	    p_fixInW - Eigen::Vector3d(0, opts_.fixation_height_m, 0);  // on the table top (m)
+	s.plane_L = recog::SupportPlane::through(1000 * (T_WinL * p_topInW), s.up_L);
 	reconstruct(s);
 	for (const auto& ov : sim::objectViews(w, head_, v.T_C0inW, v.angles))
 		s.objects.push_back(truthOf(ov, s.calib, f.depth_left_m));

@@ -36,6 +36,7 @@ nlohmann::json caseJson(const EvalCase& c)
 	        {"image_score", c.image_score},
 	        {"truth_image_score", c.truth_image_score},
 	        {"level", c.level},
+	        {"from_plane", c.result.from_plane},
 	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
 	        {"ms", c.ms}};
@@ -64,7 +65,10 @@ std::string saveScene(const EvalScene& s, const std::string& dir)
 	s.calib.saveToConfigFile(calib, "stereo_calib");
 	nlohmann::json objects = nlohmann::json::array();
 	for (const auto& o : s.objects) objects.push_back(objectJson(o));
-	std::ofstream((d / "truth.json").string()) << nlohmann::json{{"objects", objects}}.dump(2);
+	const auto& n = s.plane_L.n_S;
+	const nlohmann::json plane = {n.x(), n.y(), n.z(), s.plane_L.d_mm};
+	std::ofstream((d / "truth.json").string())
+	    << nlohmann::json{{"objects", objects}, {"support_plane_L", plane}}.dump(2);
 	return d.string();
 }
 
@@ -85,6 +89,7 @@ nlohmann::json summaryJson(const EvalSummary& s)
 	        {"absent_cases", s.absent_cases},
 	        {"false_positives", s.false_positives},
 	        {"wrong_poses", s.wrong_poses},
+	        {"recognised_from_plane", s.recognised_from_plane},
 	        {"median_rot_err_deg", s.median_rot_err_deg},
 	        {"median_trans_err_mm", s.median_trans_err_mm},
 	        {"median_ms", s.median_ms},
@@ -120,7 +125,7 @@ void RecognizeApp::loadEvaluationModels(const EvalSceneGenerator& gen)
 int RecognizeApp::runEvaluation(std::ostream& out)
 {
 	const mrpt::config::CConfigFile cfg(util::requireProjectFile(config_path));
-	options.loadFromConfigFile(cfg, "recognition");
+	loadRecognitionOptions();
 	eval_options.loadFromConfigFile(cfg, "evaluation");
 	if (image_verify) image_options.loadFromConfigFile(cfg, "image_verification");
 	if (eval_scenes > 0) eval_options.scenes = eval_scenes;
@@ -145,7 +150,7 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 		for (size_t i = 0; i < recs.size(); ++i)
 		{
 			eval_cases.push_back(
-			    evaluateCase(recs[i], s, symmetries[i], eval_options, images.get()));
+			    evaluateCase(recs[i], s, symmetries[i], eval_options, images.get(), &s.plane_L));
 			found.push_back(eval_cases.back().result);
 		}
 		const std::string d = saveScene(s, evaluate_dir);
@@ -175,13 +180,15 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 		if (c.present || c.found)
 			out << "scene " << c.scene << " " << c.model << (c.present ? "" : " (absent)")
 			    << ": visible " << c.visible_fraction << ", "
-			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found") << ", score "
+			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found")
+			    << (c.found && c.result.from_plane ? " (plane)" : "") << ", score "
 			    << c.score << " (at truth " << c.truth_score << "), image " << c.image_score
 			    << " (at truth " << c.truth_image_score << "), level " << c.level << ", err "
 			    << c.rot_err_deg << " deg " << c.trans_err_mm << " mm, " << c.ms << " ms\n";
 	const auto& s = eval_summary;
 	out << "recognised " << s.recognised << "/" << s.rate_cases << " (" << 100 * s.rate
-	    << " %) with visible fraction >= " << eval_options.min_visible_fraction
+	    << " %) with visible fraction >= " << eval_options.min_visible_fraction << " ("
+	    << s.recognised_from_plane << " by plane hypotheses)"
 	    << "; false positives " << s.false_positives << "/" << s.absent_cases << "; wrong poses "
 	    << s.wrong_poses << "; median errors " << s.median_rot_err_deg << " deg, "
 	    << s.median_trans_err_mm << " mm; per model median " << s.median_ms << " ms (absent "

@@ -6,6 +6,19 @@ namespace mrolr::apps
 {
 namespace
 {
+recog::SupportPlane parseSupportPlane(const std::string& text)
+{
+	const auto v = util::parseNumberList(text, 4, "--support-plane nx,ny,nz,d_mm");
+	try
+	{
+		return recog::SupportPlane::fromCoefficients(Eigen::Vector3d(v[0], v[1], v[2]), v[3]);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw util::UsageError(std::string("--support-plane: ") + e.what());
+	}
+}
+
 void requireInputs(const RecognizeApp& a)
 {
 	const bool stereo = !a.left_png.empty() || !a.right_png.empty();
@@ -16,6 +29,8 @@ void requireInputs(const RecognizeApp& a)
 	if (stereo && a.scene_paths.empty() &&
 	    (a.left_png.empty() || a.right_png.empty() || a.calib_path.empty()))
 		throw util::UsageError("building the scene from stereo needs --left, --right and --calib");
+	if (a.support_plane && a.right_png.empty())
+		throw util::UsageError("--support-plane is for a stereo scene (--left/--right/--calib)");
 	if (!a.overlay_png.empty() && a.calib_path.empty())
 		throw util::UsageError("--overlay projects with the left camera: it needs --calib");
 }
@@ -57,6 +72,16 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	                           "with a stereo pair (--left/--right, --evaluate): verify in 3D "
 	                           "only, not in the images ([image_verification] of --config)",
 	                           cmd);
+	Str plane("", "support-plane",
+	          "--left/--right: the plane the objects stand on, in the left camera frame L: "
+	          "normal (pointing up) and offset, points x with nx*x + ny*y + nz*z + d_mm = 0 (mm); "
+	          "gives the upright prior and the single-feature hypotheses on the plane "
+	          "([plane_hypotheses] of --config)",
+	          false, "", "nx,ny,nz,d_mm", cmd);
+	TCLAP::SwitchArg no_plane("", "no-plane-hypotheses",
+	                          "no single-feature hypotheses on the support plane (--evaluate, "
+	                          "--support-plane)",
+	                          cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;
@@ -70,6 +95,8 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	evaluate_dir = evaluate.getValue(), truth_models = truth.getValue();
 	eval_scenes = nscenes.getValue(), eval_seed = seed.getValue();
 	image_verify = !no_images.getValue();
+	plane_hypotheses = !no_plane.getValue();
+	if (!plane.getValue().empty()) support_plane = parseSupportPlane(plane.getValue());
 	if (eval_scenes < 0) throw util::UsageError("--eval-scenes must be positive");
 	if (!demo_dir.empty()) return;
 	if (!evaluate_dir.empty())

@@ -73,8 +73,7 @@ int RecognizeApp::run(std::ostream& out)
 		return util::kExitOk;
 	}
 	if (!evaluate_dir.empty()) return runEvaluation(out);
-	options.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(config_path)),
-	                           "recognition");
+	loadRecognitionOptions();
 	for (const auto& p : model_paths) models.push_back(model::loadWireFrame(p));
 	loadScenes();
 	const bool stereo = scene_paths.empty();
@@ -106,9 +105,19 @@ int RecognizeApp::run(std::ostream& out)
 recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer& rec,
                                                          const recog::ImageVerifier& images) const
 {
-	recog::RecognitionResult r = rec.recognize(scenes.front(), nullptr, &images);
+	const Eigen::Vector3d* up = support_plane ? &support_plane->n_S : nullptr;
+	const recog::SupportPlane* plane = support_plane ? &*support_plane : nullptr;
+	recog::RecognitionResult r = rec.recognize(scenes.front(), up, &images, plane);
 	if (r.found) r.scene_index = 0;
 	return r;
+}
+
+void RecognizeApp::loadRecognitionOptions()
+{
+	const mrpt::config::CConfigFile cfg(util::requireProjectFile(config_path));
+	options.loadFromConfigFile(cfg, "recognition");
+	options.plane.loadFromConfigFile(cfg, "plane_hypotheses");
+	if (!plane_hypotheses) options.plane.enable = false;
 }
 
 void RecognizeApp::writeDemo(std::ostream& out) const

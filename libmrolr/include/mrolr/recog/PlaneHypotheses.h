@@ -1,0 +1,76 @@
+#pragma once
+/** Pose hypotheses from single scene features on the support plane (beyond the thesis; issue 7).
+ *
+ * The clique matcher (thesis 6.3) needs 3–5 mutually consistent scene features of one object; on
+ * reconstructed table scenes stereo often recovers too little of an object for that, although the
+ * images support its true pose well. Objects stand upright on a known plane (the table top,
+ * SupportPlane.h), which leaves 3 of the 6 pose parameters free (position on the plane and yaw):
+ * - a model rim (a conic whose normal is near the model's +z) matched to a scene conic whose
+ *   normal is near the plane's normal, of the same radius and at the rim's height above the plane,
+ *   fixes the position (the model's axis through the scene centre, its base on the plane); the yaw
+ *   is tried every rim_yaw_step_deg;
+ * - a horizontal model line matched to a horizontal scene line at its height above the plane
+ *   fixes the yaw (both senses) and the line's lateral offset; along the line the scene segment
+ *   (a fragment) is aligned start to start, end to end and middle to middle.
+ * Every hypothesis stands on the plane with the model's +z along the plane's normal. They are
+ * judged in the images (Recognizer): the 3D score cannot tell them apart, a single feature being
+ * all they have in common with the scene. Millimetres; model frame O, scene frame S. */
+
+#include <mrolr/model/WireFrame.h>
+#include <mrolr/recog/Feature.h>
+#include <mrolr/recog/PlaneHypothesisOptions.h>
+#include <mrolr/recog/SupportPlane.h>
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace mrolr::recog
+{
+/** One hypothesis and what made it. */
+struct PlaneHypothesis
+{
+	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();
+	bool from_rim = false;  ///< a rim match (else a horizontal line)
+	int model_feature = 0;  ///< index into the model's features
+	int scene_feature = 0;  ///< index into the scene's features
+};
+
+/** The lowest z (mm) of the model's edges (model::sampleWireFrame every 2 mm): its base, which
+ * stands on the support plane (0 for models in the object frame O of docs/model.md, up to the
+ * model building's noise). */
+double modelBaseZ_mm(const model::WireFrame& model_O);
+
+/** Makes plane hypotheses for one model against scenes (PlaneHypotheses.h). */
+class PlaneHypothesisGenerator
+{
+ public:
+	/** @p model_O: the model's features (featuresOf); @p base_z_mm: modelBaseZ_mm. */
+	PlaneHypothesisGenerator(std::vector<Feature> model_O, double base_z_mm,
+	                         const PlaneHypothesisOptions& opts);
+
+	/** All rim and line hypotheses of @p scene_S on @p plane. */
+	std::vector<PlaneHypothesis> generate(const std::vector<Feature>& scene_S,
+	                                      const SupportPlane& plane) const;
+
+	/** Height (mm) of the model's base point (0, 0, base z) of @p T_OinS above @p plane. */
+	double baseOffset_mm(const Eigen::Isometry3d& T_OinS, const SupportPlane& plane) const;
+
+	const std::vector<size_t>& rims() const { return rims_; }
+	const std::vector<size_t>& horizontalLines() const { return lines_; }
+	double baseZ_mm() const { return base_z_mm_; }
+
+ private:
+	std::vector<Feature> model_;
+	double base_z_mm_;
+	PlaneHypothesisOptions opts_;
+	std::vector<size_t> rims_;   ///< model conics near +z
+	std::vector<size_t> lines_;  ///< model lines near horizontal and long enough
+
+	void addRimHypotheses(size_t rim, size_t s, const Feature& conic, const SupportPlane& plane,
+	                      std::vector<PlaneHypothesis>& out) const;
+	void addLineHypotheses(size_t line, size_t s, const Feature& scene_line,
+	                       const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;
+};
+
+}  // namespace mrolr::recog

@@ -1,0 +1,43 @@
+#pragma once
+/** Options of the pose hypotheses made from single scene features on the support plane
+ * (PlaneHypotheses.h), section [plane_hypotheses] of config/recognition.ini. */
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <ostream>
+#include <string>
+
+namespace mrolr::recog
+{
+/** Section [plane_hypotheses] of config/recognition.ini. The section is optional (without it
+ * these defaults); when present every key must be there. */
+struct PlaneHypothesisOptions
+{
+	bool enable = true;  ///< make plane hypotheses (only with images and a support plane)
+	/** "not_found": only when the clique levels found nothing; "always": also after a
+	 * recognition, the better-ranked answer kept. */
+	std::string run_when = "not_found";
+	double rim_normal_tol_deg = 15;    ///< a model rim's normal within this of the model's +z
+	double scene_normal_tol_deg = 20;  ///< a scene conic's normal within this of the plane's
+	double radius_tol_mm = 6;          ///< |scene mean semi-axis − model rim radius|
+	double height_tol_mm = 10;         ///< |feature height above the plane − model height|
+	double horizontal_tol_deg = 10;    ///< model and scene lines this close to horizontal
+	double max_length_ratio = 1.2;     ///< a scene line at most this × the model line's length
+	double min_line_mm = 15;           ///< shorter model or scene lines are not used
+	double rim_yaw_step_deg = 30;      ///< yaws tried per rim match (the refinement sweeps finer)
+	/** Hypotheses kept after the quick image score (best first, near-duplicates dropped), then
+	 * scored fully and the best refined as the clique hypotheses are. */
+	int max_hypotheses = 30;
+	double prerank_spacing_mm = 9;  ///< model edge sample spacing of the quick image score
+	/** Image score a plane hypothesis needs to be accepted; at least the image verification's
+	 * min_score is needed in any case. */
+	double min_image_score = 0.7;
+	/** After refinement in the images the model's base must still be within this of the plane
+	 * (mm); the pattern search is free in 6 parameters. */
+	double max_base_offset_mm = 15;
+
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+	void dump(std::ostream& out) const;
+};
+
+}  // namespace mrolr::recog

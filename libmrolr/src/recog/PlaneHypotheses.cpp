@@ -1,0 +1,167 @@
+// Pose hypotheses from one scene feature on the support plane (PlaneHypotheses.h).
+#include <mrolr/model/WireFrameSampling.h>
+#include <mrolr/recog/PlaneHypotheses.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace mrolr::recog
+{
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+
+/** Two horizontal unit vectors (h1, h2 = n × h1) completing the plane's normal to a right-handed
+ * basis. */
+std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontalBasis(const Eigen::Vector3d& n)
+{
+	Eigen::Vector3d a = Eigen::Vector3d::UnitX();
+	if (std::abs(n.x()) > 0.9) a = Eigen::Vector3d::UnitZ();
+	const Eigen::Vector3d h1 = (a - a.dot(n) * n).normalized();
+	return {h1, n.cross(h1)};
+}
+
+/** The rotation taking the model's +z to @p n and its +x to the horizontal direction at angle
+ * @p yaw from h1 (towards h2). */
+Eigen::Matrix3d uprightRotation(const Eigen::Vector3d& n, double yaw)
+{
+	const auto [h1, h2] = horizontalBasis(n);
+	Eigen::Matrix3d R;
+	R.col(0) = std::cos(yaw) * h1 + std::sin(yaw) * h2;
+	R.col(1) = -std::sin(yaw) * h1 + std::cos(yaw) * h2;
+	R.col(2) = n;
+	return R;
+}
+
+/** Angle of the horizontal part of @p d_S in the basis (h1, h2) of @p n. */
+double horizontalAngle(const Eigen::Vector3d& d_S, const Eigen::Vector3d& n)
+{
+	const auto [h1, h2] = horizontalBasis(n);
+	return std::atan2(d_S.dot(h2), d_S.dot(h1));
+}
+
+/** @p t with its component along the plane's normal set so that the model's base (z = base_z)
+ * lies in the plane: n·(R (x, y, base_z) + t) + d = 0 with R z = n. */
+Eigen::Vector3d standOn(Eigen::Vector3d t, const SupportPlane& plane, double base_z_mm)
+{
+	return t + (-plane.d_mm - base_z_mm - plane.n_S.dot(t)) * plane.n_S;
+}
+
+double meanRadius(const Feature& c)
+{
+	return 0.5 * (c.a_mm + c.b_mm);
+}
+}  // namespace
+
+double modelBaseZ_mm(const model::WireFrame& model_O)
+{
+	double z = std::numeric_limits<double>::infinity();
+	for (const auto& s : model::sampleWireFrame(model_O, 2)) z = std::min(z, s.p.z());
+	if (!std::isfinite(z)) throw std::invalid_argument("model " + model_O.name + " has no edges");
+	return z;
+}
+
+PlaneHypothesisGenerator::PlaneHypothesisGenerator(std::vector<Feature> model_O, double base_z_mm,
+                                                   const PlaneHypothesisOptions& opts)
+    : model_(std::move(model_O)), base_z_mm_(base_z_mm), opts_(opts)
+{
+	const double rim_cos = std::cos(opts_.rim_normal_tol_deg * kDeg);
+	const double horiz_sin = std::sin(opts_.horizontal_tol_deg * kDeg);
+	for (size_t i = 0; i < model_.size(); ++i)
+	{
+		const Feature& f = model_[i];
+		if (!f.isLine() && std::abs(f.u.z()) >= rim_cos) rims_.push_back(i);
+		if (f.isLine() && std::abs(f.u.z()) <= horiz_sin && f.len_mm >= opts_.min_line_mm)
+			lines_.push_back(i);
+	}
+}
+
+double PlaneHypothesisGenerator::baseOffset_mm(const Eigen::Isometry3d& T_OinS,
+                                               const SupportPlane& plane) const
+{
+	return plane.height_mm(T_OinS * Eigen::Vector3d(0, 0, base_z_mm_));
+}
+
+void PlaneHypothesisGenerator::addRimHypotheses(size_t rim, size_t s, const Feature& conic,
+                                                const SupportPlane& plane,
+                                                std::vector<PlaneHypothesis>& out) const
+{
+	const Feature& m = model_[rim];
+	// the rim's centre on the model's axis (a tilted rim's centre is off it by little)
+	const Eigen::Vector3d c_O = m.m;
+	const double step = std::max(1.0, opts_.rim_yaw_step_deg) * kDeg;
+	for (double yaw = 0; yaw < 2 * M_PI - 1e-9; yaw += step)
+	{
+		PlaneHypothesis h;
+		h.T_OinS.linear() = uprightRotation(plane.n_S, yaw);
+		h.T_OinS.translation() =
+		    standOn(conic.m - h.T_OinS.linear() * c_O, plane, base_z_mm_);
+		h.from_rim = true;
+		h.model_feature = static_cast<int>(rim);
+		h.scene_feature = static_cast<int>(s);
+		out.push_back(h);
+	}
+}
+
+void PlaneHypothesisGenerator::addLineHypotheses(size_t line, size_t s, const Feature& sl,
+                                                 const SupportPlane& plane,
+                                                 std::vector<PlaneHypothesis>& out) const
+{
+	const Feature& ml = model_[line];
+	const Eigen::Vector3d& n = plane.n_S;
+	const double yaw0 =
+	    horizontalAngle(sl.u, n) - std::atan2(ml.u.y(), ml.u.x());  // model dir onto scene dir
+	for (const double yaw : {yaw0, yaw0 + M_PI})
+	{
+		const Eigen::Matrix3d R = uprightRotation(n, yaw);
+		const Eigen::Vector3d w = (R * Eigen::Vector3d(ml.u.x(), ml.u.y(), 0)).normalized();
+		const Eigen::Vector3d v = n.cross(w);
+		const Eigen::Vector3d a = R * ml.p1, b = R * ml.p2;
+		const double m_lo = std::min(w.dot(a), w.dot(b)), m_hi = std::max(w.dot(a), w.dot(b));
+		const double s_lo = std::min(w.dot(sl.p1), w.dot(sl.p2));
+		const double s_hi = std::max(w.dot(sl.p1), w.dot(sl.p2));
+		const double t_v = v.dot(sl.m) - v.dot(R * ml.m);
+		for (const double t_w :
+		     {s_lo - m_lo, s_hi - m_hi, 0.5 * (s_lo + s_hi) - 0.5 * (m_lo + m_hi)})
+		{
+			PlaneHypothesis h;
+			h.T_OinS.linear() = R;
+			h.T_OinS.translation() = standOn(t_w * w + t_v * v, plane, base_z_mm_);
+			h.model_feature = static_cast<int>(line);
+			h.scene_feature = static_cast<int>(s);
+			out.push_back(h);
+		}
+	}
+}
+
+std::vector<PlaneHypothesis> PlaneHypothesisGenerator::generate(
+    const std::vector<Feature>& scene_S, const SupportPlane& plane) const
+{
+	std::vector<PlaneHypothesis> out;
+	const double normal_cos = std::cos(opts_.scene_normal_tol_deg * kDeg);
+	const double horiz_sin = std::sin(opts_.horizontal_tol_deg * kDeg);
+	for (size_t s = 0; s < scene_S.size(); ++s)
+	{
+		const Feature& f = scene_S[s];
+		const double h = plane.height_mm(f.m);
+		if (!f.isLine())
+		{
+			if (std::abs(f.u.dot(plane.n_S)) < normal_cos) continue;
+			for (const size_t r : rims_)
+				if (std::abs(meanRadius(f) - meanRadius(model_[r])) <= opts_.radius_tol_mm &&
+				    std::abs(h - (model_[r].m.z() - base_z_mm_)) <= opts_.height_tol_mm)
+					addRimHypotheses(r, s, f, plane, out);
+			continue;
+		}
+		if (std::abs(f.u.dot(plane.n_S)) > horiz_sin || f.len_mm < opts_.min_line_mm) continue;
+		for (const size_t l : lines_)
+			if (f.len_mm <= opts_.max_length_ratio * model_[l].len_mm &&
+			    std::abs(h - (model_[l].m.z() - base_z_mm_)) <= opts_.height_tol_mm)
+				addLineHypotheses(l, s, f, plane, out);
+	}
+	return out;
+}
+
+}  // namespace mrolr::recog

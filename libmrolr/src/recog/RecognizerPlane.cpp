@@ -1,0 +1,97 @@
+// Recognizer's second source of hypotheses: single scene features on the support plane
+// (PlaneHypotheses.h), ranked by a quick image score and judged in the images like the clique
+// hypotheses (judgeInImages). Only with images: a hypothesis shares a single feature with the
+// scene, so its 3D score says next to nothing about it; the images see the whole object.
+#include "RecognizerDetail.h"
+
+#include <mrolr/recog/CliqueMatcher.h>
+#include <mrolr/recog/Recognizer.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrolr::recog
+{
+namespace
+{
+constexpr double kSamePose_mm = 5, kSamePose_deg = 5;  // near-duplicate hypotheses
+
+bool samePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eigen::Vector3d& c_O)
+{
+	const double angle = Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+	return (a * c_O - b * c_O).norm() < kSamePose_mm && angle < kSamePose_deg * M_PI / 180;
+}
+
+/** Indices of @p score sorted best first, near-duplicates of a better one dropped, at most @p n. */
+std::vector<size_t> bestDistinct(const std::vector<PlaneHypothesis>& hyps,
+                                 const std::vector<double>& score, const Eigen::Vector3d& c_O,
+                                 size_t n)
+{
+	std::vector<size_t> order(hyps.size());
+	for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+	std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return score[a] > score[b]; });
+	std::vector<size_t> kept;
+	for (const size_t k : order)
+	{
+		if (kept.size() >= n) break;
+		const bool dup = std::any_of(kept.begin(), kept.end(), [&](size_t j)
+		                             { return samePose(hyps[j].T_OinS, hyps[k].T_OinS, c_O); });
+		if (!dup) kept.push_back(k);
+	}
+	return kept;
+}
+}  // namespace
+
+RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene,
+                                               const SupportPlane& plane,
+                                               const ImageVerifier& images) const
+{
+	const PlaneHypothesisOptions& po = opts_.plane;
+	RecognitionResult best;
+	best.model = table_.name();
+	best.image_score = 0;
+	best.from_plane = true;
+	const std::vector<PlaneHypothesis> hyps = plane_gen_->generate(scene, plane);
+	const auto coarse = edgeSamples(po.prerank_spacing_mm);
+	std::vector<double> quick(hyps.size());
+	for (size_t k = 0; k < hyps.size(); ++k)
+		quick[k] = images.score(coarse, hyps[k].T_OinS, occlusion_.get()).score;
+	const Eigen::Vector3d* up_S = &plane.n_S;
+	const LevelParams& p = opts_.levels.back();
+	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
+	const double beta = detail::verifyBeta_mm(p, opts_), theta = detail::verifyTheta_rad(p, opts_);
+	std::vector<VerifiedPose> poses;
+	for (const size_t k :
+	     bestDistinct(hyps, quick, centroid_O_, static_cast<size_t>(po.max_hypotheses)))
+	{
+		const Eigen::Isometry3d& T = hyps[k].T_OinS;
+		poses.push_back({T,
+		                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
+		                            occlusionFor(up_S)),
+		                 -1.0, k});
+	}
+	judgeInImages(poses, images, os.features, p, up_S);
+	double best_rank = -1;
+	for (const auto& h : poses)
+	{
+		const double rank = detail::rankOf(h.v, h.image);
+		if (rank <= best_rank || !upright(h.T, up_S) ||
+		    std::abs(plane_gen_->baseOffset_mm(h.T, plane)) > po.max_base_offset_mm)
+			continue;
+		best_rank = rank;
+		best.image_score = h.image;
+		best.T_OinS = h.T;
+		best.score = h.v.score;
+		best.coverage = h.v.coverage;
+		best.matched = h.v.matched;
+		best.agreeing_cliques = 0;
+	}
+	best.found =
+	    best.image_score >= std::max(images.options().min_score, po.min_image_score);
+	const size_t levels = opts_.levels.size();
+	best.level = best.found ? static_cast<int>(levels) + 1 : 0;
+	best.confidence = best.found ? 0.5 * best.image_score : 0.0;
+	return best;
+}
+
+}  // namespace mrolr::recog

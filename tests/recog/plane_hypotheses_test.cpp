@@ -1,0 +1,307 @@
+// Hypotheses from single features on the support plane (PlaneHypotheses.h): an upright object is
+// among the hypotheses of one of its rims or one of its horizontal lines seen alone; a line at the
+// wrong height above the plane makes none; with a stereo pair the recogniser finds a box from one
+// line; bad [plane_hypotheses] values are rejected; the shipped section equals the defaults.
+#include "recog_test_util.h"
+
+#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/PlaneHypotheses.h>
+#include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/util/Cli.h>
+#include <mrolr/util/Config.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <opencv2/imgproc.hpp>
+
+#include <random>
+#include <sstream>
+
+using namespace mrolr::recog;
+
+namespace
+{
+constexpr double kFocal_px = 700, kBaseline_mm = 120;
+
+/** A camera 35° down onto a table top through (0, -200, 650) mm (left camera frame L: x left,
+ * y up, z forward). */
+SupportPlane table()
+{
+	const double a = 35 * M_PI / 180;
+	return SupportPlane::through({0, -200, 650}, {0, std::cos(a), -std::sin(a)});
+}
+
+/** The model upright on @p plane: its +z along the normal, its origin (base) at @p p_S, turned
+ * by @p yaw about the normal. */
+Eigen::Isometry3d upright(const SupportPlane& plane, const Eigen::Vector3d& p_S, double yaw)
+{
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = (Eigen::AngleAxisd(yaw, plane.n_S) *
+	              Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), plane.n_S))
+	                 .toRotationMatrix();
+	T.translation() = p_S - plane.height_mm(p_S) * plane.n_S;
+	return T;
+}
+
+/** (rotation deg, translation mm) error of the hypothesis of @p hyps nearest to @p truth (by the
+ * larger of the two numbers). */
+std::pair<double, double> nearest(const std::vector<PlaneHypothesis>& hyps,
+                                  const Eigen::Isometry3d& truth)
+{
+	std::pair<double, double> best{1e9, 1e9};
+	for (const auto& h : hyps)
+	{
+		const double r = test::rotationErrorDeg(h.T_OinS, truth);
+		const double t = test::translationErrorMm(h.T_OinS, truth);
+		if (std::max(r, t) < std::max(best.first, best.second)) best = {r, t};
+	}
+	return best;
+}
+
+PlaneHypothesisGenerator generatorOf(const mrolr::model::WireFrame& m)
+{
+	return PlaneHypothesisGenerator(featuresOf(m), modelBaseZ_mm(m), PlaneHypothesisOptions());
+}
+
+/** Index of the model line that is horizontal at height @p z_mm and longest. */
+size_t longestLineAt(const std::vector<Feature>& fs, double z_mm)
+{
+	size_t best = fs.size();
+	for (size_t i = 0; i < fs.size(); ++i)
+		if (fs[i].isLine() && std::abs(fs[i].u.z()) < 1e-6 && std::abs(fs[i].m.z() - z_mm) < 1e-6 &&
+		    (best == fs.size() || fs[i].len_mm > fs[best].len_mm))
+			best = i;
+	return best;
+}
+
+/** The part [0, @p f] of a line (a fragment sharing its start). */
+Feature fragment(const Feature& l, double f)
+{
+	Feature g = l;
+	g.p2 = l.p1 + f * (l.p2 - l.p1);
+	g.m = 0.5 * (g.p1 + g.p2);
+	g.len_mm = f * l.len_mm;
+	return g;
+}
+}  // namespace
+
+// A cup's top rim alone: among the hypotheses is the true pose up to its yaw (the rim's yaws are
+// tried every 30°, the images' refinement sweeps finer).
+TEST(plane_hypotheses, cup_from_its_top_rim_alone)
+{
+	const auto cup = makeCup();
+	const auto fs = featuresOf(cup);
+	const auto gen = generatorOf(cup);
+	ASSERT_GE(gen.rims().size(), 2u);  // base and top rim at least
+	size_t top = gen.rims()[0];
+	for (const size_t r : gen.rims())
+		if (fs[r].m.z() > fs[top].m.z()) top = r;
+	std::mt19937 rng(7);
+	for (int trial = 0; trial < 10; ++trial)
+	{
+		const double yaw = std::uniform_real_distribution<double>(-M_PI, M_PI)(rng);
+		const auto T = upright(table(), {20.0 * trial - 100, -180, 600 + 10.0 * trial}, yaw);
+		const auto hyps = gen.generate({fs[top].transformed(T)}, table());
+		ASSERT_FALSE(hyps.empty());
+		const auto [r, t] = nearest(hyps, T);
+		// the rim's centre is on the axis: yaw within half the 30° step, the origin within 1 mm
+		// of its place rotated about the axis (the base centre is on the axis)
+		EXPECT_LE(r, 15.0 + 1e-6) << "trial " << trial;
+		EXPECT_LT(t, 1.0) << "trial " << trial;
+		for (const auto& h : hyps)
+			EXPECT_NEAR(gen.baseOffset_mm(h.T_OinS, table()), 0.0, 1e-6);
+	}
+}
+
+// One horizontal line of the stapler box, whole or as a fragment sharing one end, seen alone:
+// the exact pose is among the hypotheses.
+TEST(plane_hypotheses, box_from_one_horizontal_line)
+{
+	const auto box = makeStaplerBox();
+	const auto fs = featuresOf(box);
+	const auto gen = generatorOf(box);
+	std::mt19937 rng(11);
+	for (const double z : {0.0, 55.0})
+	{
+		const size_t l = longestLineAt(fs, z);
+		ASSERT_LT(l, fs.size());
+		for (const double f : {1.0, 0.6, 0.3})
+		{
+			const double yaw = std::uniform_real_distribution<double>(-M_PI, M_PI)(rng);
+			const auto T = upright(table(), {30, -190, 640}, yaw);
+			Feature seen = fragment(fs[l], f).transformed(T);
+			if (f < 0.5) seen = seen.flipped();  // stereo fixes no endpoint order
+			const auto [r, t] = nearest(gen.generate({seen}, table()), T);
+			EXPECT_LT(r, 1e-6) << "z " << z << " fragment " << f;
+			EXPECT_LT(t, 1e-6) << "z " << z << " fragment " << f;
+		}
+	}
+}
+
+// The same base line 30 mm above the table (where the box has no horizontal line) or tilted 20°
+// out of the horizontal makes no hypothesis.
+TEST(plane_hypotheses, no_hypothesis_from_a_line_at_the_wrong_height_or_tilt)
+{
+	const auto box = makeStaplerBox();
+	const auto fs = featuresOf(box);
+	const auto gen = generatorOf(box);
+	const auto T = upright(table(), {30, -190, 640}, 0.4);
+	const size_t l = longestLineAt(fs, 0);
+	ASSERT_FALSE(gen.generate({fs[l].transformed(T)}, table()).empty());
+	Feature raised = fs[l].transformed(T);
+	for (auto* p : {&raised.p1, &raised.p2, &raised.m}) *p += 30 * table().n_S;
+	EXPECT_TRUE(gen.generate({raised}, table()).empty());
+	Feature tilted = fs[l];
+	tilted.p2 = tilted.p1 + Eigen::AngleAxisd(20 * M_PI / 180, Eigen::Vector3d::UnitY()) *
+	                            (tilted.p2 - tilted.p1);
+	tilted.u = (tilted.p2 - tilted.p1).normalized();
+	tilted.m = 0.5 * (tilted.p1 + tilted.p2);
+	EXPECT_TRUE(gen.generate({tilted.transformed(T)}, table()).empty());
+	// and a cup's rim of another radius makes none for the cup
+	const auto cup = makeCup();
+	const auto cf = featuresOf(cup);
+	const auto cgen = generatorOf(cup);
+	Feature rim = cf[cgen.rims()[0]];
+	rim.a_mm += 15, rim.b_mm += 15;
+	EXPECT_TRUE(cgen.generate({rim.transformed(upright(table(), {0, -200, 650}, 0))}, table())
+	                .empty());
+}
+
+namespace
+{
+mrolr::stereo::StereoCalibration calibration()
+{
+	mrolr::stereo::StereoCalibration c;
+	c.image_size = cv::Size(640, 480);
+	c.K_left = c.K_right = cv::Matx33d(kFocal_px, 0, 320, 0, kFocal_px, 240, 0, 0, 1);
+	c.t_LinR_mm = cv::Vec3d(-kBaseline_mm, 0, 0);
+	return c;
+}
+
+cv::Point pixel16(const Eigen::Vector3d& p_L, double cam_x_cv_mm)
+{
+	const Eigen::Vector3d c(-p_L.x() + cam_x_cv_mm, -p_L.y(), p_L.z());
+	return {static_cast<int>(std::lround(16 * (kFocal_px * c.x() / c.z() + 320))),
+	        static_cast<int>(std::lround(16 * (kFocal_px * c.y() / c.z() + 240)))};
+}
+
+/** The model's edges not hidden by itself, drawn 2 px wide by one camera of the pair. */
+cv::Mat drawEdges(const mrolr::model::WireFrame& m, const Eigen::Isometry3d& T_OinL,
+                  double cam_x_cv_mm)
+{
+	cv::Mat img(480, 640, CV_8U, cv::Scalar(20));
+	const auto fs = featuresOf(m);
+	const SelfOcclusion occ(fs);
+	const Eigen::Vector3d cam_O = T_OinL.inverse() * Eigen::Vector3d(cam_x_cv_mm, 0, 0);
+	const auto samples = edgeSamplesOf(m, 1.0);
+	for (size_t k = 1; k < samples.size(); ++k)
+	{
+		const auto &a = samples[k - 1], &b = samples[k];
+		if (a.feature != b.feature || (a.p_O - b.p_O).norm() > 3) continue;
+		if (occ.hidden(cam_O, a.p_O) || occ.hidden(cam_O, b.p_O)) continue;
+		cv::line(img, pixel16(T_OinL * a.p_O, cam_x_cv_mm), pixel16(T_OinL * b.p_O, cam_x_cv_mm),
+		         cv::Scalar(200), 2, cv::LINE_AA, 4);
+	}
+	return img;
+}
+}  // namespace
+
+// With the stereo pair, the recogniser finds the stapler box from one of its horizontal lines (a
+// fragment): the cliques have nothing to match, the plane hypotheses do; without the plane it is
+// not found; the cup is not found from the same line.
+TEST(plane_hypotheses, recogniser_finds_a_box_from_one_line_in_the_images)
+{
+	const auto box = makeStaplerBox();
+	const auto fs = featuresOf(box);
+	const auto T = upright(table(), {30, -190, 640}, 0.5);
+	const ImageVerifier images(drawEdges(box, T, 0), drawEdges(box, T, -kBaseline_mm),
+	                           calibration(), ImageVerificationOptions());
+	const std::vector<Feature> scene = {fragment(fs[longestLineAt(fs, 0)], 0.7).transformed(T)};
+	const SupportPlane plane = table();
+	const auto opts = RecognitionOptions::defaults();
+	const Recognizer rec(box, opts);
+	EXPECT_FALSE(rec.recognize(scene, &plane.n_S, &images).found);
+	const auto r = rec.recognize(scene, &plane.n_S, &images, &plane);
+	ASSERT_TRUE(r.found);
+	EXPECT_TRUE(r.from_plane);
+	EXPECT_GE(r.image_score, 0.7);
+	// a box is symmetric under a half turn about its axis
+	const double rot = std::min(test::rotationErrorDeg(r.T_OinS, T),
+	                            test::rotationErrorDeg(r.T_OinS * Eigen::AngleAxisd(
+	                                                                  M_PI, Eigen::Vector3d::UnitZ()),
+	                                                   T));
+	EXPECT_LT(rot, 3.0);
+	EXPECT_LT((r.T_OinS * Eigen::Vector3d(0, 0, 27) - T * Eigen::Vector3d(0, 0, 27)).norm(), 5.0);
+	EXPECT_FALSE(Recognizer(makeCup(), opts).recognize(scene, &plane.n_S, &images, &plane).found);
+	auto off = opts;
+	off.plane.enable = false;
+	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
+}
+
+TEST(plane_hypotheses, options_reject_bad_values)
+{
+	const std::string good =
+	    "[p]\nenable = true\nrun_when = not_found\nrim_normal_tol_deg = 15\n"
+	    "scene_normal_tol_deg = 20\nradius_tol_mm = 6\nheight_tol_mm = 10\n"
+	    "horizontal_tol_deg = 10\nmin_line_mm = 15\nmax_length_ratio = 1.2\n"
+	    "rim_yaw_step_deg = 30\nmax_hypotheses = 30\nprerank_spacing_mm = 9\n"
+	    "min_image_score = 0.7\nmax_base_offset_mm = 15\n";
+	PlaneHypothesisOptions o;
+	EXPECT_NO_THROW(o.loadFromConfigFile(mrpt::config::CConfigFileMemory(good), "p"));
+	const std::vector<std::pair<std::string, std::string>> bad = {
+	    {"run_when = not_found", "run_when = sometimes"},
+	    {"height_tol_mm = 10", "height_tol_mm = -1"},
+	    {"max_hypotheses = 30", "max_hypotheses = 0"},
+	    {"min_image_score = 0.7", "min_image_score = 1.5"},
+	    {"enable = true", "enable = maybe"},
+	    {"radius_tol_mm = 6", "radius_tol_mm = six"},
+	    {"prerank_spacing_mm = 9\n", ""}};
+	for (const auto& [from, to] : bad)
+	{
+		std::string text = good;
+		text.replace(text.find(from), from.size(), to);
+		// a new object each time: setContent merges with what was read before
+		const mrpt::config::CConfigFileMemory cfg(text);
+		const std::string key = from.substr(0, from.find(' '));
+		try
+		{
+			PlaneHypothesisOptions q;
+			q.loadFromConfigFile(cfg, "p");
+			FAIL() << "accepted: " << to;
+		}
+		catch (const mrolr::util::ConfigError& e)
+		{
+			EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+		}
+	}
+	// no section: the defaults
+	PlaneHypothesisOptions d;
+	d.min_image_score = 0.9;
+	d.loadFromConfigFile(mrpt::config::CConfigFileMemory(std::string("[other]\nx = 1\n")), "p");
+	EXPECT_EQ(d.min_image_score, 0.9);
+}
+
+TEST(plane_hypotheses, shipped_options_are_the_defaults)
+{
+	const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile("config/recognition.ini"));
+	PlaneHypothesisOptions shipped;
+	shipped.min_image_score = -1;  // must be overwritten
+	shipped.loadFromConfigFile(cfg, "plane_hypotheses");
+	std::ostringstream a, b;
+	shipped.dump(a);
+	PlaneHypothesisOptions().dump(b);
+	EXPECT_EQ(a.str(), b.str());
+}
+
+TEST(plane_hypotheses, support_plane_from_point_and_normal)
+{
+	const auto p = SupportPlane::through({1, 2, 3}, {0, 2, 0});
+	EXPECT_NEAR(p.n_S.norm(), 1.0, 1e-12);
+	EXPECT_NEAR(p.height_mm({5, 2, -7}), 0.0, 1e-12);
+	EXPECT_NEAR(p.height_mm({5, 12, -7}), 10.0, 1e-12);
+	const auto q = SupportPlane::fromCoefficients({0, 0, 2}, -10);
+	EXPECT_NEAR(q.height_mm({0, 0, 5}), 0.0, 1e-12);
+	EXPECT_THROW(SupportPlane::fromCoefficients({0, 0, 0}, 1), std::invalid_argument);
+}
