@@ -115,3 +115,29 @@ TEST(ModelStats, PerfectPartialAndFalseModels)
 	EXPECT_NEAR(q.max_endpoint_error_mm, 2.0, 0.2);
 	EXPECT_NEAR(totalLength(truth), 1200, 1e-9);
 }
+
+TEST(ModelStats, RecoveryPerFeatureAddsUpToTheTotal)
+{
+	WireFrame truth = cube();
+	truth.conics.push_back(circle(40, {0, 0, 200}, 30, 0, 2 * M_PI));
+	WireFrame model = truth;
+	model.lines.resize(3);
+	model.lines[0].p2 = 0.5 * (model.lines[0].p1 + model.lines[0].p2);  // half of the first edge
+	model.conics.clear();
+	const auto per = recoveryPerFeature(model, truth);
+	ASSERT_EQ(per.size(), truth.lines.size() + 1);
+	EXPECT_NEAR(per[0].length_mm, 100, 2.5);
+	EXPECT_NEAR(per[0].recovered_mm, 50, 6);  // within tol_mm of the half's end counts too
+	EXPECT_NEAR(per[1].recovered_mm, per[1].length_mm, 1e-9);
+	EXPECT_NEAR(per[5].recovered_mm, 0, 1e-9);
+	EXPECT_TRUE(per.back().conic);
+	EXPECT_EQ(per.back().id, 40);
+	EXPECT_NEAR(per.back().recovered_mm, 0, 1e-9);
+	EXPECT_NEAR(per.back().mid.z(), 200, 1e-6);  // the middle of a whole circle is its centre
+	EXPECT_NEAR(per.back().length_mm, 2 * M_PI * 30, 1.0);
+	double len = 0, rec = 0;
+	for (const auto& f : per) len += f.length_mm, rec += f.recovered_mm;
+	const auto q = compareToTruth(model, truth);
+	EXPECT_NEAR(len, q.true_length_mm, 1e-6);
+	EXPECT_NEAR(rec, q.recovered_length_mm, 1e-6);
+}

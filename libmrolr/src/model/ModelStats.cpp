@@ -112,6 +112,30 @@ ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth, cons
 	return q;
 }
 
+std::vector<FeatureRecovery> recoveryPerFeature(const WireFrame& model, const WireFrame& truth,
+                                                const QualityOptions& o)
+{
+	const double min_cos = std::cos(o.max_angle_deg * M_PI / 180);
+	const auto ts = sampleWireFrame(truth, o.sample_step_mm);
+	const auto ms = sampleWireFrame(model, o.sample_step_mm);
+	std::vector<FeatureRecovery> out(truth.lines.size() + truth.conics.size());
+	for (size_t i = 0; i < truth.lines.size(); ++i)
+		out[i].id = truth.lines[i].id, out[i].p1 = truth.lines[i].p1, out[i].p2 = truth.lines[i].p2;
+	for (size_t j = 0; j < truth.conics.size(); ++j)
+		out[truth.lines.size() + j].conic = true,
+		                        out[truth.lines.size() + j].id = truth.conics[j].id;
+	for (const auto& s : ts)
+	{
+		auto& f = out[s.feature];
+		f.length_mm += s.weight_mm;
+		f.mid += s.weight_mm * s.p;
+		if (covered(s, ms, o.tol_mm, min_cos)) f.recovered_mm += s.weight_mm;
+	}
+	for (auto& f : out)
+		if (f.length_mm > 0) f.mid /= f.length_mm;
+	return out;
+}
+
 void printQuality(const ModelQuality& q, std::ostream& out)
 {
 	out << "true_length_mm " << q.true_length_mm << "\nrecovered_length_mm "

@@ -53,6 +53,9 @@ class ModelApp
 	 * thesis 6.5, RecognitionAlignment.h). */
 	std::string align = "turntable";
 	bool merge = false, list = false, replace = false, json = false, help_shown = false;
+	/** stats --per-feature: the recovered length of every (visible) true feature in the report
+	 * (`truth_features`), for a breakdown of what a scene model misses. */
+	bool per_feature = false;
 
 	// Results (set by run)
 	model::WireFrame result;
@@ -82,6 +85,8 @@ class ModelApp
 	stereo::StereoCalibration viewCalibration() const;  ///< --calib, else the head at --head
 	/** Statistics of result against --truth (visible part with --depth). */
 	void statsAgainstTruth(const std::string& name);
+	/** stats --per-feature: recovery of each true feature of @p truth by @p m (same frame). */
+	nlohmann::json perFeatureJson(const model::WireFrame& m, const model::WireFrame& truth) const;
 	/** @p m in the truth's frame (a C0 model with --head goes back to the left camera); throws
 	 * std::runtime_error naming both files when the frames differ otherwise. */
 	model::WireFrame inFrameOf(const model::WireFrame& m, const model::WireFrame& truth,

@@ -45,6 +45,22 @@ struct ModelQuality
 ModelQuality compareToTruth(const WireFrame& model, const WireFrame& truth,
                             const QualityOptions& options = {});
 
+/** How much of one true feature a model recovers (ModelQuality per feature; the breakdown of
+ * what a scene model misses, `mrolr-model stats --per-feature`). */
+struct FeatureRecovery
+{
+	bool conic = false;  ///< a conic of the truth (else a line)
+	int id = 0;          ///< the truth feature's id
+	double length_mm = 0, recovered_mm = 0;
+	Eigen::Vector3d p1 = Eigen::Vector3d::Zero(), p2 = Eigen::Vector3d::Zero();  ///< line ends
+	Eigen::Vector3d mid = Eigen::Vector3d::Zero();  ///< mean of the feature's samples
+};
+
+/** The recovered length of every true feature, lines first then conics, as compareToTruth counts
+ * it (same samples, tolerance and tangent rule). */
+std::vector<FeatureRecovery> recoveryPerFeature(const WireFrame& model, const WireFrame& truth,
+                                                const QualityOptions& options = {});
+
 /** Text table of the figures (one "key value" per line). */
 void printQuality(const ModelQuality& q, std::ostream& out);
 

@@ -198,8 +198,13 @@ void ModelApp::parseStats(const std::vector<std::string>& a)
 	Str bis("", "bisight", "head configuration for --head", false, bisight_path, "INI", cmd);
 	Str cfg("", "config", "options", false, config_path, "INI", cmd);
 	TCLAP::SwitchArg js("", "json", "JSON output", cmd);
+	TCLAP::SwitchArg pf("", "per-feature",
+	                    "with --truth: every (visible) true feature with its length, recovered "
+	                    "length, middle point and, for a line, its angle to the image rows",
+	                    cmd);
 	if ((help_shown = !parseTclap(cmd, a))) return;
 	model_path = model.getValue(), truth_path = truth.getValue(), config_path = cfg.getValue();
+	per_feature = pf.getValue();
 	depth_png = depth.getValue(), calib_path = calib.getValue(), bisight_path = bis.getValue();
 	depth_right_png = depth_r.getValue();
 	json = js.getValue();

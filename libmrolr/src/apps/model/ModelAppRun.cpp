@@ -249,6 +249,34 @@ void ModelApp::statsAgainstTruth(const std::string& name)
 		report["visible_in"] = depth_right_png.empty() ? "left" : "both";
 	}
 	addStatsToReport(compared, truth);
+	if (per_feature) report["truth_features"] = perFeatureJson(compared, truth);
+}
+
+nlohmann::json ModelApp::perFeatureJson(const model::WireFrame& m,
+                                        const model::WireFrame& truth) const
+{
+	nlohmann::json a = nlohmann::json::array();
+	const auto o = loadOptions<model::QualityOptions>(config_path, "quality");
+	for (const auto& f : model::recoveryPerFeature(m, truth, o))
+	{
+		nlohmann::json j = {{"kind", f.conic ? "conic" : "line"},
+		                    {"id", f.id},
+		                    {"length_mm", f.length_mm},
+		                    {"recovered_mm", f.recovered_mm},
+		                    {"mid_mm", {f.mid.x(), f.mid.y(), f.mid.z()}}};
+		if (!f.conic)
+			j["p1_mm"] = {f.p1.x(), f.p1.y(), f.p1.z()}, j["p2_mm"] = {f.p2.x(), f.p2.y(), f.p2.z()};
+		if (!f.conic && truth.frame != model::WireFrameFrame::Object && f.p1.z() > 0 &&
+		    f.p2.z() > 0)
+		{
+			// camera frames: image direction of the line (u ∝ −x/z, v ∝ −y/z)
+			const double du = f.p2.x() / f.p2.z() - f.p1.x() / f.p1.z(),
+			             dv = f.p2.y() / f.p2.z() - f.p1.y() / f.p1.z();
+			j["image_angle_deg"] = std::atan2(std::abs(dv), std::abs(du)) * 180 / M_PI;
+		}
+		a.push_back(j);
+	}
+	return a;
 }
 
 }  // namespace mrolr::apps
