@@ -119,6 +119,7 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	horizontal.min_right_support = util::readDouble(cfg, section, "horizontal_min_right_support",
 	                                                horizontal.min_right_support);
 	segments.loadFromConfigFile(cfg, section);
+	dense.loadFromConfigFile(cfg, section);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -134,6 +135,7 @@ void SceneOptions::dump(std::ostream& out) const
 	    << "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
 	    << "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
 	segments.dump(out);
+	dense.dump(out);
 }
 
 std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
@@ -172,7 +174,15 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	const auto h = recoverHorizontalLines(ls, rs, matches, rect, rr.size(), o.fit, o.horizontal);
 	scene.horizontal_lines = h.size();
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
-	if (!o.segments.enabled) return scene;
+	if (o.segments.enabled) addPieceFeatures(ls, rs, lr, rr, matches, rect, o, scene);
+	if (o.dense.enabled) addDenseFeatures(ls, lr, rr, matches, rect, o, scene);
+	return scene;
+}
+
+void addPieceFeatures(const std::vector<EdgeString>& ls, const std::vector<EdgeString>& rs,
+                      const cv::Mat& lr, const cv::Mat& rr, const std::vector<EdgeMatch>& matches,
+                      const Rectifier& rect, const SceneOptions& o, StereoScene& scene)
+{
 	FitOptions piece_fit = o.fit;
 	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
 	const auto lp = segmentImageStrings(ls, lr, piece_fit),
@@ -183,7 +193,19 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	                   rect.disparityAtDepth(o.min_depth_mm), &rs},
 	                  rect, o.fit, o.segments, lines, conics);
 	scene.piece_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
-	return scene;
+}
+
+void addDenseFeatures(const std::vector<EdgeString>& ls, const cv::Mat& lr, const cv::Mat& rr,
+                      const std::vector<EdgeMatch>& matches, const Rectifier& rect,
+                      const SceneOptions& o, StereoScene& scene)
+{
+	const cv::Mat d = denseDisparity(lr, rr, rect.disparityAtDepth(o.dense.max_depth_mm),
+	                                 rect.disparityAtDepth(o.dense.min_depth_mm), o.dense);
+	std::vector<LineFit3> lines;
+	std::vector<ConicFit3> conics;
+	for (const auto& s : denseEdgeStrings(ls, matches, d, rect, o.dense))
+		segmentString(s, rect, o.fit, lines, conics);
+	scene.dense_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
 }
 
 }  // namespace mrolr::stereo

@@ -3,6 +3,7 @@
  * strings, PMF-style scanline matching, 3D edge strings, and their segmentation into 3D lines and
  * conics. Output in millimetres in the thesis left camera frame L (x left, y up, z forward). */
 
+#include <mrolr/stereo/DenseEdgeStereo.h>
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
@@ -31,6 +32,7 @@ struct SceneOptions
 	FitOptions fit;
 	HorizontalOptions horizontal;
 	SegmentStereoOptions segments;  ///< piece stereo (SegmentStereo.h) adds what 3D strings miss
+	DenseEdgeOptions dense;  ///< dense disparities for unmatched edgels (DenseEdgeStereo.h)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -44,12 +46,27 @@ struct StereoScene
 	size_t left_strings = 0, right_strings = 0, matches = 0, strings3d = 0;
 	size_t horizontal_lines = 0;  ///< lines recovered from their corners (HorizontalEdges.h)
 	size_t piece_features = 0;    ///< lines and conics added by piece stereo (SegmentStereo.h)
+	size_t dense_features = 0;    ///< lines and conics added by dense edge stereo
 };
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
  * more than max_gap_edgels unmatched edgels or a disparity jump beyond max_disparity_jump_px. */
 std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
                                                     const Rectifier& rect, const FitOptions& o);
+
+/** Piece stereo (SegmentStereo.h) of the rectified pair's strings: adds to @p scene the features
+ * the 3D strings missed. */
+void addPieceFeatures(const std::vector<EdgeString>& left, const std::vector<EdgeString>& right,
+                      const cv::Mat& left_rect, const cv::Mat& right_rect,
+                      const std::vector<EdgeMatch>& matches, const Rectifier& rect,
+                      const SceneOptions& o, StereoScene& scene);
+
+/** Dense edge stereo (DenseEdgeStereo.h): the unmatched left edgels placed at the SGBM disparity
+ * of their nearer side and fitted as lines and conics; adds to @p scene those not already there
+ * (within segment_duplicate_mm). */
+void addDenseFeatures(const std::vector<EdgeString>& left, const cv::Mat& left_rect,
+                      const cv::Mat& right_rect, const std::vector<EdgeMatch>& matches,
+                      const Rectifier& rect, const SceneOptions& o, StereoScene& scene);
 
 /** Reconstructs a scene from an unrectified stereo pair (grey or colour, the calibration's size).
  * Throws std::runtime_error for images that do not fit the calibration. */
