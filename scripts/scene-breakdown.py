@@ -4,12 +4,12 @@
 Renders the table views of docs/model.md (mrolr-sim --snapshot), reconstructs each
 (mrolr-model scene) and compares with the truth both cameras see (mrolr-model stats --depth
 --depth-right --per-feature). Prints, per view and over all views, the recovered fraction and the
-MISSING length of the both-camera truth per object and per kind: line along the image rows
+MISSING length of the both-camera truth (--truth left: the left camera's) per object and per kind: line along the image rows
 (within --along-deg of them), line across, conic. A truth feature belongs to the object whose
 origin (truth.json T_OinL) is nearest to its middle.
 
 Usage: scripts/scene-breakdown.py [--bin BUILD/bin] [--config config/model.ini]
-       [--views table|all] [--work DIR] [--json OUT.json]
+       [--views table|all] [--truth both|left] [--work DIR] [--tag NAME] [--json OUT.json]
 """
 import argparse
 import json
@@ -44,10 +44,10 @@ def view(i, pose, head, a, root):
     wf = os.path.join(d, "scene_%s.wf" % a.tag)
     run([os.path.join(a.bin, "mrolr-model"), "scene", "--left", d + "/left.png", "--right",
          d + "/right.png", "--head", head, "--config", a.config, "--out", wf])
+    right = ["--depth-right", d + "/depth_right_mm.png"] if a.truth == "both" else []
     st = json.loads(run([os.path.join(a.bin, "mrolr-model"), "stats", wf, "--truth",
-                         d + "/truth_left.wf", "--depth", d + "/depth_left_mm.png",
-                         "--depth-right", d + "/depth_right_mm.png", "--head", head,
-                         "--config", a.config, "--per-feature", "--json"]))
+                         d + "/truth_left.wf", "--depth", d + "/depth_left_mm.png"] + right +
+                        ["--head", head, "--config", a.config, "--per-feature", "--json"]))
     truth = json.load(open(os.path.join(d, "truth.json")))
     origins = [(o["name"], [o["T_OinL"][r][3] * 1000 for r in range(3)])
                for o in truth["objects"]]
@@ -98,6 +98,8 @@ def main():
     p.add_argument("--work", default="/tmp/mrolr_scene_breakdown")
     p.add_argument("--tag", default="run", help="name of the scene models written in --work")
     p.add_argument("--along-deg", type=float, default=20.0)
+    p.add_argument("--truth", choices=["both", "left"], default="both",
+                   help="truth seen by both cameras (default) or by the left one")
     p.add_argument("--json", default="")
     a = p.parse_args()
     os.chdir(root)
