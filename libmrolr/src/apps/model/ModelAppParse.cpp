@@ -20,7 +20,7 @@ const char* kUsage =
     "  cliques M.wf [--out M2.wf] [--replace] [--json]\n"
     "  show    M.wf --png P.png [--scene3d S.3Dscene] [--azimuth A] [--elevation E]\n"
     "  stats   M.wf [--truth T.wf [--depth D.png [--depth-right DR.png] (--calib C.ini | --head "
-    "ANGLES)]] [--json]\n"
+    "ANGLES)] [--per-feature]] [--json]\n"
     "'mrolr-model COMMAND --help' lists a command's options.\n";
 
 /** The subcommand's own arguments with "mrolr-model COMMAND" as argv[0]. */
