@@ -144,12 +144,12 @@ TEST(TableScene, PieceStereoRecoversMoreOfTheObjectsAtOneMetre)
 	const auto q0 = measure(v, v.truth_L, strings_only);
 	const auto q = measure(v, v.truth_L, shippedOptions());
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.05);
-	EXPECT_GE(q.recovered_fraction, 0.44);  // measured 0.461; issue target 0.6 (not reached)
+	EXPECT_GE(q.recovered_fraction, 0.45);  // measured 0.465; issue target 0.6 (not reached)
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 	EXPECT_LT(q.median_conic_radius_error_mm, 10.0);
-	EXPECT_LE(q.false_features, 60);  // measured 55 of 96 (silhouettes, table edges)
+	EXPECT_LE(q.false_features, 60);  // measured 55 (silhouettes, table edges)
 	const auto qb = measure(v, v.truth_L, shippedOptions(), true);
-	EXPECT_GE(qb.recovered_fraction, 0.53);         // measured 0.554
+	EXPECT_GE(qb.recovered_fraction, 0.54);         // measured 0.558
 	measure(v, v.with_tables_L, shippedOptions());  // reported: table tops' edges included
 }
 
@@ -177,8 +177,8 @@ TEST(TableScene, RecedingEdgesTurnBetweenTheViewsAndAreStillMatched)
 	const auto q0 = measure(v, v.truth_L, strict, true);
 	const auto q = measure(v, v.truth_L, shippedOptions(), true);
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.05);
-	EXPECT_GE(q.recovered_fraction, 0.40);  // measured 0.447 (10°: 0.303)
-	EXPECT_LE(q.false_features, 36);        // measured 32 of 83 (10°: 29 of 68)
+	EXPECT_GE(q.recovered_fraction, 0.41);  // measured 0.458 (10°: 0.303)
+	EXPECT_LE(q.false_features, 36);        // measured 30 of 83 (10°: 28 of 68)
 }
 
 TEST(TableScene, SteepDisparityGradientsNeedTheWideAngleLimit)
@@ -191,6 +191,6 @@ TEST(TableScene, SteepDisparityGradientsNeedTheWideAngleLimit)
 	const auto q0 = measure(v, v.truth_L, narrow, true);
 	const auto q = measure(v, v.truth_L, shippedOptions(), true);
 	EXPECT_GT(q.recovered_fraction, q0.recovered_fraction + 0.03);  // measured 0.457 (30°: 0.401)
-	EXPECT_LE(q.false_features, q0.false_features + 3);             // measured 37 (30°: 37)
+	EXPECT_LE(q.false_features, q0.false_features + 3);             // measured 36 (30°: 36)
 	EXPECT_LT(q.median_endpoint_error_mm, 3.0);
 }

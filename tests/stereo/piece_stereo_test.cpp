@@ -153,3 +153,49 @@ TEST(PieceStereo, ShortPiecesMustMatchOnBothSides)
 	EXPECT_EQ(count(10), 0u);  // not for a short one
 	EXPECT_EQ(count(8), 1u);   // 8 edgels is not below 8
 }
+
+namespace
+{
+/** A line piece from a to b (a above b) with the grey levels of its two sides. */
+ImagePiece linePiece(int string, cv::Point2d a, cv::Point2d b, double side_l, double side_r)
+{
+	ImagePiece p;
+	p.string = string, p.lo = 0, p.hi = 20, p.is_line = true, p.a = a, p.b = b;
+	p.side_left = side_l, p.side_right = side_r;
+	return p;
+}
+}  // namespace
+
+TEST(PieceStereo, CornerConsistencyChoosesBetweenTwoCandidates)
+{
+	// left piece A ends at the top of piece B (a corner at row 120); B has one right partner at
+	// disparity 20. A has two: the true one at disparity 20 and one at 40 whose grey sides agree
+	// a little better (an edge of a face only the right camera sees)
+	const Rectifier rect(testRig(0));
+	const std::vector<EdgeString> strings(2, EdgeString(20));
+	const std::vector<EdgeMatch> no_matches;
+	const std::vector<ImagePiece> left = {linePiece(0, {300, 100}, {300, 120}, 150, 30),
+	                                      linePiece(1, {300, 121}, {310, 180}, 150, 60)};
+	const std::vector<ImagePiece> right = {linePiece(0, {280, 100}, {280, 120}, 155, 90),
+	                                       linePiece(0, {260, 100}, {260, 118}, 90, 31),
+	                                       linePiece(1, {280, 121}, {290, 180}, 150, 60)};
+	const PieceStereoInput in{strings, left, right, no_matches, 5, 100, &strings};
+	const auto depthOfA = [&](double consistency_px)
+	{
+		SegmentStereoOptions o;
+		o.corner_consistency_px = consistency_px;
+		std::vector<LineFit3> lines;
+		std::vector<ConicFit3> conics;
+		reconstructPieces(in, rect, FitOptions{}, o, lines, conics);
+		EXPECT_EQ(lines.size(), 2u);
+		const Eigen::Vector3d top = rect.pointInLeftCamera(300, 100, 20);
+		double z = 0, best = 1e9;
+		for (const auto& l : lines)  // the line whose image is A's: same direction from the camera
+			if (const double e = (l.p1.normalized() - top.normalized()).norm(); e < best)
+				best = e, z = l.p1.z();
+		return z;
+	};
+	const double z20 = rect.pointInLeftCamera(300, 100, 20).z();
+	EXPECT_NEAR(depthOfA(0), z20 / 2, 0.01 * z20);  // off: the better grey wins, disparity 40
+	EXPECT_NEAR(depthOfA(4), z20, 0.01 * z20);      // on: consistent with B's corner
+}

@@ -100,23 +100,67 @@ std::optional<Pair> tryPair(const PieceStereoInput& in, size_t i, size_t j, doub
 	return p;
 }
 
+double cornerDisparity(const cv::Point2d& q, const std::vector<std::optional<Pair>>& pairs,
+                       const std::vector<EdgeMatch>& matches, const SegmentStereoOptions& o);
+
+/** Disparity of pair @p p's 3D line at row y (its linear profile, extended past its ends). */
+double pairDisparityAtRow(const Pair& p, double y)
+{
+	if (std::abs(p.e2.y - p.e1.y) < 1e-9) return p.e1.z;
+	return p.e1.z + (y - p.e1.y) / (p.e2.y - p.e1.y) * (p.e2.z - p.e1.z);
+}
+
+/** Corner consistency of candidate @p c of left piece @p l: how far (in units of
+ * corner_consistency_px) its disparity at the piece's two ends is from the disparity of the other
+ * matched segments (or point matches) ending there; 0 where a corner has neither. */
+double cornerInconsistency(const ImagePiece& l, const Pair& c,
+                           const std::vector<std::optional<Pair>>& others,
+                           const std::vector<EdgeMatch>& matches, const SegmentStereoOptions& o)
+{
+	double cost = 0;
+	for (const cv::Point2d& q : {l.a, l.b})
+		if (const double d = cornerDisparity(q, others, matches, o); !std::isnan(d))
+			cost += std::abs(pairDisparityAtRow(c, q.y) - d) / o.corner_consistency_px;
+	return cost;
+}
+
 /** For each left line piece its best segment pair (a right segment may serve several collinear
- * left pieces: the two images split an edge differently). */
+ * left pieces: the two images split an edge differently). With corner_consistency_px > 0 a piece
+ * with several candidates chooses again, its candidates' costs raised by their corner
+ * inconsistency with the other pieces' first choices. */
 std::vector<std::optional<Pair>> matchSegments(const PieceStereoInput& in, const MatchIndex& m,
                                                const Rectifier& rect, const SegmentStereoOptions& o)
 {
 	std::vector<std::optional<Pair>> best(in.left_pieces.size());
+	std::vector<std::vector<Pair>> all(in.left_pieces.size());
 	for (size_t i = 0; i < in.left_pieces.size(); ++i)
 	{
 		if (!in.left_pieces[i].is_line) continue;
 		const double dp = pointDisparity(in.left_pieces[i], m);
 		for (size_t j = 0; j < in.right_pieces.size(); ++j)
 			if (in.right_pieces[j].is_line)
-				if (auto p = tryPair(in, i, j, dp, rect, o);
-				    p && (!best[i] || p->cost < best[i]->cost))
-					best[i] = p;
+				if (auto p = tryPair(in, i, j, dp, rect, o))
+				{
+					if (!best[i] || p->cost < best[i]->cost) best[i] = p;
+					all[i].push_back(*p);
+				}
 	}
-	return best;
+	if (o.corner_consistency_px <= 0) return best;
+	auto chosen = best;
+	for (size_t i = 0; i < all.size(); ++i)
+	{
+		if (all[i].size() < 2) continue;
+		auto others = best;
+		others[i].reset();  // its own line passes through its ends
+		std::optional<double> c_best;
+		for (const auto& c : all[i])
+		{
+			const double cost =
+			    c.cost + cornerInconsistency(in.left_pieces[i], c, others, in.matches, o);
+			if (!c_best || cost < *c_best) c_best = cost, chosen[i] = c;
+		}
+	}
+	return chosen;
 }
 
 /** Disparity at a corner q: from the nearest matched segment passing within corner_radius_px of q
@@ -246,6 +290,7 @@ void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBas
 	    util::readInt(cfg, section, "segment_min_conic_matches", min_conic_matches));
 	corner_pairs = util::readBool(cfg, section, "segment_corner_pairs", corner_pairs);
 	rd("segment_corner_row_tol_px", corner_row_tol_px);
+	rd("segment_corner_consistency_px", corner_consistency_px);
 	min_line_edgels =
 	    static_cast<int>(util::readInt(cfg, section, "segment_min_line_edgels", min_line_edgels));
 	both_sides_below_edgels = static_cast<int>(
@@ -268,7 +313,8 @@ void SegmentStereoOptions::dump(std::ostream& out) const
 	    << "\nsegment_corner_pairs = " << corner_pairs
 	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px
 	    << "\nsegment_min_line_edgels = " << min_line_edgels
-	    << "\nsegment_both_sides_below_edgels = " << both_sides_below_edgels << "\n";
+	    << "\nsegment_both_sides_below_edgels = " << both_sides_below_edgels
+	    << "\nsegment_corner_consistency_px = " << corner_consistency_px << "\n";
 }
 
 }  // namespace mrolr::stereo

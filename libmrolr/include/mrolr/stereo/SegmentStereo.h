@@ -39,6 +39,10 @@ struct SegmentStereoOptions
 	double corner_row_tol_px = 1.0;       ///< rows of corresponding corners (CornerPairStereo.h)
 	int min_line_edgels = 0;              ///< shortest line piece (0: FitOptions::min_line_edgels)
 	int both_sides_below_edgels = 0;      ///< shorter pieces must match in the grey of both sides
+	/** > 0: a left piece with several candidate right segments adds to each candidate's cost
+	 * |d_candidate − d_corner| / this (px) at each of its ends where another matched segment (or
+	 * point matches) gives the corner's disparity; 0: off */
+	double corner_consistency_px = 0;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
