@@ -14,9 +14,10 @@ namespace mrolr::recog
 struct PlaneHypothesisOptions
 {
 	bool enable = true;  ///< make plane hypotheses (only with images and a support plane)
-	/** "not_found": only when the clique levels found nothing; "always": also after a
-	 * recognition, the better-ranked answer kept. */
-	std::string run_when = "not_found";
+	/** "always": after the clique levels, the better-ranked answer kept (a plane hypothesis
+	 * can correct a clique's wrong yaw of a nearly symmetric object); "not_found": only when the
+	 * levels found nothing. */
+	std::string run_when = "always";
 	double rim_normal_tol_deg = 15;    ///< a model rim's normal within this of the model's +z
 	double scene_normal_tol_deg = 20;  ///< a scene conic's normal within this of the plane's
 	double radius_tol_mm = 6;          ///< |scene mean semi-axis − model rim radius|

@@ -67,7 +67,8 @@ class Recognizer
 	 * the scene's features still generate the hypotheses.
 	 * @p plane: the support plane the objects stand on (scene frame), or null. With images and
 	 * options().plane.enable, single scene features on it make further hypotheses
-	 * (recognizeOnPlane) when the levels found nothing (or always, options().plane.run_when).
+	 * (recognizeOnPlane) after the levels, the better-ranked answer kept (options().plane.run_when
+	 * "always"; "not_found": only when the levels found nothing).
 	 * Without @p up_S its normal is the up direction. */
 	RecognitionResult recognize(const model::WireFrame& scene,
 	                            const Eigen::Vector3d* up_S = nullptr,

@@ -165,7 +165,7 @@ void RecognizeApp::printText(std::ostream& out) const
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
+		    << (r.from_plane ? " (support-plane hypothesis)" : "") << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
 		    << r.matched << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());
 		out << "  roll pitch yaw (deg): " << rpy.transpose()
