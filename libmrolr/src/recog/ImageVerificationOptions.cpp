@@ -31,6 +31,10 @@ void ImageVerificationOptions::loadFromConfigFile(const mrpt::config::CConfigFil
 	refine_candidates = readIntInRange(cfg, section, "refine_candidates", 0, 1000);
 	yaw_step_deg = readDoubleInRange(cfg, section, "yaw_step_deg", 0, 180);
 	truncate_px = readDoubleInRange(cfg, section, "truncate_px", 0.1, 1000);
+	util::readString(cfg, section, "limbs");  // required: throws naming the key when missing
+	limbs = util::readBool(cfg, section, "limbs", true);
+	util::readString(cfg, section, "revolution_visibility");
+	revolution_visibility = util::readBool(cfg, section, "revolution_visibility", true);
 }
 
 void ImageVerificationOptions::dump(std::ostream& out) const
@@ -41,7 +45,8 @@ void ImageVerificationOptions::dump(std::ostream& out) const
 	    << "\nsample_spacing_mm = " << sample_spacing_mm << "\nmin_samples = " << min_samples
 	    << "\nmin_score = " << min_score << "\nprefilter_score = " << prefilter_score
 	    << "\nrefine_candidates = " << refine_candidates << "\nyaw_step_deg = " << yaw_step_deg
-	    << "\ntruncate_px = " << truncate_px << "\n";
+	    << "\ntruncate_px = " << truncate_px << "\nlimbs = " << (limbs ? "true" : "false")
+	    << "\nrevolution_visibility = " << (revolution_visibility ? "true" : "false") << "\n";
 }
 
 }  // namespace mrolr::recog

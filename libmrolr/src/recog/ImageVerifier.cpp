@@ -90,7 +90,10 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
       D_(D),
       T_CcvInL_(T_CcvInL),
       dist_px_(o.edge_distance_px),
-      sin_tol_(std::sin(o.orientation_tol_deg * M_PI / 180))
+      sin_tol_(std::sin(o.orientation_tol_deg * M_PI / 180)),
+      limbs_(o.limbs),
+      revolution_visibility_(o.revolution_visibility),
+      limb_spacing_mm_(o.sample_spacing_mm)
 {
 	cv::Mat blurred = grey, gx, gy;
 	if (o.blur_sigma_px > 0) cv::GaussianBlur(grey, blurred, cv::Size(0, 0), o.blur_sigma_px);
@@ -146,36 +149,74 @@ void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3
 	count(s_O, T_OinL, occ, 0, considered, supported, cost);
 }
 
-void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-                      double& cost_px2) const
+template <class Fn>
+void EdgeImage::forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+                              const SelfOcclusion* occ, Fn fn) const
 {
 	const Eigen::Isometry3d T_OinC = T_CcvInL_.inverse() * T_OinL;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
+	std::vector<EdgeSample> limbs;
+	if (limbs_ && occ)
+		for (const auto& body : occ->revolutionBodies())
+		{
+			const auto l = limbSamples(body, c_O, limb_spacing_mm_);
+			limbs.insert(limbs.end(), l.begin(), l.end());
+		}
 	std::vector<cv::Point3d> pts;
-	pts.reserve(2 * s_O.size());
-	for (const auto& s : s_O)
-	{
-		const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
-		if (!inView(p) || !inView(q) || (occ && occ->hidden(c_O, s.p_O))) continue;
-		pts.emplace_back(p.x(), p.y(), p.z());
-		pts.emplace_back(q.x(), q.y(), q.z());
-	}
+	std::vector<std::pair<bool, bool>> flags;  // hidden, limb
+	pts.reserve(2 * (s_O.size() + limbs.size()));
+	const std::vector<EdgeSample>* sets[] = {&s_O, &limbs};
+	for (const auto* set : sets)
+		for (const auto& s : *set)
+		{
+			const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
+			if (!inView(p) || !inView(q)) continue;
+			pts.emplace_back(p.x(), p.y(), p.z());
+			pts.emplace_back(q.x(), q.y(), q.z());
+			// a limb is on the outline by construction: only the model's parts off its bodies
+			// (a handle) can hide it (SelfOcclusion::hiddenLimb)
+			const bool limb = set == &limbs;
+			const bool hidden = occ && (limb                     ? occ->hiddenLimb(c_O, s.p_O)
+			                            : revolution_visibility_ ? occ->hiddenOnBodies(c_O, s.p_O)
+			                                                     : occ->hidden(c_O, s.p_O));
+			flags.emplace_back(hidden, limb);
+		}
 	if (pts.empty()) return;
 	std::vector<cv::Point2d> px;
 	cv::projectPoints(pts, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K_, D_, px);
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
 	for (size_t i = 0; i + 1 < px.size(); i += 2)
-	{
-		if (!inside.contains(px[i])) continue;
-		++considered;
-		supported += supports(px[i], px[i + 1] - px[i]) ? 1 : 0;
-		if (truncate_px <= 0) continue;
-		const double d = oriented(px[i], px[i + 1] - px[i])
-		                     ? std::min(truncate_px, distanceAt(px[i]))
-		                     : truncate_px;
-		cost_px2 += d * d;
-	}
+		if (inside.contains(px[i]))
+			fn(px[i], px[i + 1] - px[i], flags[i / 2].first, flags[i / 2].second);
+}
+
+void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
+                      double& cost_px2) const
+{
+	forEachInView(s_O, T_OinL, occ,
+	              [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool)
+	              {
+		              if (hidden) return;
+		              ++considered;
+		              supported += supports(px, tangent) ? 1 : 0;
+		              if (truncate_px <= 0) return;
+		              const double d = oriented(px, tangent)
+		                                   ? std::min(truncate_px, distanceAt(px))
+		                                   : truncate_px;
+		              cost_px2 += d * d;
+	              });
+}
+
+std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s_O,
+                                                const Eigen::Isometry3d& T_OinL,
+                                                const SelfOcclusion* occ) const
+{
+	std::vector<Judged> out;
+	forEachInView(s_O, T_OinL, occ,
+	              [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool limb)
+	              { out.push_back({px, limb, hidden, !hidden && supports(px, tangent)}); });
+	return out;
 }
 
 ImageVerifier::ImageVerifier(const cv::Mat& left, const cv::Mat& right,

@@ -43,26 +43,60 @@ std::vector<Eigen::Vector3d> samplesOf(const Feature& f, int count)
 
 SelfOcclusion::SelfOcclusion(const std::vector<Feature>& features_O, double margin_mm,
                              int directions)
-    : normals_(sphereDirections(directions))
+    : normals_(sphereDirections(directions)),
+      bodies_(revolutionBodiesOf(features_O)),
+      margin_mm_(margin_mm)
 {
 	for (const auto& f : features_O) samples_.push_back(samplesOf(f, kSamplesPerFeature));
+	offsets_ = offsetsOf(samples_, margin_mm);
+	if (bodies_.empty()) return;
+	// the features off the bodies' surfaces (a cup's handle): they can hide a limb
+	std::vector<std::vector<Eigen::Vector3d>> rest;
+	for (const auto& fs : samples_)
+	{
+		const auto on = [&](const Eigen::Vector3d& p)
+		{
+			return std::any_of(bodies_.begin(), bodies_.end(),
+			                   [&](const RevolutionBody& b) { return onSurface(b, p, margin_mm); });
+		};
+		if (!std::all_of(fs.begin(), fs.end(), on)) rest.push_back(fs);
+	}
+	if (!rest.empty()) rest_offsets_ = offsetsOf(rest, margin_mm);
+}
+
+std::vector<double> SelfOcclusion::offsetsOf(const std::vector<std::vector<Eigen::Vector3d>>& pts,
+                                             double margin_mm) const
+{
+	std::vector<double> out;
 	for (const auto& n : normals_)
 	{
 		double d = -std::numeric_limits<double>::infinity();
-		for (const auto& fs : samples_)
+		for (const auto& fs : pts)
 			for (const auto& p : fs) d = std::max(d, n.dot(p));
-		offsets_.push_back(d - margin_mm);
+		out.push_back(d - margin_mm);
 	}
+	return out;
 }
 
 bool SelfOcclusion::hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
+{
+	return crossesPolytope(offsets_, c_O, p_O);
+}
+
+bool SelfOcclusion::hiddenLimb(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
+{
+	return !rest_offsets_.empty() && crossesPolytope(rest_offsets_, c_O, p_O);
+}
+
+bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const Eigen::Vector3d& c_O,
+                                    const Eigen::Vector3d& p_O) const
 {
 	// Cyrus–Beck clipping of x(t) = c + t (p − c), t in [0, 1], against n·x <= d.
 	const Eigen::Vector3d v = p_O - c_O;
 	double t0 = 0, t1 = 1;
 	for (size_t i = 0; i < normals_.size() && t0 < t1; ++i)
 	{
-		const double den = normals_[i].dot(v), num = offsets_[i] - normals_[i].dot(c_O);
+		const double den = normals_[i].dot(v), num = offsets[i] - normals_[i].dot(c_O);
 		if (std::abs(den) < 1e-12)
 		{
 			if (num < 0) return false;
@@ -74,6 +108,18 @@ bool SelfOcclusion::hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_
 			t0 = std::max(t0, num / den);
 	}
 	return t0 < t1;
+}
+
+bool SelfOcclusion::hiddenOnBodies(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
+{
+	bool on_body = false;
+	for (const auto& b : bodies_)
+	{
+		if (!onSurface(b, p_O, margin_mm_)) continue;
+		on_body = true;
+		if (crossesSolid(b, c_O, p_O, margin_mm_)) return true;
+	}
+	return on_body ? false : hidden(c_O, p_O);
 }
 
 std::vector<double> SelfOcclusion::visibleFractions(const Eigen::Vector3d& c_O) const

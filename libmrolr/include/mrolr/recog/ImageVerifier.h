@@ -8,6 +8,7 @@
  * (unrectified) images of the stereo::StereoCalibration. */
 
 #include <mrolr/recog/Feature.h>
+#include <mrolr/recog/Limbs.h>
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
@@ -45,16 +46,16 @@ struct ImageVerificationOptions
 	double yaw_step_deg = 10;
 	double truncate_px =
 	    5;  ///< chamfer distance cap (px); also the cost of a wrongly oriented edge
+	/** Add, at each pose and for each camera, the limbs (outline generators) of the model's
+	 * bodies of revolution (SelfOcclusion::revolutionBodies, Limbs.h) to the samples judged;
+	 * docs/recog-limbs.md. */
+	bool limbs = true;
+	/** Judge the self-occlusion of samples on a body of revolution against its exact solid
+	 * (SelfOcclusion::hiddenOnBodies) instead of the convex polytope (SelfOcclusion::hidden). */
+	bool revolution_visibility = true;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
-};
-
-/** A point on a model edge and the edge's unit tangent there (model frame, mm). */
-struct EdgeSample
-{
-	Eigen::Vector3d p_O, t_O;
-	int feature = 0;  ///< index into the features sampled
 };
 
 /** A point of the model's up axis (z): the mean centre of its conics whose normal is within 25°
@@ -99,12 +100,27 @@ class EdgeImage
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
 	           double& cost_px2) const;
 
+	/** How one sample fared: its pixel, and whether it was hidden, considered, supported. */
+	struct Judged
+	{
+		cv::Point2d px;
+		bool limb = false, hidden = false, supported = false;
+	};
+	/** Every in-view sample of count() (limbs included), hidden ones too, for drawing. */
+	std::vector<Judged> judge(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	                          const SelfOcclusion* occ) const;
+
 	/** Optical centre in L (mm). */
 	Eigen::Vector3d centre_L() const { return T_CcvInL_.translation(); }
 	const cv::Mat& edges() const { return edges_; }
 	const cv::Mat& distance() const { return dist_; }
 
  private:
+	/** Projects the samples of @p s_O (and the limbs seen from this camera when enabled) at
+	 * @p T_OinL; calls @p fn(pixel, tangent pixel, hidden, limb) for those in the image. */
+	template <class Fn>
+	void forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	                   const SelfOcclusion* occ, Fn fn) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	double distanceAt(const cv::Point2d& px) const;  ///< bilinear (px)
@@ -113,6 +129,8 @@ class EdgeImage
 	cv::Vec<double, 5> D_;
 	Eigen::Isometry3d T_CcvInL_;
 	double dist_px_, sin_tol_;
+	bool limbs_, revolution_visibility_;
+	double limb_spacing_mm_;
 	cv::Mat edges_;                    ///< CV_8U, 255 on edges
 	cv::Mat dist_;                     ///< CV_32F, px to the nearest edge pixel
 	cv::Mat labels_;                   ///< CV_32S, label of the nearest edge pixel
@@ -153,5 +171,12 @@ class ImageVerifier
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right
 };
+
+/** @p grey (the image @p image was built from, 8-bit grey or BGR) darkened, with its Canny edges
+ * in white and the samples of EdgeImage::judge drawn: supported green, unsupported red, hidden by
+ * the object itself blue; dots for the wire-frame's samples, crosses for limbs. BGR. */
+cv::Mat drawJudgement(const cv::Mat& grey, const EdgeImage& image,
+                      const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& T_OinL,
+                      const SelfOcclusion* occ);
 
 }  // namespace mrolr::recog
