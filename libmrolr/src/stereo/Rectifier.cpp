@@ -71,4 +71,16 @@ Eigen::Vector3d Rectifier::pointInLeftCamera(double x_px, double y_px, double d_
 	return R_LthesisFromRect_ * p_rect;
 }
 
+cv::Point2d Rectifier::leftPixelOf(const Eigen::Vector3d& p_L_mm) const
+{
+	const Eigen::Vector3d p = R_LthesisFromRect_.transpose() * p_L_mm;  // a rotation
+	return {cx_px_ + f_px_ * p.x() / p.z(), cy_px_ + f_px_ * p.y() / p.z()};
+}
+
+Eigen::Vector3d Rectifier::leftRay(double x_px, double y_px) const
+{
+	return (R_LthesisFromRect_ * Eigen::Vector3d((x_px - cx_px_) / f_px_, (y_px - cy_px_) / f_px_, 1))
+	    .normalized();
+}
+
 }  // namespace mrolr::stereo

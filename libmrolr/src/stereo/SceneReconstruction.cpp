@@ -120,6 +120,7 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	                                                horizontal.min_right_support);
 	segments.loadFromConfigFile(cfg, section);
 	dense.loadFromConfigFile(cfg, section);
+	circles.loadFromConfigFile(cfg, section);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -136,6 +137,7 @@ void SceneOptions::dump(std::ostream& out) const
 	    << "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
 	segments.dump(out);
 	dense.dump(out);
+	circles.dump(out);
 }
 
 std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
@@ -154,7 +156,8 @@ std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>
 }
 
 StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
-                             const StereoCalibration& calib, const SceneOptions& o)
+                             const StereoCalibration& calib, const SceneOptions& o,
+                             const std::optional<Eigen::Vector3d>& up_L)
 {
 	const Rectifier rect(calib, o.rectify);
 	cv::Mat lr, rr, lm, rm;
@@ -176,6 +179,7 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
 	if (o.segments.enabled) addPieceFeatures(ls, rs, lr, rr, matches, rect, o, scene);
 	if (o.dense.enabled) addDenseFeatures(ls, lr, rr, matches, rect, o, scene);
+	if (o.circles.enabled && up_L) addHorizontalCircles(ls, lr, matches, rect, *up_L, o, scene);
 	return scene;
 }
 
@@ -206,6 +210,17 @@ void addDenseFeatures(const std::vector<EdgeString>& ls, const cv::Mat& lr, cons
 	for (const auto& s : denseEdgeStrings(ls, matches, d, rect, o.dense))
 		segmentString(s, rect, o.fit, lines, conics);
 	scene.dense_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
+}
+
+void addHorizontalCircles(const std::vector<EdgeString>& ls, const cv::Mat& lr,
+                          const std::vector<EdgeMatch>& matches, const Rectifier& rect,
+                          const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene)
+{
+	FitOptions piece_fit = o.fit;
+	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
+	const auto lp = segmentImageStrings(ls, lr, piece_fit);
+	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles);
+	scene.circle_features = addNewFeatures(scene, {}, c, o.segments.duplicate_mm);
 }
 
 }  // namespace mrolr::stereo

@@ -46,6 +46,13 @@ class Rectifier
 	 * at disparity d px (d > 0). */
 	Eigen::Vector3d pointInLeftCamera(double x_px, double y_px, double disparity_px) const;
 
+	/** Rectified left pixel (px) of a 3D point @p p_L_mm (mm, thesis frame L, in front of the
+	 * camera): the inverse of pointInLeftCamera for a given disparity. */
+	cv::Point2d leftPixelOf(const Eigen::Vector3d& p_L_mm) const;
+
+	/** Unit viewing ray (thesis frame L) of rectified left pixel (x, y). */
+	Eigen::Vector3d leftRay(double x_px, double y_px) const;
+
 	/** Disparity (px) of a point at depth z_mm along the rectified optic axis. */
 	double disparityAtDepth(double z_mm) const { return f_px_ * baseline_mm_ / z_mm + doff_px_; }
 

@@ -7,6 +7,7 @@
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
+#include <mrolr/stereo/HorizontalCircles.h>
 #include <mrolr/stereo/HorizontalEdges.h>
 #include <mrolr/stereo/Rectifier.h>
 #include <mrolr/stereo/SegmentStereo.h>
@@ -16,6 +17,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace mrolr::stereo
@@ -33,6 +35,7 @@ struct SceneOptions
 	HorizontalOptions horizontal;
 	SegmentStereoOptions segments;  ///< piece stereo (SegmentStereo.h) adds what 3D strings miss
 	DenseEdgeOptions dense;  ///< dense disparities for unmatched edgels (DenseEdgeStereo.h)
+	HorizontalCircleOptions circles;  ///< rims as horizontal circles (needs the up direction)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -47,6 +50,7 @@ struct StereoScene
 	size_t horizontal_lines = 0;  ///< lines recovered from their corners (HorizontalEdges.h)
 	size_t piece_features = 0;    ///< lines and conics added by piece stereo (SegmentStereo.h)
 	size_t dense_features = 0;    ///< lines and conics added by dense edge stereo
+	size_t circle_features = 0;   ///< horizontal circles added (HorizontalCircles.h)
 };
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
@@ -68,9 +72,18 @@ void addDenseFeatures(const std::vector<EdgeString>& left, const cv::Mat& left_r
                       const cv::Mat& right_rect, const std::vector<EdgeMatch>& matches,
                       const Rectifier& rect, const SceneOptions& o, StereoScene& scene);
 
+/** Horizontal circles (HorizontalCircles.h) of the left arcs that no conic of @p scene covers;
+ * adds them to @p scene. @p up_L: the up direction in L. */
+void addHorizontalCircles(const std::vector<EdgeString>& left, const cv::Mat& left_rect,
+                          const std::vector<EdgeMatch>& matches, const Rectifier& rect,
+                          const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene);
+
 /** Reconstructs a scene from an unrectified stereo pair (grey or colour, the calibration's size).
- * Throws std::runtime_error for images that do not fit the calibration. */
+ * @p up_L: the up direction in the left camera frame L when the head angles are known; the
+ * horizontal-circle step (options.circles) runs only with it. Throws std::runtime_error for
+ * images that do not fit the calibration. */
 StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
-                             const StereoCalibration& calib, const SceneOptions& options);
+                             const StereoCalibration& calib, const SceneOptions& options,
+                             const std::optional<Eigen::Vector3d>& up_L = std::nullopt);
 
 }  // namespace mrolr::stereo

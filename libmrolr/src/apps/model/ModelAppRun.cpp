@@ -140,14 +140,18 @@ int ModelApp::runScene()
 		head.emplace(geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
 	const auto calib = viewCalibration();
 	const auto so = loadOptions<stereo::SceneOptions>(config_path, "scene");
+	std::optional<Eigen::Vector3d> up_L;  // C0's up (+y) in L: horizontal circles need it
+	if (head)
+		up_L = head->T_LinC0(anglesFromDeg(*head_deg)).linear().transpose() * Eigen::Vector3d::UnitY();
 	const auto scene =
-	    stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so);
+	    stereo::reconstructScene(readImage(left_png), readImage(right_png), calib, so, up_L);
 	result = model::sceneToWireFrame(scene);
 	if (head) result = model::leftCameraToC0(result, *head, anglesFromDeg(*head_deg));
 	model::saveWireFrame(result, out_path);
 	report["frame"] = model::frameName(result.frame);
 	report["edge_strings_left"] = scene.left_strings;
 	report["edge_matches"] = scene.matches;
+	report["horizontal_circles"] = scene.circle_features;
 	report["out"] = out_path;
 	if (!truth_path.empty()) statsAgainstTruth(out_path);
 	return util::kExitOk;
