@@ -190,6 +190,74 @@ std::vector<StereoEdgel> arcDepths(const std::vector<EdgeString>& strings, const
 	}
 	return static_cast<int>(steep.size()) >= min_matches ? steep : all;
 }
+
+/** Leftmost and rightmost columns of the circle's projection in the left and the right rectified
+ * image (the right image column is x_left − disparity). */
+struct Extremes
+{
+	double l_min = 1e300, l_max = -1e300, r_min = 1e300, r_max = -1e300;
+};
+Extremes circleExtremes(const ConicFit3& c, const Rectifier& rect, double scale)
+{
+	Extremes e;
+	for (int k = 0; k < 720; ++k)
+	{
+		const Eigen::Vector3d p = scale * c.pointAt(2 * M_PI * k / 720);
+		const cv::Point2d q = rect.leftPixelOf(p);
+		const double xr = q.x - rect.disparityOf(p);
+		e.l_min = std::min(e.l_min, q.x), e.l_max = std::max(e.l_max, q.x);
+		e.r_min = std::min(e.r_min, xr), e.r_max = std::max(e.r_max, xr);
+	}
+	return e;
+}
+}  // namespace
+
+std::optional<double> rightExtremeScale(const ConicFit3& c, const std::vector<cv::Point2d>& arc_px,
+                                        const std::vector<EdgeString>& right, const Rectifier& rect)
+{
+	const Extremes e = circleExtremes(c, rect, 1);
+	double a_min = 1e300, a_max = -1e300, top = 1e300, bottom = -1e300;
+	for (const auto& q : arc_px)
+		a_min = std::min(a_min, q.x), a_max = std::max(a_max, q.x), top = std::min(top, q.y),
+		bottom = std::max(bottom, q.y);
+	// an extreme counts only where the left arc reaches it
+	const double w = rect.rectifiedSize().width, m = 5;  // an arc cut by the image edge: no extreme
+	bool use_min = std::abs(a_min - e.l_min) <= 1 && a_min >= m,
+	     use_max = std::abs(a_max - e.l_max) <= 1 && a_max <= w - m;
+	if (!use_min && !use_max) return std::nullopt;
+	double r_min = 1e300, r_max = -1e300;  // the right edgels' extremes near the predicted ones
+	for (const auto& s : right)
+		for (const auto& x : s)
+		{
+			if (x.p.y < top - 1 || x.p.y > bottom + 1) continue;
+			if (std::abs(x.p.x - e.r_min) <= 4) r_min = std::min(r_min, x.p.x);
+			if (std::abs(x.p.x - e.r_max) <= 4) r_max = std::max(r_max, x.p.x);
+		}
+	use_min = use_min && r_min >= m && r_min < 1e299;
+	use_max = use_max && r_max <= w - m && r_max > -1e299;
+	if (!use_min && !use_max) return std::nullopt;
+	// observed disparity of the extremes (same estimator in both images) minus the prediction,
+	// which falls as the circle is scaled away from the camera: bisection on the scale
+	auto excess = [&](double s)
+	{
+		const Extremes p = circleExtremes(c, rect, s);
+		double sum = 0;
+		if (use_min) sum += (a_min - r_min) - (p.l_min - p.r_min);
+		if (use_max) sum += (a_max - r_max) - (p.l_max - p.r_max);
+		return sum;
+	};
+	double lo = 0.9, hi = 1.1;
+	if (excess(lo) > 0 || excess(hi) < 0) return std::nullopt;  // outside ±10 %
+	for (int it = 0; it < 40; ++it)
+	{
+		const double mid = 0.5 * (lo + hi);
+		(excess(mid) > 0 ? hi : lo) = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+namespace
+{
 }  // namespace
 
 double planeSectionAxisRatio(const cv::RotatedRect& el, const Eigen::Vector3d& up_L,
@@ -271,7 +339,8 @@ std::vector<ConicFit3> horizontalCircles(const std::vector<EdgeString>& left_str
                                          const std::vector<EdgeMatch>& matches,
                                          const std::vector<ConicFit3>& existing,
                                          const Eigen::Vector3d& up_L, const Rectifier& rect,
-                                         const HorizontalCircleOptions& o)
+                                         const HorizontalCircleOptions& o,
+                                         const std::vector<EdgeString>* right_strings)
 {
 	std::map<std::pair<int, int>, const EdgeMatch*> m;
 	for (const auto& x : matches) m[{x.string, x.edgel}] = &x;
@@ -286,6 +355,9 @@ std::vector<ConicFit3> horizontalCircles(const std::vector<EdgeString>& left_str
 		HorizontalCircleOptions oo = o;
 		oo.min_arc_deg = min_arc;
 		auto c = horizontalCircle(arc, depth, el, up_L, rect, oo);
+		if (c && right_strings && o.right_extremes)
+			if (const auto k = rightExtremeScale(*c, arc, *right_strings, rect))
+				c->centre *= *k, c->a *= *k, c->b *= *k, c->rms_mm *= *k;
 		if (c) out.push_back(*c);
 		return c.has_value();
 	};
@@ -323,6 +395,7 @@ void HorizontalCircleOptions::loadFromConfigFile(const mrpt::config::CConfigFile
 	rd("horizontal_circle_max_radius_mm", max_radius_mm);
 	rd("horizontal_circle_min_arc_deg", min_arc_deg);
 	rd("horizontal_circle_min_run_arc_deg", min_run_arc_deg);
+	right_extremes = util::readBool(cfg, section, "horizontal_circle_right_extremes", right_extremes);
 	rd("horizontal_circle_max_chord_turn_deg", max_chord_turn_deg);
 	util::requireInRange(cfg, section, "horizontal_circle_min_run_arc_deg", min_run_arc_deg, 0, 360);
 	util::requireInRange(cfg, section, "horizontal_circle_max_chord_turn_deg", max_chord_turn_deg, 0,
@@ -347,7 +420,8 @@ void HorizontalCircleOptions::dump(std::ostream& out) const
 	    << "\nhorizontal_circle_max_radius_mm = " << max_radius_mm
 	    << "\nhorizontal_circle_min_arc_deg = " << min_arc_deg
 	    << "\nhorizontal_circle_min_run_arc_deg = " << min_run_arc_deg
-	    << "\nhorizontal_circle_max_chord_turn_deg = " << max_chord_turn_deg << "\n";
+	    << "\nhorizontal_circle_max_chord_turn_deg = " << max_chord_turn_deg
+	    << "\nhorizontal_circle_right_extremes = " << right_extremes << "\n";
 }
 
 }  // namespace mrolr::stereo

@@ -77,6 +77,11 @@ cv::Point2d Rectifier::leftPixelOf(const Eigen::Vector3d& p_L_mm) const
 	return {cx_px_ + f_px_ * p.x() / p.z(), cy_px_ + f_px_ * p.y() / p.z()};
 }
 
+double Rectifier::disparityOf(const Eigen::Vector3d& p_L_mm) const
+{
+	return disparityAtDepth((R_LthesisFromRect_.transpose() * p_L_mm).z());
+}
+
 Eigen::Vector3d Rectifier::leftRay(double x_px, double y_px) const
 {
 	return (R_LthesisFromRect_ * Eigen::Vector3d((x_px - cx_px_) / f_px_, (y_px - cy_px_) / f_px_, 1))

@@ -179,7 +179,7 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
 	if (o.segments.enabled) addPieceFeatures(ls, rs, lr, rr, matches, rect, o, scene);
 	if (o.dense.enabled) addDenseFeatures(ls, lr, rr, matches, rect, o, scene);
-	if (o.circles.enabled && up_L) addHorizontalCircles(ls, lr, matches, rect, *up_L, o, scene);
+	if (o.circles.enabled && up_L) addHorizontalCircles(ls, rs, lr, matches, rect, *up_L, o, scene);
 	return scene;
 }
 
@@ -212,14 +212,16 @@ void addDenseFeatures(const std::vector<EdgeString>& ls, const cv::Mat& lr, cons
 	scene.dense_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
 }
 
-void addHorizontalCircles(const std::vector<EdgeString>& ls, const cv::Mat& lr,
+void addHorizontalCircles(const std::vector<EdgeString>& ls, const std::vector<EdgeString>& rs,
+                          const cv::Mat& lr,
                           const std::vector<EdgeMatch>& matches, const Rectifier& rect,
                           const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene)
 {
 	FitOptions piece_fit = o.fit;
 	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
 	const auto lp = segmentImageStrings(ls, lr, piece_fit);
-	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles);
+	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles,
+	                                 &rs);
 	scene.circle_features = addNewFeatures(scene, {}, c, o.segments.duplicate_mm);
 }
 

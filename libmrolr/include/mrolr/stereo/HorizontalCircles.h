@@ -39,6 +39,9 @@ struct HorizontalCircleOptions
 	double min_arc_deg = 60;  ///< arc of the circle an arc piece's edgels span
 	double min_run_arc_deg = 120;    ///< the same for a run of line pieces (chords)
 	double max_chord_turn_deg = 45;  ///< consecutive chords of a run turn by less
+	/** rescale the circle about the camera so that the disparities of its leftmost and rightmost
+	 * image points match those of the right image's edgels there (rightExtremeScale) */
+	bool right_extremes = true;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -62,12 +65,22 @@ double planeSectionAxisRatio(const cv::RotatedRect& el, const Eigen::Vector3d& u
 /** Horizontal circles of the left image's arc pieces, and of runs of line pieces of one string
  * that turn smoothly (a rim so flat that its chords are straight within line_tol_px), that no
  * conic of @p existing covers in the image (half their edgels within 1.5 px of its projection);
- * depth from the point @p matches on the arc. */
+ * depth from the point @p matches on the arc, then, with @p right_strings and
+ * o.right_extremes, from the right image's extremes (rightExtremeScale). */
 std::vector<ConicFit3> horizontalCircles(const std::vector<EdgeString>& left_strings,
                                          const std::vector<ImagePiece>& left_pieces,
                                          const std::vector<EdgeMatch>& matches,
                                          const std::vector<ConicFit3>& existing,
                                          const Eigen::Vector3d& up_L, const Rectifier& rect,
-                                         const HorizontalCircleOptions& o);
+                                         const HorizontalCircleOptions& o,
+                                         const std::vector<EdgeString>* right_strings = nullptr);
+
+/** The scale (about the left camera centre, within ±10 %; it leaves the left image unchanged)
+ * that makes the disparities of circle @p c's leftmost and rightmost image points equal those
+ * measured there: the left arc's extreme columns minus the extreme columns of the right edgels
+ * (@p right, rectified) within 4 px of the predicted ones on the arc's rows. Only extremes that
+ * the left arc @p arc_px reaches, 5 px or more inside both images, count; nothing without one. */
+std::optional<double> rightExtremeScale(const ConicFit3& c, const std::vector<cv::Point2d>& arc_px,
+                                        const std::vector<EdgeString>& right, const Rectifier& rect);
 
 }  // namespace mrolr::stereo

@@ -50,6 +50,9 @@ class Rectifier
 	 * camera): the inverse of pointInLeftCamera for a given disparity. */
 	cv::Point2d leftPixelOf(const Eigen::Vector3d& p_L_mm) const;
 
+	/** Disparity (px) of a 3D point @p p_L_mm (mm, thesis frame L, in front of the camera). */
+	double disparityOf(const Eigen::Vector3d& p_L_mm) const;
+
 	/** Unit viewing ray (thesis frame L) of rectified left pixel (x, y). */
 	Eigen::Vector3d leftRay(double x_px, double y_px) const;
 

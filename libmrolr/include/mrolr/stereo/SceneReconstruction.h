@@ -74,7 +74,8 @@ void addDenseFeatures(const std::vector<EdgeString>& left, const cv::Mat& left_r
 
 /** Horizontal circles (HorizontalCircles.h) of the left arcs that no conic of @p scene covers;
  * adds them to @p scene. @p up_L: the up direction in L. */
-void addHorizontalCircles(const std::vector<EdgeString>& left, const cv::Mat& left_rect,
+void addHorizontalCircles(const std::vector<EdgeString>& left, const std::vector<EdgeString>& right,
+                          const cv::Mat& left_rect,
                           const std::vector<EdgeMatch>& matches, const Rectifier& rect,
                           const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene);
 
