@@ -15,9 +15,9 @@ using namespace mrolr::stereo::test;
 
 namespace
 {
-const Eigen::Vector3d kUp(0, 1, 0);            // the test rig looks horizontally: L's y is up
-const Eigen::Vector3d kCentre(30, -90, 800);   // thesis L (mm): 6.4° below the optic axis
-const double kRadius = 40;                     // image semi-axes about 35 and 3.9 px
+const Eigen::Vector3d kUp(0, 1, 0);           // the test rig looks horizontally: L's y is up
+const Eigen::Vector3d kCentre(30, -90, 800);  // thesis L (mm): 6.4° below the optic axis
+const double kRadius = 40;                    // image semi-axes about 35 and 3.9 px
 
 /** A circle of radius kRadius about kCentre in the plane of unit axes u, v. */
 Eigen::Vector3d circlePoint(const Eigen::Vector3d& u, const Eigen::Vector3d& v, double t)
@@ -98,7 +98,8 @@ TEST(HorizontalCircles, AxisRatioOfTheConeCutByThePlane)
 	std::vector<cv::Point2f> px;
 	for (int k = 0; k < 72; ++k)
 	{
-		const cv::Point2d q = rect.leftPixelOf(circlePoint({1, 0, 0}, {0, 0, 1}, 2 * M_PI * k / 72));
+		const cv::Point2d q =
+		    rect.leftPixelOf(circlePoint({1, 0, 0}, {0, 0, 1}, 2 * M_PI * k / 72));
 		px.emplace_back(static_cast<float>(q.x), static_cast<float>(q.y));
 	}
 	const cv::RotatedRect el = cv::fitEllipseDirect(px);

@@ -112,7 +112,8 @@ double imageRms(const std::vector<cv::Point2d>& q, const Eigen::Vector3d& centre
 	for (const auto& x : q)
 	{
 		double best = 1e300;
-		for (const auto& y : s) best = std::min(best, (x.x - y.x) * (x.x - y.x) + (x.y - y.y) * (x.y - y.y));
+		for (const auto& y : s)
+			best = std::min(best, (x.x - y.x) * (x.x - y.x) + (x.y - y.y) * (x.y - y.y));
 		sum += best;
 	}
 	return std::sqrt(sum / static_cast<double>(q.size()));
@@ -282,7 +283,8 @@ double planeSectionAxisRatio(const cv::RotatedRect& el, const Eigen::Vector3d& u
 		uv.emplace_back(static_cast<float>(X->dot(e1)), static_cast<float>(X->dot(e2)));
 	}
 	const cv::RotatedRect c = cv::fitEllipseDirect(uv);
-	const double a = std::max(c.size.width, c.size.height), b = std::min(c.size.width, c.size.height);
+	const double a = std::max(c.size.width, c.size.height),
+	             b = std::min(c.size.width, c.size.height);
 	return b > 0 ? a / b : std::numeric_limits<double>::infinity();
 }
 
@@ -348,8 +350,9 @@ std::vector<ConicFit3> horizontalCircles(const std::vector<EdgeString>& left_str
 	auto tryArc = [&](const ImagePiece& p, const std::optional<cv::RotatedRect>& el, double min_arc)
 	{
 		const auto arc = piecePoints(left_strings, p);
-		const bool covered = std::any_of(existing.begin(), existing.end(), [&](const ConicFit3& c)
-		                                 { return coversInImage(c, arc, rect); });
+		const bool covered =
+		    std::any_of(existing.begin(), existing.end(),
+		                [&](const ConicFit3& c) { return coversInImage(c, arc, rect); });
 		const auto depth = arcDepths(left_strings, p, m, rect, o.min_depth_matches);
 		if (covered) return false;
 		HorizontalCircleOptions oo = o;
@@ -395,12 +398,15 @@ void HorizontalCircleOptions::loadFromConfigFile(const mrpt::config::CConfigFile
 	rd("horizontal_circle_max_radius_mm", max_radius_mm);
 	rd("horizontal_circle_min_arc_deg", min_arc_deg);
 	rd("horizontal_circle_min_run_arc_deg", min_run_arc_deg);
-	right_extremes = util::readBool(cfg, section, "horizontal_circle_right_extremes", right_extremes);
+	right_extremes =
+	    util::readBool(cfg, section, "horizontal_circle_right_extremes", right_extremes);
 	rd("horizontal_circle_max_chord_turn_deg", max_chord_turn_deg);
-	util::requireInRange(cfg, section, "horizontal_circle_min_run_arc_deg", min_run_arc_deg, 0, 360);
-	util::requireInRange(cfg, section, "horizontal_circle_max_chord_turn_deg", max_chord_turn_deg, 0,
-	                     90);
-	util::requireInRange(cfg, section, "horizontal_circle_max_residual_px", max_residual_px, 0.05, 20);
+	util::requireInRange(cfg, section, "horizontal_circle_min_run_arc_deg", min_run_arc_deg, 0,
+	                     360);
+	util::requireInRange(cfg, section, "horizontal_circle_max_chord_turn_deg", max_chord_turn_deg,
+	                     0, 90);
+	util::requireInRange(cfg, section, "horizontal_circle_max_residual_px", max_residual_px, 0.05,
+	                     20);
 	util::requireInRange(cfg, section, "horizontal_circle_max_axis_ratio", max_axis_ratio, 1, 10);
 	util::requireInRange(cfg, section, "horizontal_circle_min_depth_matches", min_depth_matches, 1,
 	                     1e6);

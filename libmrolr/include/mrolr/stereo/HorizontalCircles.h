@@ -36,7 +36,7 @@ struct HorizontalCircleOptions
 	double max_axis_ratio = 1.3;   ///< a/b of the image ellipse's cone cut by the plane
 	int min_depth_matches = 3;     ///< stereo matches on the arc that give its height
 	double min_radius_mm = 5, max_radius_mm = 150;
-	double min_arc_deg = 60;  ///< arc of the circle an arc piece's edgels span
+	double min_arc_deg = 60;         ///< arc of the circle an arc piece's edgels span
 	double min_run_arc_deg = 120;    ///< the same for a run of line pieces (chords)
 	double max_chord_turn_deg = 45;  ///< consecutive chords of a run turn by less
 	/** rescale the circle about the camera so that the disparities of its leftmost and rightmost
@@ -49,7 +49,8 @@ struct HorizontalCircleOptions
 
 /** The horizontal circle (normal ±@p up_L, mm in L) through the image arc @p arc_px (rectified
  * left px, in order) at height h = up_L · p of the points @p depth (median), or nothing when the
- * checks of @p o fail. @p ellipse: the arc's 2D ellipse for the axis-ratio check (none: skipped). */
+ * checks of @p o fail. @p ellipse: the arc's 2D ellipse for the axis-ratio check (none: skipped).
+ */
 std::optional<ConicFit3> horizontalCircle(const std::vector<cv::Point2d>& arc_px,
                                           const std::vector<StereoEdgel>& depth,
                                           const std::optional<cv::RotatedRect>& ellipse,
@@ -81,6 +82,7 @@ std::vector<ConicFit3> horizontalCircles(const std::vector<EdgeString>& left_str
  * (@p right, rectified) within 4 px of the predicted ones on the arc's rows. Only extremes that
  * the left arc @p arc_px reaches, 5 px or more inside both images, count; nothing without one. */
 std::optional<double> rightExtremeScale(const ConicFit3& c, const std::vector<cv::Point2d>& arc_px,
-                                        const std::vector<EdgeString>& right, const Rectifier& rect);
+                                        const std::vector<EdgeString>& right,
+                                        const Rectifier& rect);
 
 }  // namespace mrolr::stereo
