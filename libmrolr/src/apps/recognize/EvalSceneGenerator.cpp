@@ -180,8 +180,9 @@ EvalScene EvalSceneGenerator::make(int k)
 void EvalSceneGenerator::reconstruct(EvalScene& s) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
-	s.scene =
-	    model::sceneToWireFrame(stereo::reconstructScene(s.left, s.right, s.calib, scene_opts_));
+	// the head's up direction lets stereo fit rims seen nearly edge-on as horizontal circles
+	s.scene = model::sceneToWireFrame(
+	    stereo::reconstructScene(s.left, s.right, s.calib, scene_opts_, s.up_L));
 	s.scene.name = "scene_" + std::to_string(s.index);
 	s.reconstruct_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -58,8 +58,12 @@ void RecognizeApp::loadScenes()
 	stereo::SceneOptions so;
 	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)),
 	                      "scene");
+	// with --support-plane the up direction is known: rims seen edge-on become horizontal circles
+	std::optional<Eigen::Vector3d> up_L;
+	if (support_plane) up_L = support_plane->n_S;
 	const auto s = stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
-	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so);
+	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so,
+	                                        up_L);
 	scenes.push_back(model::sceneToWireFrame(s));
 	scenes.back().name = "stereo";
 }
