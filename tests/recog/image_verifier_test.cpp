@@ -1,6 +1,7 @@
 // Verification in the stereo images (ImageVerifier.h): a model drawn into a synthetic stereo pair
 // scores high at its pose and low when shifted, turned or replaced by another object; the
 // refinement moves a perturbed pose towards the drawn one; bad input is reported.
+#include "synthetic_rig.h"
 #include "recog_test_util.h"
 
 #include <mrolr/recog/ImageVerifier.h>
@@ -20,22 +21,9 @@ using namespace mrolr::recog;
 
 namespace
 {
-constexpr double kFocal_px = 700, kBaseline_mm = 120;
-
-mrolr::stereo::StereoCalibration calibration()
-{
-	mrolr::stereo::StereoCalibration c;
-	c.image_size = cv::Size(640, 480);
-	c.K_left = c.K_right = cv::Matx33d(kFocal_px, 0, 320, 0, kFocal_px, 240, 0, 0, 1);
-	c.t_LinR_mm = cv::Vec3d(-kBaseline_mm, 0, 0);  // right camera 120 mm to the left camera's right
-	return c;
-}
-
-cv::Point2d pixel(const Eigen::Vector3d& p_L, double cam_x_cv_mm)
-{
-	const Eigen::Vector3d c(-p_L.x() + cam_x_cv_mm, -p_L.y(), p_L.z());
-	return {kFocal_px * c.x() / c.z() + 320, kFocal_px * c.y() / c.z() + 240};
-}
+using test::calibration;
+using test::kBaseline_mm;
+using test::pixel;
 
 void fillPolygon(cv::Mat& img, const std::vector<Eigen::Vector3d>& p_L, double cam_x_cv_mm,
                  int grey)

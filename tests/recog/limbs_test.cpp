@@ -2,6 +2,7 @@
 // (ImageVerifier.h): coaxial circles are grouped into a body, its outline generators seen from a
 // camera lie on the projected silhouette, and a drawn can scores high at its pose with them and
 // clearly lower 10 mm away.
+#include "synthetic_rig.h"
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/Limbs.h>
 #include <mrolr/recog/SyntheticObjects.h>
@@ -18,23 +19,9 @@ using namespace mrolr::recog;
 
 namespace
 {
-constexpr double kFocal_px = 700, kBaseline_mm = 120;
-
-mrolr::stereo::StereoCalibration calibration()
-{
-	mrolr::stereo::StereoCalibration c;
-	c.image_size = cv::Size(640, 480);
-	c.K_left = c.K_right = cv::Matx33d(kFocal_px, 0, 320, 0, kFocal_px, 240, 0, 0, 1);
-	c.t_LinR_mm = cv::Vec3d(-kBaseline_mm, 0, 0);  // right camera 120 mm to the left camera's right
-	return c;
-}
-
-/** Pixel of a point of L seen by the OpenCV camera at x_cv = cam_x_cv_mm (L's x negated). */
-cv::Point2d pixel(const Eigen::Vector3d& p_L, double cam_x_cv_mm)
-{
-	const Eigen::Vector3d c(-p_L.x() + cam_x_cv_mm, -p_L.y(), p_L.z());
-	return {kFocal_px * c.x() / c.z() + 320, kFocal_px * c.y() / c.z() + 240};
-}
+using test::calibration;
+using test::kBaseline_mm;
+using test::pixel;
 
 /** A frustum about O's z: radius r0 at z = 0, r1 at z = h. */
 struct Frustum
