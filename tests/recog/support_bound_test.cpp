@@ -108,7 +108,9 @@ TEST(support_bound, skipping_keeps_the_answers)
 			const auto b = Recognizer(objects[m], without).recognize(ts.scene);
 			EXPECT_EQ(a.found, b.found) << objects[m].name;
 			if (a.found && b.found)
+			{
 				EXPECT_TRUE(a.T_OinS.isApprox(b.T_OinS, 1e-9)) << objects[m].name;
+			}
 		}
 	}
 }

@@ -66,7 +66,9 @@ TEST(self_occlusion, camera_sees_the_front_of_a_box_and_not_its_back)
 	for (size_t i = 0; i < features.size(); ++i)
 		if (features[i].p1.isApprox(Eigen::Vector3d(-50, -50, -50)) ||
 		    features[i].p2.isApprox(Eigen::Vector3d(-50, -50, -50)))
+		{
 			EXPECT_DOUBLE_EQ(corner[i], 1.0);
+		}
 }
 
 TEST(upright_prior, a_scene_seen_upside_down_finds_nothing_upright)

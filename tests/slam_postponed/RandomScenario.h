@@ -20,6 +20,15 @@ struct ScenarioOptions
 	HeadConstants head;       ///< interocular separation and head height (thesis eqs 5.35, 5.40)
 };
 
+/** N features and a seed, the other options at their defaults. */
+inline ScenarioOptions scenarioOf(int features, unsigned seed)
+{
+	ScenarioOptions o;
+	o.features = features;
+	o.seed = seed;
+	return o;
+}
+
 class RandomScenario
 {
  public:

@@ -17,6 +17,7 @@ using mrolr::slam::PostponedTracker33;
 using mrolr::slam::test::Lockstep;
 using mrolr::slam::test::relativeError;
 using mrolr::slam::test::ScenarioOptions;
+using mrolr::slam::test::scenarioOf;
 
 namespace
 {
@@ -31,7 +32,7 @@ class PostponedEquivalence : public ::testing::TestWithParam<std::tuple<int, uns
 TEST_P(PostponedEquivalence, MatchesFullEkfOverLongRunWithSwitches)
 {
 	const auto [N, seed, scalar] = GetParam();
-	Lockstep run({N, seed}, scalar);
+	Lockstep run(scenarioOf(N, seed), scalar);
 	run.run(kSteps);
 	const auto& e = run.errors();
 	std::cout << "N=" << N << " switches=" << e.switches << " max relative error: x " << e.state
@@ -46,7 +47,7 @@ TEST_P(PostponedEquivalence, MatchesFullEkfOverLongRunWithSwitches)
 TEST_P(PostponedEquivalence, CovarianceIsPositiveSemiDefiniteAfterCatchUp)
 {
 	const auto [N, seed, scalar] = GetParam();
-	Lockstep run({N, seed}, scalar);
+	Lockstep run(scenarioOf(N, seed), scalar);
 	run.run(kSteps);
 	const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(run.trackerCovariance());
 	const Eigen::VectorXd lambda = eig.eigenvalues();
@@ -63,7 +64,7 @@ TEST(PostponedTracker, MatchesFullEkfWithManyFeatures)
 {
 	for (bool scalar : {false, true})
 	{
-		Lockstep run({60, 99}, scalar);
+		Lockstep run(scenarioOf(60, 99), scalar);
 		run.run(150);
 		EXPECT_LT(run.errors().state, kTolerance);
 		EXPECT_LT(run.errors().covariance, kTolerance);
@@ -90,7 +91,7 @@ TEST(PostponedTracker, BlockedSymmetricUpdateEqualsPlainProduct)
 // The comparison has teeth: before catch-up the stored blocks are stale, far beyond the tolerance.
 TEST(PostponedTracker, StaleBlocksDifferBeforeCatchUp)
 {
-	Lockstep run({10, 3}, false);
+	Lockstep run(scenarioOf(10, 3), false);
 	for (int k = 0; k < 5; ++k) run.step();
 	EXPECT_GT(relativeError(run.trackerCovariance(), run.reference().P), 1e-4);
 	run.catchUpAndCompare();
@@ -100,7 +101,7 @@ TEST(PostponedTracker, StaleBlocksDifferBeforeCatchUp)
 
 TEST(PostponedTracker, CatchUpWithoutStepsLeavesStateUntouched)
 {
-	Lockstep run({6, 11}, false);
+	Lockstep run(scenarioOf(6, 11), false);
 	run.run(30);
 	const Eigen::VectorXd x = run.trackerState();
 	const Eigen::MatrixXd P = run.trackerCovariance();

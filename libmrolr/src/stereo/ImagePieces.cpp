@@ -48,7 +48,7 @@ ImagePiece linePiece(const std::vector<cv::Point2d>& p, int s, size_t lo, size_t
 	cv::Vec4f l;
 	cv::fitLine(q, l, cv::DIST_L2, 0, 0.01, 0.01);
 	const cv::Point2d v(l[0], l[1]), c(l[2], l[3]);
-	ImagePiece out{s, lo, hi, true};
+	ImagePiece out{s, lo, hi, true, {}, {}, {}};
 	out.a = c + v * (p[lo] - c).dot(v);
 	out.b = c + v * (p[hi - 1] - c).dot(v);
 	if (out.a.y > out.b.y + 1e-9 || (std::abs(out.a.y - out.b.y) < 1e-9 && out.a.x > out.b.x))
@@ -72,7 +72,7 @@ void split(const std::vector<cv::Point2d>& p, int s, size_t lo, size_t hi, const
 		                                   p.begin() + static_cast<long>(hi));
 		if (auto el = fitEllipse2D(arc, o))
 		{
-			ImagePiece e{s, lo, hi, false};
+			ImagePiece e{s, lo, hi, false, {}, {}, {}};
 			e.ellipse = *el;
 			return out.push_back(e);
 		}
