@@ -102,3 +102,47 @@ TEST(RenderProjection, DeterministicForASeedAndNoiseChangesWithIt)
 	EXPECT_FALSE(same(f1.left, f3.left));  // another frame, another noise sample
 	EXPECT_GT(f1.render_s, 0);
 }
+
+namespace
+{
+/** Grey level at the image centre of a sphere of `rgb` colour filling the view, lit uniformly. */
+int centreGrey(const Eigen::Vector3d& rgb)
+{
+	const geometry::BiSightHead head;
+	sim::StereoRenderer renderer(head, flatLight());
+	const Eigen::Isometry3d T_C0inW = geometry::T_C0inW({0, 0, 0}, 1.0);
+	const Eigen::Vector3d p_C0(0, 0, 1.0);
+	const geometry::HeadAngles a = head.fixate(p_C0);
+	mrpt::opengl::COpenGLScene scene;
+	auto s = mrpt::opengl::CSphere::Create(0.2f, 48);
+	s->setLocation(geometry::pointToMrpt(T_C0inW * p_C0));
+	s->setColor(float(rgb[0]), float(rgb[1]), float(rgb[2]));
+	scene.insert(s);
+	const auto f = renderer.render(scene, T_C0inW, a);
+	return *f.left(int(f.left.getWidth() / 2), int(f.left.getHeight() / 2));
+}
+}  // namespace
+
+// A red object is as bright as its luminance (0.299 R + 0.587 G + 0.114 B), not as dark as a blue
+// one: MRPT's CImage::grayscale() swaps red and blue on the renderer's BGR images.
+TEST(RenderProjection, GreyIsTheLuminanceOfTheColour)
+{
+	const int white = centreGrey({1, 1, 1});
+	const int red = centreGrey({1, 0, 0}), green = centreGrey({0, 1, 0}), blue = centreGrey({0, 0, 1});
+	ASSERT_GT(white, 200);
+	EXPECT_NEAR(red, 0.299 * white, 3);
+	EXPECT_NEAR(green, 0.587 * white, 3);
+	EXPECT_NEAR(blue, 0.114 * white, 3);
+	EXPECT_GT(red, 2 * blue);
+}
+
+TEST(RenderProjection, LuminanceOfAGreyImageIsAPlainCopy)
+{
+	mrpt::img::CImage g(4, 3, mrpt::img::CH_GRAY);
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 4; ++c) *g(c, r) = uint8_t(10 * r + c);
+	const auto out = sim::toLuminance(g);
+	ASSERT_FALSE(out.isColor());
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 4; ++c) EXPECT_EQ(*out(c, r), 10 * r + c);
+}

@@ -100,7 +100,20 @@ mrpt::img::CImage StereoRenderer::renderView(const mrpt::opengl::COpenGLScene& s
 		fbo_->render_RGBD(*wrapped_, rgb, *depth_m);
 	else
 		fbo_->render_RGB(*wrapped_, rgb);
-	return rgb.grayscale();
+	return toLuminance(rgb);
+}
+
+mrpt::img::CImage toLuminance(const mrpt::img::CImage& rgb)
+{
+	if (!rgb.isColor()) return rgb.makeDeepCopy();
+	// CImage::grayscale() weighs the first stored channel by 0.299, but CFBORender stores blue
+	// first (getChannelsOrder() says "BGR"): a red object came out as dark as a blue one. Convert
+	// with the order the image declares.
+	const cv::Mat m = rgb.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+	const bool bgr = rgb.getChannelsOrder() == std::string("BGR");
+	cv::Mat g;
+	cv::cvtColor(m, g, bgr ? cv::COLOR_BGR2GRAY : cv::COLOR_RGB2GRAY);
+	return mrpt::img::CImage(g, mrpt::img::DEEP_COPY);
 }
 
 void StereoRenderer::degrade(mrpt::img::CImage& img, uint64_t sample) const

@@ -87,4 +87,9 @@ class StereoRenderer
 	mrpt::opengl::CSetOfObjects::Ptr root_;
 };
 
+/** Grey image of a rendered colour image with the ITU-R BT.601 luminance weights
+ *  (0.299 R + 0.587 G + 0.114 B), honouring the channel order the image declares; a grey image is
+ *  copied unchanged. (MRPT's CImage::grayscale() swaps red and blue on CFBORender's BGR images.) */
+mrpt::img::CImage toLuminance(const mrpt::img::CImage& rgb);
+
 }  // namespace mrolr::sim
