@@ -168,3 +168,24 @@ TEST(MissionOptions, TurnStepsAndReversingAreOptionalNavigationKeys)
 	expectError("navigation", "reverse_max_m", "-1", "reverse_max_m");
 	expectError("navigation", "max_rotation_step_deg", "400", "max_rotation_step_deg");
 }
+
+TEST(MissionOptions, TheObstacleMissionNavigatesAsTheDefaultMission)
+{
+	// config/mission_obstacle.ini is mission_sim.ini plus obstacle mode: the same [navigation], so
+	// its turns are split into the same measured steps (without them the half-turns at the detour
+	// waypoints ended 20-40 deg off and the estimate jumped). Not compared: reversing, which
+	// obstacle mode never does, and the image-measurement key (ideal measurements here).
+	auto sim = test::optionsFrom(test::defaultMissionConfig());
+	auto obstacle = test::optionsFrom(test::missionConfig("mission_obstacle.ini"));
+	ASSERT_TRUE(obstacle.obstacle_mode);
+	ASSERT_EQ(obstacle.navigation.measurement_source, "ideal");
+	for (auto* o : {&sim, &obstacle})
+		o->navigation.reverse_max_m = 0, o->navigation.image_nssd_ambiguity_margin = -1;
+	std::ostringstream a, b;
+	sim.navigation.dump(a);
+	obstacle.navigation.dump(b);
+	EXPECT_EQ(a.str(), b.str());
+	EXPECT_DOUBLE_EQ(obstacle.trajectory.max_rotation_step_deg,
+	                 sim.trajectory.max_rotation_step_deg);
+	EXPECT_LT(obstacle.trajectory.max_rotation_step_deg, 90);
+}
