@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
 # Rebuilds datasets/objects/*.wf from the simulated lab's turntable (issue 6, docs/model.md).
-# Usage: scripts/build-object-models.sh [BUILD_DIR]   (default: build)
+# Usage: scripts/build-object-models.sh [BUILD_DIR [OUT_DIR]]
+#   (defaults: build, datasets/objects; another OUT_DIR lets the models be checked before they
+#   replace the shipped ones, which other work may be reading)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-bin="${1:-$root/build}/bin"
+bin="$(cd "${1:-$root/build}" && pwd)/bin"
+out="${2:-$root/datasets/objects}"
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
 cd "$root"
 for o in alphabet_cube bottle can cup drink_package hole_punch large_cup stapler; do
 	dir="$(mktemp -d)/tt_$o"
 	"$bin/mrolr-sim" --world maps/lab/world.ini --turntable "$o" --out "$dir" --json >/dev/null
-	"$bin/mrolr-model" build --turntable "$dir" --out "datasets/objects/$o.wf" \
+	"$bin/mrolr-model" build --turntable "$dir" --out "$out/$o.wf" \
 		--truth "$dir/${o}_truth.wf" --json
 	rm -rf "$(dirname "$dir")"
 done

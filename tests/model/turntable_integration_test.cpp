@@ -1,8 +1,10 @@
 // Integration of turntable views (thesis 6.1, B.2.1) on synthetic views in frame O: silhouettes of
 // round bodies dropped, fixed edges kept (TurntableBuilderSupport), circles fitted to the arcs of
 // several views (TurntableBuilderRims).
+#include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/TurntableBuilderSupport.h>
+#include <mrolr/model/TurntableRimImages.h>
 #include <mrolr/model/WireFrameSampling.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -208,5 +210,94 @@ TEST(TurntableOptions, KeysAreReadDumpedAndCheckedByName)
 		{
 			EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
 		}
+	}
+}
+
+namespace
+{
+/** A left camera at @p C (frame O, mm) looking at @p target, thesis axes (x left, y up). */
+ViewEdges cameraAt(const Eigen::Vector3d& C, const Eigen::Vector3d& target)
+{
+	ViewEdges e;
+	e.gradient = cv::Mat::zeros(480, 640, CV_32F);
+	e.K = cv::Matx33d(700, 0, 320, 0, 700, 240, 0, 0, 1);
+	const Eigen::Vector3d z = (target - C).normalized();
+	const Eigen::Vector3d y =
+	    (Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitZ().dot(z) * z).normalized();
+	Eigen::Isometry3d T_LinO = Eigen::Isometry3d::Identity();
+	T_LinO.linear() << y.cross(z), y, z;
+	T_LinO.translation() = C;
+	e.T_OinL = T_LinO.inverse();
+	return e;
+}
+
+/** Draws the part t1..t2 of conic @p c into @p e's gradient map as an edge of 40 grey levels/px. */
+void drawArc(ViewEdges& e, const Conic3& c, double t1, double t2)
+{
+	std::vector<cv::Point3d> p;
+	for (double t = t1; t <= t2 + 1e-9; t += 0.02)
+	{
+		const Eigen::Vector3d q = e.T_OinL * c.pointAt(t);
+		p.emplace_back(-q.x(), -q.y(), q.z());
+	}
+	std::vector<cv::Point2d> px;
+	cv::projectPoints(p, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), e.K, e.D, px);
+	for (size_t i = 1; i < px.size(); ++i)
+		cv::line(e.gradient, px[i - 1], px[i], cv::Scalar(40), 1);
+}
+}  // namespace
+
+TEST(TurntableRims, HorizontalRimIsCompletedWhereAViewFacingItShowsAnEdge)
+{
+	// a rim found in 3D on its y >= 0 half (t in 0..π); a camera on the -y side faces the rest
+	const Conic3 half = circleArc({0, 0, 150}, kR, 0, M_PI);
+	std::vector<ViewEdges> edges = {cameraAt({0, -600, 400}, {0, 0, 150}),
+	                                cameraAt({0, 600, 400}, {0, 0, 150})};
+	RimImageOptions o;
+	o.min_gradient = 8;
+	std::vector<Conic3> rims = {half};
+	EXPECT_EQ(completeRimsFromImages(rims, edges, o), 0);  // no image edge: the arc stays
+	EXPECT_NEAR(rims[0].t2 - rims[0].t1, M_PI, 1e-9);
+	// the far camera (+y) does not face the missing half: an edge drawn there in its image does
+	// not count
+	drawArc(edges[1], half, M_PI, 2 * M_PI);
+	EXPECT_EQ(completeRimsFromImages(rims, edges, o), 0);
+	drawArc(edges[0], half, M_PI, 2 * M_PI);
+	// the camera faces the middle 120° of the missing half (radial direction within 72° of it)
+	EXPECT_GE(completeRimsFromImages(rims, edges, o), 12);
+	EXPECT_GT(rims[0].t2 - rims[0].t1, 1.8 * M_PI);
+	WireFrame completed;
+	completed.conics = rims;
+	for (double t = 0.1; t < M_PI; t += 0.3)  // the same circle, its arc kept and extended
+		EXPECT_LT(distanceToWireFrame(half.pointAt(t), completed), 0.5) << t;
+	EXPECT_LT(distanceToWireFrame(half.pointAt(1.5 * M_PI), completed), 0.5);
+	// off (gradient 0), and a circle in a vertical plane (a handle), are left as they are
+	std::vector<Conic3> again = {half};
+	EXPECT_EQ(completeRimsFromImages(again, edges, RimImageOptions{}), 0);
+	Conic3 handle = half;
+	handle.normal = Eigen::Vector3d::UnitX();
+	handle.major = Eigen::Vector3d::UnitY();
+	std::vector<Conic3> vertical = {handle};
+	EXPECT_EQ(completeRimsFromImages(vertical, edges, o), 0);
+}
+
+TEST(TurntableOptions, RimImageKeysAreReadAndChecked)
+{
+	mrpt::config::CConfigFileMemory cfg(
+	    "[turntable]\nrim_image_gradient = 12\nrim_image_min_fraction = 0.6\n");
+	TurntableOptions t;
+	t.loadFromConfigFile(cfg, "turntable");
+	EXPECT_EQ(t.rim_images.min_gradient, 12);
+	EXPECT_EQ(t.rim_images.min_fraction, 0.6);
+	mrpt::config::CConfigFileMemory bad("[turntable]\nrim_image_min_fraction = 1.5\n");
+	try
+	{
+		TurntableOptions().loadFromConfigFile(bad, "turntable");
+		ADD_FAILURE() << "rim_image_min_fraction = 1.5 accepted";
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("rim_image_min_fraction"), std::string::npos)
+		    << e.what();
 	}
 }

@@ -92,6 +92,15 @@ void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 	support.loadFromConfigFile(cfg, section);
 	rims.max_radius_mm = keep_radius_mm;
 	rims.loadFromConfigFile(cfg, section);
+	rim_images.min_gradient =
+	    util::readDouble(cfg, section, "rim_image_gradient", rim_images.min_gradient);
+	rim_images.min_fraction =
+	    util::readDouble(cfg, section, "rim_image_min_fraction", rim_images.min_fraction);
+	rim_images.max_tilt_deg =
+	    util::readDouble(cfg, section, "rim_image_max_tilt_deg", rim_images.max_tilt_deg);
+	util::requireInRange(cfg, section, "rim_image_gradient", rim_images.min_gradient, 0, 1e4);
+	util::requireInRange(cfg, section, "rim_image_min_fraction", rim_images.min_fraction, 0, 1);
+	util::requireInRange(cfg, section, "rim_image_max_tilt_deg", rim_images.max_tilt_deg, 0, 90);
 }
 
 void cropToObject(WireFrame& wf, const TurntableOptions& o)
@@ -195,6 +204,7 @@ WireFrame integrateViews(std::vector<WireFrame> views, const std::vector<double>
 	WireFrame all;
 	all.frame = WireFrameFrame::Object;
 	all.conics = fitRimsAcrossViews(views, o.rims);
+	completeRimsFromImages(all.conics, edges, o.rim_images);
 	keepFeaturesSeenFromNearViews(views, angles_deg, o.support, edges);
 	for (const auto& v : views)
 	{

@@ -24,6 +24,7 @@
 #include <mrolr/model/ModelEditor.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/TurntableBuilderSupport.h>
+#include <mrolr/model/TurntableRimImages.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 
@@ -66,6 +67,7 @@ struct TurntableOptions
 	MergeOptions merge;
 	ViewSupportOptions support;  ///< which single-view features are edges (buildFromTurntable)
 	RimOptions rims;             ///< circles fitted to the arcs of all views (buildFromTurntable)
+	RimImageOptions rim_images;  ///< horizontal rims' arcs completed from the views' images
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
