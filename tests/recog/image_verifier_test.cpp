@@ -1,8 +1,8 @@
 // Verification in the stereo images (ImageVerifier.h): a model drawn into a synthetic stereo pair
 // scores high at its pose and low when shifted, turned or replaced by another object; the
 // refinement moves a perturbed pose towards the drawn one; bad input is reported.
-#include "synthetic_rig.h"
 #include "recog_test_util.h"
+#include "synthetic_rig.h"
 
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
@@ -128,7 +128,7 @@ TEST(image_verifier, refinement_brings_a_perturbed_pose_back_onto_the_edges)
 	const Eigen::Isometry3d start = Eigen::Translation3d(2.5, -2, 1.5) * boxPose() *
 	                                Eigen::AngleAxisd(2 * M_PI / 180, Eigen::Vector3d::UnitX());
 	const auto samples = edgeSamplesOf(p.box, 3);
-	const Eigen::Isometry3d T = p.images.refine(samples, start, &p.occ, upAxisPoint(p.box));
+	const Eigen::Isometry3d T = p.images.refine(samples, start, &p.occ, upAxisPoints(p.box));
 	const double before = test::translationErrorMm(start, boxPose());
 	// the images fix the pose across the view well and along it weakly (at 650 mm a millimetre of
 	// depth is 0.2 px of disparity): the refined pose fits the images as well as the drawn one
@@ -207,4 +207,77 @@ TEST(image_verifier, shipped_options_are_the_defaults)
 	shipped.dump(a);
 	ImageVerificationOptions().dump(b);
 	EXPECT_EQ(a.str(), b.str());
+}
+
+namespace
+{
+/** A flat square occluder in L at depth @p z_mm covering x_L in [x0, x1], y_L in [-200, 200]:
+ * its corners (for drawing) and its outline sampled every 5 mm as an Occluder (identity pose). */
+std::vector<Eigen::Vector3d> squareCorners(double x0, double x1, double z_mm)
+{
+	return {{x0, -200, z_mm}, {x1, -200, z_mm}, {x1, 200, z_mm}, {x0, 200, z_mm}};
+}
+
+Occluder squareOccluder(const std::vector<Eigen::Vector3d>& corners)
+{
+	Occluder o;
+	for (size_t i = 0; i < corners.size(); ++i)
+	{
+		const Eigen::Vector3d a = corners[i], b = corners[(i + 1) % corners.size()];
+		const int n = static_cast<int>((b - a).norm() / 5);
+		for (int k = 0; k < n; ++k)
+			o.samples_O.push_back({a + (b - a) * k / n, (b - a).normalized(), 0});
+	}
+	return o;
+}
+
+/** The box of Pair with @p corners painted over it in the background grey (an object in front). */
+ImageVerifier occludedPair(const std::vector<Eigen::Vector3d>& corners)
+{
+	cv::Mat l = draw(boxPose(), 0), r = draw(boxPose(), -kBaseline_mm);
+	fillPolygon(l, corners, 0, 20);
+	fillPolygon(r, corners, -kBaseline_mm, 20);
+	return ImageVerifier(l, r, calibration(), ImageVerificationOptions());
+}
+}  // namespace
+
+// Mutual occlusion (MutualOcclusion.h): the samples behind a recognised object in front are left
+// out, so the part of the box that is still visible scores as it would unoccluded.
+TEST(image_verifier, samples_behind_an_occluder_are_left_out)
+{
+	const Pair p;
+	const auto corners = squareCorners(10, 400, 450);
+	const ImageVerifier hidden = occludedPair(corners);
+	const ImageScore before = hidden.score(p.box, boxPose(), &p.occ);
+	EXPECT_LT(before.score, 0.7) << "the painted square hides too little of the box";
+	EXPECT_EQ(before.occluded, 0);
+	const ImageScore after =
+	    hidden.withOccluders({squareOccluder(corners)}).score(p.box, boxPose(), &p.occ);
+	EXPECT_GT(after.occluded, 0);
+	EXPECT_GE(after.score, 0.85);
+	EXPECT_LT(after.considered, before.considered);
+	EXPECT_EQ(after.considered + after.occluded, before.considered);
+}
+
+TEST(image_verifier, an_occluder_behind_the_object_hides_nothing)
+{
+	const Pair p;
+	const auto corners = squareCorners(10, 400, 900);  // behind the box (at 650 mm)
+	const ImageScore s =
+	    p.images.withOccluders({squareOccluder(corners)}).score(p.box, boxPose(), &p.occ);
+	EXPECT_EQ(s.occluded, 0);
+	EXPECT_NEAR(s.score, p.images.score(p.box, boxPose(), &p.occ).score, 1e-12);
+}
+
+TEST(image_verifier, a_mostly_occluded_pose_scores_zero)
+{
+	const Pair p;
+	const auto corners = squareCorners(-400, 400, 450);  // covers the whole box
+	const ImageScore s = occludedPair(corners)
+	                         .withOccluders({squareOccluder(corners)})
+	                         .score(p.box, boxPose(), &p.occ);
+	EXPECT_GT(s.occluded, 0);
+	EXPECT_LT(s.considered,
+	          ImageVerificationOptions().min_unoccluded_fraction * (s.considered + s.occluded));
+	EXPECT_EQ(s.score, 0);
 }

@@ -38,17 +38,19 @@ bool better(const ImageScore& a, const ImageScore& b)
 
 Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O,
                                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
-                                        const Eigen::Vector3d& axis_O) const
+                                        const std::vector<Eigen::Vector3d>& axes_O) const
 {
 	Eigen::Isometry3d best = T_OinL;
 	ImageScore best_s = score(samples_O, T_OinL, occ);
 	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
-	for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
-	{
-		const Eigen::Isometry3d T = T_OinL * aboutAxis(axis_O, yaw);
-		const ImageScore s = score(samples_O, T, occ);
-		if (better(s, best_s)) best = T, best_s = s;
-	}
+	Eigen::Vector3d axis_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
+	for (const auto& a_O : axes_O)
+		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
+		{
+			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
+			const ImageScore s = score(samples_O, T, occ);
+			if (better(s, best_s)) best = T, best_s = s, axis_O = a_O;
+		}
 	const Eigen::Isometry3d swept = best;
 	const ImageScore swept_s = best_s;
 	double step_mm = kStartStep_mm, step_rad = kStartStep_deg * M_PI / 180;

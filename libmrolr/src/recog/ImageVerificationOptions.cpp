@@ -35,6 +35,12 @@ void ImageVerificationOptions::loadFromConfigFile(const mrpt::config::CConfigFil
 	limbs = util::readBool(cfg, section, "limbs", true);
 	util::readString(cfg, section, "revolution_visibility");
 	revolution_visibility = util::readBool(cfg, section, "revolution_visibility", true);
+	occluder_margin_mm = util::readDouble(cfg, section, "occluder_margin_mm", occluder_margin_mm);
+	util::requireInRange(cfg, section, "occluder_margin_mm", occluder_margin_mm, 0, 1000);
+	min_unoccluded_fraction =
+	    util::readDouble(cfg, section, "min_unoccluded_fraction", min_unoccluded_fraction);
+	util::requireInRange(cfg, section, "min_unoccluded_fraction", min_unoccluded_fraction, 0, 1);
+	mutual_occlusion = util::readBool(cfg, section, "mutual_occlusion", mutual_occlusion);
 }
 
 void ImageVerificationOptions::dump(std::ostream& out) const
@@ -46,7 +52,10 @@ void ImageVerificationOptions::dump(std::ostream& out) const
 	    << "\nmin_score = " << min_score << "\nprefilter_score = " << prefilter_score
 	    << "\nrefine_candidates = " << refine_candidates << "\nyaw_step_deg = " << yaw_step_deg
 	    << "\ntruncate_px = " << truncate_px << "\nlimbs = " << (limbs ? "true" : "false")
-	    << "\nrevolution_visibility = " << (revolution_visibility ? "true" : "false") << "\n";
+	    << "\nrevolution_visibility = " << (revolution_visibility ? "true" : "false")
+	    << "\noccluder_margin_mm = " << occluder_margin_mm
+	    << "\nmin_unoccluded_fraction = " << min_unoccluded_fraction
+	    << "\nmutual_occlusion = " << (mutual_occlusion ? "true" : "false") << "\n";
 }
 
 }  // namespace mrolr::recog

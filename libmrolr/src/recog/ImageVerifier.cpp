@@ -59,6 +59,18 @@ Eigen::Vector3d upAxisPoint(const std::vector<Feature>& features)
 	return features.empty() ? all : Eigen::Vector3d(all / static_cast<double>(features.size()));
 }
 
+std::vector<Eigen::Vector3d> upAxisPoints(const std::vector<Feature>& features)
+{
+	std::vector<Eigen::Vector3d> out = {upAxisPoint(features)};
+	Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+	double length = 0;
+	for (const auto& f : features) sum += f.len_mm * f.m, length += f.len_mm;
+	if (length <= 0) return out;
+	const Eigen::Vector3d c = sum / length;
+	if ((c - out.front()).head<2>().norm() > 2.0) out.push_back(c);
+	return out;
+}
+
 std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, double spacing_mm)
 {
 	std::vector<EdgeSample> out;
@@ -153,6 +165,23 @@ template <class Fn>
 void EdgeImage::forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
                               const SelfOcclusion* occ, Fn fn) const
 {
+	forEachInViewWithDepth(s_O, T_OinL, occ,
+	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
+	                           bool limb, double) { fn(px, tangent, hidden, limb); });
+}
+
+bool EdgeImage::occludedAt(const cv::Point2d& px, double depth_mm) const
+{
+	if (occluder_z_.empty()) return false;
+	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
+	return depth_mm > occluder_z_.at<float>(y, x) + occluder_margin_mm_;
+}
+
+template <class Fn>
+void EdgeImage::forEachInViewWithDepth(const std::vector<EdgeSample>& s_O,
+                                       const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
+                                       Fn fn) const
+{
 	const Eigen::Isometry3d T_OinC = T_CcvInL_.inverse() * T_OinL;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
 	std::vector<EdgeSample> limbs;
@@ -187,25 +216,38 @@ void EdgeImage::forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::I
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
 	for (size_t i = 0; i + 1 < px.size(); i += 2)
 		if (inside.contains(px[i]))
-			fn(px[i], px[i + 1] - px[i], flags[i / 2].first, flags[i / 2].second);
+			fn(px[i], px[i + 1] - px[i], flags[i / 2].first, flags[i / 2].second, pts[i].z);
 }
 
 void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
                       const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
                       double& cost_px2) const
 {
-	forEachInView(s_O, T_OinL, occ,
-	              [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool)
-	              {
-		              if (hidden) return;
-		              ++considered;
-		              supported += supports(px, tangent) ? 1 : 0;
-		              if (truncate_px <= 0) return;
-		              const double d = oriented(px, tangent)
-		                                   ? std::min(truncate_px, distanceAt(px))
-		                                   : truncate_px;
-		              cost_px2 += d * d;
-	              });
+	int occluded = 0;
+	count(s_O, T_OinL, occ, truncate_px, considered, supported, cost_px2, occluded);
+}
+
+void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
+                      double& cost_px2, int& occluded) const
+{
+	forEachInViewWithDepth(
+	    s_O, T_OinL, occ,
+	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool, double depth_mm)
+	    {
+		    if (hidden) return;
+		    if (occludedAt(px, depth_mm))
+		    {
+			    ++occluded;
+			    return;
+		    }
+		    ++considered;
+		    supported += supports(px, tangent) ? 1 : 0;
+		    if (truncate_px <= 0) return;
+		    const double d =
+		        oriented(px, tangent) ? std::min(truncate_px, distanceAt(px)) : truncate_px;
+		    cost_px2 += d * d;
+	    });
 }
 
 std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s_O,
@@ -213,9 +255,13 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
                                                 const SelfOcclusion* occ) const
 {
 	std::vector<Judged> out;
-	forEachInView(s_O, T_OinL, occ,
-	              [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool limb)
-	              { out.push_back({px, limb, hidden, !hidden && supports(px, tangent)}); });
+	forEachInViewWithDepth(s_O, T_OinL, occ,
+	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
+	                           bool limb, double depth_mm)
+	                       {
+		                       hidden = hidden || occludedAt(px, depth_mm);
+		                       out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
+	                       });
 	return out;
 }
 
@@ -243,13 +289,16 @@ ImageScore ImageVerifier::score(const std::vector<EdgeSample>& samples_O,
 	ImageScore s;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		int considered = 0, supported = 0;
-		images_[i].count(samples_O, T_OinL, occ, opts_.truncate_px, considered, supported, s.cost);
+		int considered = 0, supported = 0, occluded = 0;
+		images_[i].count(samples_O, T_OinL, occ, opts_.truncate_px, considered, supported, s.cost,
+		                 occluded);
 		s.per_image[i] = considered ? static_cast<double>(supported) / considered : 0.0;
-		s.considered += considered, s.supported += supported;
+		s.considered += considered, s.supported += supported, s.occluded += occluded;
 	}
 	s.cost = s.considered ? s.cost / s.considered : 1e300;
-	if (s.considered >= opts_.min_samples)
+	const bool enough_unoccluded =
+	    s.considered >= opts_.min_unoccluded_fraction * (s.considered + s.occluded);
+	if (s.considered >= opts_.min_samples && enough_unoccluded)
 		s.score = static_cast<double>(s.supported) / s.considered;
 	else
 		s.cost = 1e300;  // too little in view to judge: never preferred

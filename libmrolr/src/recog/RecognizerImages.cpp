@@ -17,13 +17,13 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	for (auto& h : poses) h.image = images.score(samples, h.T, occlusion_.get()).score;
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });
-	const Eigen::Vector3d axis_O = upAxisPoint(table_.features());
+	const std::vector<Eigen::Vector3d> axes_O = upAxisPoints(table_.features());
 	const double beta = detail::verifyBeta_mm(p, opts_), theta = detail::verifyTheta_rad(p, opts_);
 	for (size_t k = 0; k < poses.size() && static_cast<int>(k) < o.refine_candidates; ++k)
 	{
 		auto& h = poses[k];
 		if (h.image < 0.5 * o.min_score) break;
-		const Eigen::Isometry3d T = images.refine(samples, h.T, occlusion_.get(), axis_O);
+		const Eigen::Isometry3d T = images.refine(samples, h.T, occlusion_.get(), axes_O);
 		if (!upright(T, up_S)) continue;
 		h.T = T;
 		h.image = images.score(samples, T, occlusion_.get()).score;

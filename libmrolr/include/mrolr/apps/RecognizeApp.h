@@ -97,6 +97,18 @@ class RecognizeApp
 	recog::RecognitionResult recognizeInImages(const recog::Recognizer& rec,
 	                                           const recog::ImageVerifier& images) const;
 	int runEvaluation(std::ostream& out);
+	/** Mutual occlusion for mrolr-recognize --left/--right: each model of @p recs (same order as
+	 * results) not found is searched again with the found ones as occluders. */
+	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
+	                       const recog::ImageVerifier& images);
+	/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per model of
+	 * @p recs, scene @p s) not found is searched again with the found ones as occluders; a find
+	 * replaces its case and its entry of @p found. */
+	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
+	                       const std::vector<std::vector<double>>& symmetries, const EvalScene& s,
+	                       const recog::ImageVerifier& images,
+	                       std::vector<EvalCase>::iterator cases,
+	                       std::vector<recog::RecognitionResult>& found) const;
 	void loadEvaluationModels(const EvalSceneGenerator& gen);
 	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;

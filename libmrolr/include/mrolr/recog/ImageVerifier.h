@@ -53,6 +53,15 @@ struct ImageVerificationOptions
 	/** Judge the self-occlusion of samples on a body of revolution against its exact solid
 	 * (SelfOcclusion::hiddenOnBodies) instead of the convex polytope (SelfOcclusion::hidden). */
 	bool revolution_visibility = true;
+	/** Mutual occlusion (docs/recog.md): samples behind an object already recognised in the same
+	 * images (inside its projected outline and more than occluder_margin_mm deeper than its
+	 * centre) are neither supported nor unsupported; a pose with less than
+	 * min_unoccluded_fraction of its in-view samples left scores 0. */
+	double occluder_margin_mm = 10;
+	double min_unoccluded_fraction = 0.5;
+	/** Search again, with the found objects as occluders, for the models not found (the callers
+	 * that recognise several models in one stereo pair: mrolr-recognize, its evaluation). */
+	bool mutual_occlusion = true;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -61,6 +70,12 @@ struct ImageVerificationOptions
 /** A point of the model's up axis (z): the mean centre of its conics whose normal is within 25°
  * of z, else the centroid of its features' midpoints (model frame, mm). */
 Eigen::Vector3d upAxisPoint(const std::vector<Feature>& features);
+
+/** The vertical axes the image refinement turns a pose about (model frame, mm): upAxisPoint(), and
+ * the length-weighted centroid of all features when it is more than 2 mm (horizontally) from it.
+ * A box with a conic on one face (a letter O, a straw hole) is turned about its own centre too:
+ * about the conic alone its symmetric outline never lands on the edges at the other yaws. */
+std::vector<Eigen::Vector3d> upAxisPoints(const std::vector<Feature>& features);
 
 /** Samples every @p spacing_mm along lines and around conics (an ellipse as a circle of its mean
  * semi-axis, as SelfOcclusion does: a Feature keeps neither the major axis nor the arc's ends, so
@@ -78,7 +93,17 @@ struct ImageScore
 	int considered = 0;  ///< samples expected visible and inside an image (both images summed)
 	int supported = 0;   ///< of those, within edge_distance_px of an edge of compatible direction
 	std::array<double, 2> per_image = {0, 0};  ///< left, right score
-	double cost = 0;  ///< mean squared truncated chamfer distance of the considered samples (px²)
+	double cost = 0;   ///< mean squared truncated chamfer distance of the considered samples (px²)
+	int occluded = 0;  ///< in-view samples hidden by an Occluder (not in considered)
+};
+
+/** An object recognised in the same stereo pair, which may hide parts of another: its edge
+ * samples (model frame, mm), its self-occlusion (for its limbs; may be null) and its pose in L. */
+struct Occluder
+{
+	std::vector<EdgeSample> samples_O;
+	const SelfOcclusion* occ = nullptr;
+	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();
 };
 
 /** The edge evidence of one image: Canny edges, the distance (px) of every pixel to the nearest
@@ -99,6 +124,17 @@ class EdgeImage
 	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
 	           double& cost_px2) const;
+	/** As the previous count(), and adds to @p occluded the samples hidden by the occluders. */
+	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
+	           double& cost_px2, int& occluded) const;
+
+	/** Marks the image regions of @p occluders: the convex hull of each one's projected samples
+	 * (limbs included), at the depth of its samples' centroid along this camera's axis; a sample
+	 * inside a region and more than @p margin_mm deeper is occluded. Replaces earlier ones. */
+	void setOccluders(const std::vector<Occluder>& occluders, double margin_mm);
+	/** Depth (mm, this camera) of the occluder at each pixel; +inf where none (empty: none). */
+	const cv::Mat& occluderDepth() const { return occluder_z_; }
 
 	/** How one sample fared: its pixel, and whether it was hidden, considered, supported. */
 	struct Judged
@@ -121,6 +157,12 @@ class EdgeImage
 	template <class Fn>
 	void forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	                   const SelfOcclusion* occ, Fn fn) const;
+	/** As forEachInView, and @p fn gets a fifth argument: the sample's depth in this camera (mm).
+	 */
+	template <class Fn>
+	void forEachInViewWithDepth(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
+	                            const SelfOcclusion* occ, Fn fn) const;
+	bool occludedAt(const cv::Point2d& px, double depth_mm) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	double distanceAt(const cv::Point2d& px) const;  ///< bilinear (px)
@@ -135,6 +177,8 @@ class EdgeImage
 	cv::Mat dist_;                     ///< CV_32F, px to the nearest edge pixel
 	cv::Mat labels_;                   ///< CV_32S, label of the nearest edge pixel
 	std::vector<cv::Point2f> normal_;  ///< unit gradient at each label's edge pixel
+	cv::Mat occluder_z_;               ///< CV_32F, occluders' depth (mm); empty when none
+	double occluder_margin_mm_ = 0;
 };
 
 /** Both images of a stereo pair: scores hypotheses by their edge support in the left and right
@@ -158,11 +202,15 @@ class ImageVerifier
 	                 const SelfOcclusion* occ) const;
 
 	/** Refines @p T_OinL in the images (options().yaw_step_deg sweep about the model's z axis
-	 * through @p axis_O, then the pattern search); returns the refined pose if its score is not
-	 * lower, else @p T_OinL. */
+	 * through each of @p axes_O, then the pattern search); returns the refined pose if its score
+	 * is not lower, else @p T_OinL. */
 	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
 	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
-	                         const Eigen::Vector3d& axis_O) const;
+	                         const std::vector<Eigen::Vector3d>& axes_O) const;
+
+	/** A copy whose images know the regions hidden by @p occluders (EdgeImage::setOccluders,
+	 * options().occluder_margin_mm); scores then leave the occluded samples out. */
+	ImageVerifier withOccluders(const std::vector<Occluder>& occluders) const;
 
 	const ImageVerificationOptions& options() const { return opts_; }
 	const EdgeImage& image(int i) const { return images_.at(i); }

@@ -46,6 +46,9 @@ struct RecognitionResult
 	/** The answer's pose came from a single-feature hypothesis on the support plane
 	 * (PlaneHypotheses.h; level is then options().levels.size() + 1), not from a clique. */
 	bool from_plane = false;
+	/** Found in the second search of mutual occlusion (MutualOcclusion.h): this many recognised
+	 * objects' regions were left out of the image score. 0: found without them. */
+	int occluders = 0;
 };
 
 class Recognizer

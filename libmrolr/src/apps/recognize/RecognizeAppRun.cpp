@@ -9,6 +9,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
 
+#include <mrolr/recog/MutualOcclusion.h>
 #include <mrolr/recog/SyntheticObjects.h>
 #include <mrolr/recog/SyntheticScene.h>
 
@@ -61,9 +62,9 @@ void RecognizeApp::loadScenes()
 	// with --support-plane the up direction is known: rims seen edge-on become horizontal circles
 	std::optional<Eigen::Vector3d> up_L;
 	if (support_plane) up_L = support_plane->n_S;
-	const auto s = stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
-	                                        readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so,
-	                                        up_L);
+	const auto s =
+	    stereo::reconstructScene(readImage(left_png, cv::IMREAD_GRAYSCALE),
+	                             readImage(right_png, cv::IMREAD_GRAYSCALE), calib, so, up_L);
 	scenes.push_back(model::sceneToWireFrame(s));
 	scenes.back().name = "stereo";
 }
@@ -90,9 +91,11 @@ int RecognizeApp::run(std::ostream& out)
 		    readImage(left_png, cv::IMREAD_GRAYSCALE), readImage(right_png, cv::IMREAD_GRAYSCALE),
 		    stereo::loadStereoCalibration(calib_path), image_options);
 	}
-	for (const auto& m : models)
-		results.push_back(images ? recognizeInImages(recog::Recognizer(m, options), *images)
-		                         : recog::Recognizer(m, options).searchSweep(scenes));
+	std::vector<recog::Recognizer> recs;
+	for (const auto& m : models) recs.emplace_back(m, options);
+	for (const auto& rec : recs)
+		results.push_back(images ? recognizeInImages(rec, *images) : rec.searchSweep(scenes));
+	if (images && image_options.mutual_occlusion) searchBehindFound(recs, *images);
 	json ? printJson(out) : printText(out);
 	if (!overlay_png.empty())
 	{
@@ -114,6 +117,29 @@ recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer
 	recog::RecognitionResult r = rec.recognize(scenes.front(), up, &images, plane);
 	if (r.found) r.scene_index = 0;
 	return r;
+}
+
+void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
+                                     const recog::ImageVerifier& images)
+{
+	std::vector<const recog::Recognizer*> ptrs;
+	for (const auto& r : recs) ptrs.push_back(&r);
+	const std::vector<recog::RecognitionResult> first = results;
+	for (size_t i = 0; i < recs.size(); ++i)
+	{
+		if (first[i].found) continue;
+		const auto occluders = recog::occludersOf(ptrs, first, i, image_options.sample_spacing_mm);
+		if (occluders.empty()) continue;
+		recog::RecognitionResult r = recognizeInImages(recs[i], images.withOccluders(occluders));
+		r.ms += first[i].ms;
+		if (!r.found)
+		{
+			results[i].ms = r.ms;  // the second search's time counts
+			continue;
+		}
+		r.occluders = static_cast<int>(occluders.size());
+		results[i] = r;
+	}
 }
 
 void RecognizeApp::loadRecognitionOptions()
@@ -169,7 +195,9 @@ void RecognizeApp::printText(std::ostream& out) const
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-		    << (r.from_plane ? " (support-plane hypothesis)" : "") << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
+		    << (r.from_plane ? " (support-plane hypothesis)" : "")
+		    << (r.occluders ? " (behind " + std::to_string(r.occluders) + " found)" : std::string())
+		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
 		    << r.matched << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());
 		out << "  roll pitch yaw (deg): " << rpy.transpose()

@@ -87,7 +87,8 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"spread_rot_deg", r.spread_rot_deg},
 	        {"spread_trans_mm", r.spread_trans_mm},
 	        {"image_score", r.image_score},
-	        {"from_plane", r.from_plane}};
+	        {"from_plane", r.from_plane},
+	        {"occluders", r.occluders}};
 }
 
 std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf)
