@@ -48,3 +48,33 @@ TEST(mutual_occlusion, mismatched_sizes_are_reported)
 	EXPECT_THROW(occludersOf({&a}, std::vector<RecognitionResult>(2), 0, 3.0),
 	             std::invalid_argument);
 }
+
+// A solid contains the points inside it, not those beside it.
+TEST(mutual_occlusion, a_solid_contains_its_inside_only)
+{
+	const auto objects = makeLabObjects();
+	const Recognizer a(objects[0], shippedOptions());
+	const Eigen::Vector3d c = centroidOf(a.edgeSamples(3.0));
+	EXPECT_TRUE(a.selfOcclusion().contains(c));
+	EXPECT_FALSE(a.selfOcclusion().contains(c + Eigen::Vector3d(500, 0, 0)));
+}
+
+// A model found behind others must stand beside them: placed in a found object it interpenetrates,
+// placed 300 mm to the side it does not.
+TEST(mutual_occlusion, a_pose_inside_a_found_object_interpenetrates)
+{
+	const auto objects = makeLabObjects();
+	const RecognitionOptions o = shippedOptions();
+	const Recognizer a(objects[0], o), b(objects[1], o);
+	std::vector<RecognitionResult> r(2);
+	r[0].found = true,
+	r[0].T_OinS = Eigen::Translation3d(0, 0, 700) * Eigen::Isometry3d::Identity();
+	const auto occ = occludersOf({&a, &b}, r, 1, 3.0);
+	ASSERT_EQ(occ.size(), 1u);
+	const Eigen::Isometry3d inside =
+	    r[0].T_OinS *
+	    Eigen::Translation3d(centroidOf(occ[0].samples_O) - centroidOf(b.edgeSamples(3.0)));
+	EXPECT_TRUE(interpenetrates(b, inside, occ));
+	EXPECT_FALSE(interpenetrates(b, Eigen::Translation3d(300, 0, 0) * inside, occ));
+	EXPECT_FALSE(interpenetrates(b, inside, {}));
+}

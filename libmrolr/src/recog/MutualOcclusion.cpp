@@ -22,4 +22,24 @@ std::vector<Occluder> occludersOf(const std::vector<const Recognizer*>& recs,
 	return out;
 }
 
+Eigen::Vector3d centroidOf(const std::vector<EdgeSample>& samples_O)
+{
+	Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+	for (const auto& s : samples_O) sum += s.p_O;
+	return samples_O.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(samples_O.size()));
+}
+
+bool interpenetrates(const Recognizer& rec, const Eigen::Isometry3d& T_OinL,
+                     const std::vector<Occluder>& occluders)
+{
+	const Eigen::Vector3d c_L = T_OinL * centroidOf(rec.edgeSamples(3.0));
+	for (const auto& o : occluders)
+	{
+		if (o.occ && o.occ->contains(o.T_OinL.inverse() * c_L)) return true;
+		const Eigen::Vector3d oc_L = o.T_OinL * centroidOf(o.samples_O);
+		if (rec.selfOcclusion().contains(T_OinL.inverse() * oc_L)) return true;
+	}
+	return false;
+}
+
 }  // namespace mrolr::recog

@@ -83,6 +83,13 @@ bool SelfOcclusion::hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_
 	return crossesPolytope(offsets_, c_O, p_O);
 }
 
+bool SelfOcclusion::contains(const Eigen::Vector3d& p_O) const
+{
+	for (size_t i = 0; i < normals_.size(); ++i)
+		if (normals_[i].dot(p_O) > offsets_[i]) return false;
+	return !normals_.empty();
+}
+
 bool SelfOcclusion::hiddenLimb(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
 {
 	return !rest_offsets_.empty() && crossesPolytope(rest_offsets_, c_O, p_O);

@@ -34,7 +34,7 @@ struct ImageVerificationOptions
 	double orientation_tol_deg = 20;  ///< ... whose edge direction is within this of its own
 	double sample_spacing_mm = 3;     ///< model edges sampled every this many mm
 	int min_samples = 30;             ///< fewer expected-visible samples in view: score 0
-	double min_score = 0.7;           ///< image score needed to accept a hypothesis, [0, 1]
+	double min_score = 0.65;          ///< image score needed to accept a hypothesis, [0, 1]
 	/** 3D verification score (expected-visible when the up direction is known) a hypothesis
 	 * needs before the images are asked: with images the 3D score is only a pre-filter. */
 	double prefilter_score = 0.0;

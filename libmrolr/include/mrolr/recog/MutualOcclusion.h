@@ -18,4 +18,14 @@ std::vector<Occluder> occludersOf(const std::vector<const Recognizer*>& recs,
                                   const std::vector<RecognitionResult>& results, size_t skip,
                                   double spacing_mm);
 
+/** Centroid of edge samples (model frame, mm). */
+Eigen::Vector3d centroidOf(const std::vector<EdgeSample>& samples_O);
+
+/** True when @p rec's model at @p T_OinL and one of @p occluders occupy the same space: either's
+ * sample centroid inside the other's solid (SelfOcclusion::contains). A model found behind others
+ * must stand beside them, not in them: fitted into a found can's outline, an absent box's front
+ * matches the can's edges while its back is "hidden" by the can. */
+bool interpenetrates(const Recognizer& rec, const Eigen::Isometry3d& T_OinL,
+                     const std::vector<Occluder>& occluders);
+
 }  // namespace mrolr::recog

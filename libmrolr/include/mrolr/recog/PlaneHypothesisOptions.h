@@ -32,7 +32,7 @@ struct PlaneHypothesisOptions
 	double prerank_spacing_mm = 9;  ///< model edge sample spacing of the quick image score
 	/** Image score a plane hypothesis needs to be accepted; at least the image verification's
 	 * min_score is needed in any case. */
-	double min_image_score = 0.7;
+	double min_image_score = 0.65;
 	/** After refinement in the images the model's base must still be within this of the plane
 	 * (mm); the pattern search is free in 6 parameters. */
 	double max_base_offset_mm = 15;

@@ -32,6 +32,9 @@ class SelfOcclusion
 	/** True when the segment from @p c_O to @p p_O crosses the shrunk polytope. */
 	bool hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const;
 
+	/** True when @p p_O is inside the shrunk polytope (inside the object's solid). */
+	bool contains(const Eigen::Vector3d& p_O) const;
+
 	/** As hidden(), but a point on the surface of one of the model's bodies of revolution (within
 	 * the margin) is judged against those bodies' solids exactly (crossesSolid, shrunk by the
 	 * margin): the polytope, convex, fills a bottle's neck and hides the ring where neck and

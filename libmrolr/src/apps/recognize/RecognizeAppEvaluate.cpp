@@ -192,6 +192,11 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 			before.ms = before.result.ms = c.ms;  // the second search's time counts
 			continue;
 		}
+		if (recog::interpenetrates(recs[i], c.result.T_OinS, occluders))
+		{
+			before.ms = before.result.ms = c.ms;
+			continue;
+		}
 		c.result.occluders = static_cast<int>(occluders.size());
 		before = c;
 		found[i] = c.result;

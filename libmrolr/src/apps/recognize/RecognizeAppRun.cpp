@@ -132,7 +132,7 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 		if (occluders.empty()) continue;
 		recog::RecognitionResult r = recognizeInImages(recs[i], images.withOccluders(occluders));
 		r.ms += first[i].ms;
-		if (!r.found)
+		if (!r.found || recog::interpenetrates(recs[i], r.T_OinS, occluders))
 		{
 			results[i].ms = r.ms;  // the second search's time counts
 			continue;
