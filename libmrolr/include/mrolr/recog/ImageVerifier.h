@@ -98,7 +98,8 @@ struct ImageScore
 };
 
 /** An object recognised in the same stereo pair, which may hide parts of another: its edge
- * samples (model frame, mm), its self-occlusion (for its limbs; may be null) and its pose in L. */
+ * samples (model frame, mm), its solid (SelfOcclusion, for interpenetrates(); may be null) and
+ * its pose in L. */
 struct Occluder
 {
 	std::vector<EdgeSample> samples_O;
@@ -129,8 +130,9 @@ class EdgeImage
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
 	           double& cost_px2, int& occluded) const;
 
-	/** Marks the image regions of @p occluders: the convex hull of each one's projected samples
-	 * (limbs included), at the depth of its samples' centroid along this camera's axis; a sample
+	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
+	 * without distortion (those outside the image too; the hull of a cylinder's rims is its
+	 * silhouette), at the depth of its samples' centroid along this camera's axis; a sample
 	 * inside a region and more than @p margin_mm deeper is occluded. Replaces earlier ones. */
 	void setOccluders(const std::vector<Occluder>& occluders, double margin_mm);
 	/** Depth (mm, this camera) of the occluder at each pixel; +inf where none (empty: none). */
