@@ -96,6 +96,9 @@ TEST(recognize_app, bad_arguments_and_inputs)
 	           out),
 	    2);
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", "m.wf", "--scene", "s.wf", "--bogus"}, out), 2);
+	EXPECT_EQ(
+	    runApp({"mrolr-recognize", "--model", "m.wf", "--scene", "s.wf", "--judgement", "j"}, out),
+	    2);  // --judgement draws the image verification: it needs the stereo pair
 	EXPECT_EQ(runApp({"mrolr-recognize", "--model", d + "/missing.wf", "--scene",
 	                  d + "/scenes/table_0.wf"},
 	                 out),

@@ -199,3 +199,43 @@ TEST(rendered_eval, bad_evaluation_keys_name_the_key)
 	cfg2.write("evaluation", "max_view_distance_m", "0.5");  // below min_view_distance_m
 	EXPECT_THROW(o.loadFromConfigFile(cfg2, "evaluation"), mrolr::util::ConfigError);
 }
+
+// mrolr-recognize --judgement draws, for a model found in a rendered pair, its judged samples on
+// the left image: the supported ones green.
+TEST(rendered_eval, judgement_draws_the_supported_samples)
+{
+	const auto dir = (fs::temp_directory_path() / "mrolr_rendered_eval_judgement_test").string();
+	fs::remove_all(dir);
+	RecognizeApp eval;
+	eval.initialize({"mrolr-recognize", "--evaluate", dir, "--eval-scenes", "1"});
+	std::ostringstream eval_out;
+	ASSERT_EQ(eval.run(eval_out), 0);
+	const EvalCase* found = nullptr;
+	for (const auto& c : eval.eval_cases)
+		if (c.correct) found = &c;
+	ASSERT_NE(found, nullptr) << "nothing recognised in scene 0";
+	const auto truth = nlohmann::json::parse(std::ifstream(dir + "/scene_00/truth.json"));
+	std::ostringstream plane;
+	for (const double v : truth["support_plane_L"]) plane << (plane.tellp() ? "," : " ") << v;
+	const std::string s = dir + "/scene_00/", prefix = dir + "/judged";
+	RecognizeApp app;
+	app.initialize({"mrolr-recognize", "--model",
+	                mrolr::util::requireProjectFile("datasets/objects/" + found->model + ".wf"),
+	                "--left", s + "left.png", "--right", s + "right.png", "--calib",
+	                s + "calib.ini", "--support-plane", plane.str(), "--judgement", prefix});
+	std::ostringstream out;
+	ASSERT_EQ(app.run(out), 0);
+	ASSERT_TRUE(app.results.at(0).found) << out.str();
+	const cv::Mat img = cv::imread(prefix + "_" + found->model + ".png", cv::IMREAD_COLOR);
+	ASSERT_EQ(img.cols, 640);
+	ASSERT_EQ(img.rows, 480);
+	int green = 0;
+	for (int y = 0; y < img.rows; ++y)
+		for (int x = 0; x < img.cols; ++x)
+		{
+			const cv::Vec3b p = img.at<cv::Vec3b>(y, x);
+			green += p[1] > 150 && p[0] < 100 && p[2] < 100 ? 1 : 0;
+		}
+	EXPECT_GT(green, 30);
+	fs::remove_all(dir);
+}

@@ -59,11 +59,12 @@ class RecognizeApp
 	std::string config_path = "config/recognition.ini";
 	std::string scene_config_path = "config/model.ini";
 	std::string overlay_png, scene3d_path;
-	std::string demo_dir;       ///< --make-demo
-	std::string evaluate_dir;   ///< --evaluate
-	bool truth_models = false;  ///< --truth-models
-	int eval_scenes = 0;        ///< --eval-scenes (0: [evaluation] scenes)
-	long eval_seed = -1;        ///< --eval-seed (-1: [evaluation] seed)
+	std::string judgement_prefix;  ///< --judgement: PREFIX_<model>.png per found model
+	std::string demo_dir;          ///< --make-demo
+	std::string evaluate_dir;      ///< --evaluate
+	bool truth_models = false;     ///< --truth-models
+	int eval_scenes = 0;           ///< --eval-scenes (0: [evaluation] scenes)
+	long eval_seed = -1;           ///< --eval-seed (-1: [evaluation] seed)
 	/** Verify hypotheses in the stereo images when there are images (false: --no-image-verify). */
 	bool image_verify = true;
 	/** --support-plane nx,ny,nz,d_mm (--left/--right form): the table top in the scene frame L,
@@ -101,6 +102,9 @@ class RecognizeApp
 	 * results) not found is searched again with the found ones as occluders. */
 	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
 	                       const recog::ImageVerifier& images);
+	/** --judgement: the left image with the judged samples of each found model of @p recs. */
+	void writeJudgements(const std::vector<recog::Recognizer>& recs,
+	                     const recog::ImageVerifier& images) const;
 	/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per model of
 	 * @p recs, scene @p s) not found is searched again with the found ones as occluders; a find
 	 * replaces its case and its entry of @p found. */

@@ -31,6 +31,10 @@ void requireInputs(const RecognizeApp& a)
 		throw util::UsageError("building the scene from stereo needs --left, --right and --calib");
 	if (a.support_plane && a.right_png.empty())
 		throw util::UsageError("--support-plane is for a stereo scene (--left/--right/--calib)");
+	if (!a.judgement_prefix.empty() && (a.right_png.empty() || !a.image_verify))
+		throw util::UsageError(
+		    "--judgement draws the image verification: it needs --left/--right/--calib and no "
+		    "--no-image-verify");
 	if (!a.overlay_png.empty() && a.calib_path.empty())
 		throw util::UsageError("--overlay projects with the left camera: it needs --calib");
 }
@@ -54,6 +58,11 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	         "INI", cmd);
 	Str overlay("", "overlay", "PNG of the models drawn on the left image", false, "", "OUT.png",
 	            cmd);
+	Str judgement("", "judgement",
+	              "--left/--right with image verification: for each found model, "
+	              "PREFIX_<model>.png of the left image with its judged edge samples (supported "
+	              "green, unsupported red, hidden blue; crosses: silhouette lines)",
+	              false, "", "PREFIX", cmd);
 	Str s3d("", "scene3d", "MRPT .3Dscene of scene and recognised models", false, "", "OUT.3Dscene",
 	        cmd);
 	TCLAP::SwitchArg js("", "json", "print one JSON object", cmd);
@@ -91,6 +100,7 @@ void RecognizeApp::initialize(const std::vector<std::string>& args)
 	left_png = left.getValue(), right_png = right.getValue(), calib_path = calib.getValue();
 	config_path = cfg.getValue(), scene_config_path = scfg.getValue();
 	overlay_png = overlay.getValue(), scene3d_path = s3d.getValue(), json = js.getValue();
+	judgement_prefix = judgement.getValue();
 	demo_dir = demo.getValue();
 	evaluate_dir = evaluate.getValue(), truth_models = truth.getValue();
 	eval_scenes = nscenes.getValue(), eval_seed = seed.getValue();

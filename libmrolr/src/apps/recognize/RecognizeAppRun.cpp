@@ -96,6 +96,7 @@ int RecognizeApp::run(std::ostream& out)
 	for (const auto& rec : recs)
 		results.push_back(images ? recognizeInImages(rec, *images) : rec.searchSweep(scenes));
 	if (images && image_options.mutual_occlusion) searchBehindFound(recs, *images);
+	if (images && !judgement_prefix.empty()) writeJudgements(recs, *images);
 	json ? printJson(out) : printText(out);
 	if (!overlay_png.empty())
 	{
@@ -139,6 +140,22 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 		}
 		r.occluders = static_cast<int>(occluders.size());
 		results[i] = r;
+	}
+}
+
+void RecognizeApp::writeJudgements(const std::vector<recog::Recognizer>& recs,
+                                   const recog::ImageVerifier& images) const
+{
+	const cv::Mat grey = readImage(left_png, cv::IMREAD_GRAYSCALE);
+	for (size_t i = 0; i < recs.size(); ++i)
+	{
+		if (!results[i].found) continue;
+		const std::string png = judgement_prefix + "_" + results[i].model + ".png";
+		const cv::Mat img = recog::drawJudgement(
+		    grey, images.image(0), recs[i].edgeSamples(image_options.sample_spacing_mm),
+		    results[i].T_OinS, &recs[i].selfOcclusion());
+		if (!cv::imwrite(png, img))
+			throw std::runtime_error("cannot write judgement '" + png + "'");
 	}
 }
 
