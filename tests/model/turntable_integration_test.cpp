@@ -4,6 +4,7 @@
 #include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/TurntableBuilderSupport.h>
+#include <mrolr/model/TurntableRimChords.h>
 #include <mrolr/model/TurntableRimImages.h>
 #include <mrolr/model/WireFrameSampling.h>
 
@@ -298,6 +299,84 @@ TEST(TurntableOptions, RimImageKeysAreReadAndChecked)
 	catch (const std::exception& e)
 	{
 		EXPECT_NE(std::string(e.what()).find("rim_image_min_fraction"), std::string::npos)
+		    << e.what();
+	}
+}
+
+TEST(TurntableRims, HorizontalRimFromShortChordsOfThreeViewsIsFoundInTheImages)
+{
+	// a rim r 14 at z 190 that each view reconstructs only as a short straight chord across its
+	// front (cut short on one side), and whose images show the circle's front half as an edge
+	const Conic3 truth = circleArc({0, 0, 190}, 14, 0, 2 * M_PI);
+	std::vector<WireFrame> views;
+	std::vector<ViewEdges> edges;
+	for (int k = 0; k < 4; ++k)
+	{
+		const double az = k * M_PI / 2;  // camera azimuth in O
+		const Eigen::Vector2d d(std::cos(az), std::sin(az)), e(-d.y(), d.x());
+		edges.push_back(cameraAt({600 * d.x(), 600 * d.y(), 450}, {0, 0, 190}));
+		drawArc(edges.back(), truth, az - M_PI / 2, az + M_PI / 2);
+		WireFrame v;
+		v.frame = WireFrameFrame::Object;
+		const Eigen::Vector2d front = 5 * d;
+		v.lines.push_back({0, {front.x() - 10 * e.x(), front.y() - 10 * e.y(), 189},
+		                   {front.x() + 5 * e.x(), front.y() + 5 * e.y(), 189.3}});
+		v.lines.push_back({0, {30, 0, 20}, {30, 0, 120}});  // an unrelated steep edge stays
+		views.push_back(v);
+	}
+	RimImageOptions io;
+	io.min_gradient = 8;
+	RimChordOptions o;
+	auto found = views;
+	const auto rims = rimsFromChords(found, edges, {}, o, io);
+	ASSERT_EQ(rims.size(), 1u);
+	EXPECT_NEAR(rims[0].a, 14, 1.0);
+	EXPECT_NEAR(rims[0].centre.z(), 190, 1.0);
+	EXPECT_LT(rims[0].centre.head<2>().norm(), 1.5);
+	EXPECT_GE(rims[0].t2 - rims[0].t1, M_PI);
+
+	// a horizontal rim already found at that height, chords of two views only, no image edges, or
+	// the key at 0: no rim
+	auto again = views;
+	EXPECT_TRUE(rimsFromChords(again, edges, {truth}, o, io).empty());
+	auto two = std::vector<WireFrame>(views.begin(), views.begin() + 2);
+	auto two_edges = std::vector<ViewEdges>(edges.begin(), edges.begin() + 2);
+	EXPECT_TRUE(rimsFromChords(two, two_edges, {}, o, io).empty());
+	std::vector<ViewEdges> blank;
+	for (const auto& v : edges)
+	{
+		ViewEdges b = v;
+		b.gradient = cv::Mat::zeros(v.gradient.size(), CV_32F);
+		blank.push_back(b);
+	}
+	auto dark = views;
+	EXPECT_TRUE(rimsFromChords(dark, blank, {}, o, io).empty());
+	RimChordOptions off;
+	off.min_views = 0;
+	EXPECT_TRUE(rimsFromChords(views, edges, {}, off, io).empty());
+	// a box's chords (the span across the view changes with the view) give no rim
+	auto box = views;
+	box[1].lines[0].p2 += 12 * (box[1].lines[0].p2 - box[1].lines[0].p1).normalized();
+	EXPECT_TRUE(rimsFromChords(box, edges, {}, o, io).empty());
+}
+
+TEST(TurntableOptions, RimChordKeysAreReadAndChecked)
+{
+	mrpt::config::CConfigFileMemory cfg(
+	    "[turntable]\nrim_chord_min_views = 4\nrim_chord_min_image_arc_deg = 150\n");
+	TurntableOptions t;
+	t.loadFromConfigFile(cfg, "turntable");
+	EXPECT_EQ(t.rim_chords.min_views, 4);
+	EXPECT_EQ(t.rim_chords.min_image_arc_deg, 150);
+	mrpt::config::CConfigFileMemory bad("[turntable]\nrim_chord_max_radius_ratio = 0.5\n");
+	try
+	{
+		TurntableOptions().loadFromConfigFile(bad, "turntable");
+		ADD_FAILURE() << "rim_chord_max_radius_ratio = 0.5 accepted";
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("rim_chord_max_radius_ratio"), std::string::npos)
 		    << e.what();
 	}
 }

@@ -101,6 +101,9 @@ void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 	util::requireInRange(cfg, section, "rim_image_gradient", rim_images.min_gradient, 0, 1e4);
 	util::requireInRange(cfg, section, "rim_image_min_fraction", rim_images.min_fraction, 0, 1);
 	util::requireInRange(cfg, section, "rim_image_max_tilt_deg", rim_images.max_tilt_deg, 0, 90);
+	rim_chords.min_radius_mm = rims.min_radius_mm;
+	rim_chords.max_radius_mm = rims.max_radius_mm;
+	rim_chords.loadFromConfigFile(cfg, section);
 }
 
 void cropToObject(WireFrame& wf, const TurntableOptions& o)
@@ -205,6 +208,8 @@ WireFrame integrateViews(std::vector<WireFrame> views, const std::vector<double>
 	all.frame = WireFrameFrame::Object;
 	all.conics = fitRimsAcrossViews(views, o.rims);
 	completeRimsFromImages(all.conics, edges, o.rim_images);
+	const auto chord_rims = rimsFromChords(views, edges, all.conics, o.rim_chords, o.rim_images);
+	all.conics.insert(all.conics.end(), chord_rims.begin(), chord_rims.end());
 	keepFeaturesSeenFromNearViews(views, angles_deg, o.support, edges);
 	for (const auto& v : views)
 	{

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <opencv2/calib3d.hpp>
 
 namespace mrolr::model
 {
@@ -80,6 +81,46 @@ void setArc(Conic3& c, const std::array<bool, kBins>& bins)
 	}
 }
 }  // namespace
+
+double meanFacingGradient(const Conic3& c, const std::vector<ViewEdges>& edges,
+                          const RimImageOptions& o)
+{
+	double sum = 0;
+	size_t n = 0;
+	for (int k = 0; k < kBins; ++k)
+	{
+		const auto s = binSamples(c, k);
+		for (const auto& v : edges)
+			if (facedBy(c, s, v, o.min_facing_cos))
+				for (const auto& q : s)
+				{
+					const Eigen::Vector3d p = v.T_OinL * q.p;
+					if (p.z() <= 1) continue;
+					std::vector<cv::Point2d> px;
+					cv::projectPoints(std::vector<cv::Point3d>{{-p.x(), -p.y(), p.z()}},
+					                  cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), v.K, v.D, px);
+					const cv::Point i(static_cast<int>(std::lround(px[0].x)),
+					                  static_cast<int>(std::lround(px[0].y)));
+					if (i.x < 0 || i.y < 0 || i.x >= v.gradient.cols || i.y >= v.gradient.rows)
+						continue;
+					sum += v.gradient.at<float>(i), ++n;
+				}
+	}
+	return n ? sum / static_cast<double>(n) : 0.0;
+}
+
+int arcFromImages(Conic3& c, const std::vector<ViewEdges>& edges, const RimImageOptions& o)
+{
+	std::array<bool, kBins> bins{};
+	int n = 0;
+	for (int k = 0; k < kBins; ++k)
+		if (shownByImages(c, k, edges, o)) bins[k] = true, ++n;
+	if (n == 0)
+		c.t1 = c.t2 = 0;
+	else
+		setArc(c, bins);
+	return n;
+}
 
 int completeRimsFromImages(std::vector<Conic3>& rims, const std::vector<ViewEdges>& edges,
                            const RimImageOptions& o)

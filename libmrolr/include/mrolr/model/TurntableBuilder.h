@@ -24,6 +24,7 @@
 #include <mrolr/model/ModelEditor.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/TurntableBuilderSupport.h>
+#include <mrolr/model/TurntableRimChords.h>
 #include <mrolr/model/TurntableRimImages.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/stereo/SceneReconstruction.h>
@@ -68,6 +69,7 @@ struct TurntableOptions
 	ViewSupportOptions support;  ///< which single-view features are edges (buildFromTurntable)
 	RimOptions rims;             ///< circles fitted to the arcs of all views (buildFromTurntable)
 	RimImageOptions rim_images;  ///< horizontal rims' arcs completed from the views' images
+	RimChordOptions rim_chords;  ///< horizontal rims from straight chords across views
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };

@@ -31,4 +31,14 @@ struct RimImageOptions
 int completeRimsFromImages(std::vector<Conic3>& rims, const std::vector<ViewEdges>& edges,
                            const RimImageOptions& o);
 
+/** Number of the 36 10° pieces of circle @p c (whole circle, its arc ignored) that some view of
+ * @p edges facing the piece shows as image edges; sets @p c's arc to the circle minus its largest
+ * run of pieces not shown (an empty arc t1 = t2 when none is shown). */
+int arcFromImages(Conic3& c, const std::vector<ViewEdges>& edges, const RimImageOptions& o);
+
+/** Mean image gradient (grey levels/px, at the projected pixel) along the whole circle @p c, over
+ * the views of @p edges facing each 10° piece: how sharply the images show the circle. */
+double meanFacingGradient(const Conic3& c, const std::vector<ViewEdges>& edges,
+                          const RimImageOptions& o);
+
 }  // namespace mrolr::model
