@@ -1,3 +1,4 @@
+#include <mrolr/model/ArcOfBins.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/util/Config.h>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <random>
 #include <set>
+#include <tuple>
 
 namespace mrolr::model
 {
@@ -179,20 +181,8 @@ Conic3 arcOf(const Circle& k, const std::vector<PoolSample>& pool, const std::ve
 	for (size_t i : in)
 		bins[std::min(kBins - 1,
 		              static_cast<int>((k.angleOf(pool[i].p) + M_PI) / (2 * M_PI) * kBins))] = true;
-	int gap_start = 0, gap_len = 0;
-	for (int s = 0; s < kBins; ++s)
-	{
-		int len = 0;
-		while (len < kBins && !bins[(s + len) % kBins]) ++len;
-		if (len > gap_len) gap_len = len, gap_start = s;
-	}
-	const double bin = 2 * M_PI / kBins;
 	Conic3 c{0, k.c, k.n, k.u, k.r, k.r, 0, 2 * M_PI};
-	if (gap_len > 0)
-	{
-		c.t1 = -M_PI + (gap_start + gap_len) * bin;
-		c.t2 = c.t1 + (kBins - gap_len) * bin;
-	}
+	std::tie(c.t1, c.t2) = arcOfBins(bins, -M_PI);
 	return c;
 }
 

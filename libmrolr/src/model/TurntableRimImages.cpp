@@ -1,8 +1,10 @@
+#include <mrolr/model/ArcOfBins.h>
 #include <mrolr/model/TurntableRimImages.h>
 
 #include <array>
 #include <cmath>
 #include <opencv2/calib3d.hpp>
+#include <tuple>
 
 namespace mrolr::model
 {
@@ -65,20 +67,7 @@ bool shownByImages(const Conic3& c, int k, const std::vector<ViewEdges>& edges,
 /** The circle minus its largest run of uncovered bins (as the rims' arcOf). */
 void setArc(Conic3& c, const std::array<bool, kBins>& bins)
 {
-	int gap_start = 0, gap_len = 0;
-	for (int s = 0; s < kBins; ++s)
-	{
-		int len = 0;
-		while (len < kBins && !bins[(s + len) % kBins]) ++len;
-		if (len > gap_len) gap_len = len, gap_start = s;
-	}
-	const double bin = 2 * M_PI / kBins;
-	c.t1 = 0, c.t2 = 2 * M_PI;
-	if (gap_len > 0)
-	{
-		c.t1 = (gap_start + gap_len) * bin;
-		c.t2 = c.t1 + (kBins - gap_len) * bin;
-	}
+	std::tie(c.t1, c.t2) = arcOfBins(bins, 0.0);
 }
 }  // namespace
 
