@@ -187,14 +187,9 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 		EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
 		c.ms += before.ms;
 		c.result.ms = c.ms;
-		if (!c.found)
+		if (!c.found || recog::interpenetrates(recs[i], c.result.T_OinS, occluders))
 		{
 			before.ms = before.result.ms = c.ms;  // the second search's time counts
-			continue;
-		}
-		if (recog::interpenetrates(recs[i], c.result.T_OinS, occluders))
-		{
-			before.ms = before.result.ms = c.ms;
 			continue;
 		}
 		c.result.occluders = static_cast<int>(occluders.size());
