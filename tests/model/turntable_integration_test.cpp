@@ -282,6 +282,25 @@ TEST(TurntableRims, HorizontalRimIsCompletedWhereAViewFacingItShowsAnEdge)
 	EXPECT_EQ(completeRimsFromImages(vertical, edges, o), 0);
 }
 
+namespace
+{
+/** [turntable] with the single line @p line is rejected by TurntableOptions, naming its key. */
+void expectTurntableKeyRejected(const std::string& line)
+{
+	mrpt::config::CConfigFileMemory bad("[turntable]\n" + line + "\n");
+	const std::string key = line.substr(0, line.find(' '));
+	try
+	{
+		TurntableOptions().loadFromConfigFile(bad, "turntable");
+		ADD_FAILURE() << line << " accepted";
+	}
+	catch (const std::exception& e)
+	{
+		EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+	}
+}
+}  // namespace
+
 TEST(TurntableOptions, RimImageKeysAreReadAndChecked)
 {
 	mrpt::config::CConfigFileMemory cfg(
@@ -290,17 +309,7 @@ TEST(TurntableOptions, RimImageKeysAreReadAndChecked)
 	t.loadFromConfigFile(cfg, "turntable");
 	EXPECT_EQ(t.rim_images.min_gradient, 12);
 	EXPECT_EQ(t.rim_images.min_fraction, 0.6);
-	mrpt::config::CConfigFileMemory bad("[turntable]\nrim_image_min_fraction = 1.5\n");
-	try
-	{
-		TurntableOptions().loadFromConfigFile(bad, "turntable");
-		ADD_FAILURE() << "rim_image_min_fraction = 1.5 accepted";
-	}
-	catch (const std::exception& e)
-	{
-		EXPECT_NE(std::string(e.what()).find("rim_image_min_fraction"), std::string::npos)
-		    << e.what();
-	}
+	expectTurntableKeyRejected("rim_image_min_fraction = 1.5");
 }
 
 TEST(TurntableRims, HorizontalRimFromShortChordsOfThreeViewsIsFoundInTheImages)
@@ -319,7 +328,8 @@ TEST(TurntableRims, HorizontalRimFromShortChordsOfThreeViewsIsFoundInTheImages)
 		WireFrame v;
 		v.frame = WireFrameFrame::Object;
 		const Eigen::Vector2d front = 5 * d;
-		v.lines.push_back({0, {front.x() - 10 * e.x(), front.y() - 10 * e.y(), 189},
+		v.lines.push_back({0,
+		                   {front.x() - 10 * e.x(), front.y() - 10 * e.y(), 189},
 		                   {front.x() + 5 * e.x(), front.y() + 5 * e.y(), 189.3}});
 		v.lines.push_back({0, {30, 0, 20}, {30, 0, 120}});  // an unrelated steep edge stays
 		views.push_back(v);
@@ -368,15 +378,5 @@ TEST(TurntableOptions, RimChordKeysAreReadAndChecked)
 	t.loadFromConfigFile(cfg, "turntable");
 	EXPECT_EQ(t.rim_chords.min_views, 4);
 	EXPECT_EQ(t.rim_chords.min_image_arc_deg, 150);
-	mrpt::config::CConfigFileMemory bad("[turntable]\nrim_chord_max_radius_ratio = 0.5\n");
-	try
-	{
-		TurntableOptions().loadFromConfigFile(bad, "turntable");
-		ADD_FAILURE() << "rim_chord_max_radius_ratio = 0.5 accepted";
-	}
-	catch (const std::exception& e)
-	{
-		EXPECT_NE(std::string(e.what()).find("rim_chord_max_radius_ratio"), std::string::npos)
-		    << e.what();
-	}
+	expectTurntableKeyRejected("rim_chord_max_radius_ratio = 0.5");
 }
