@@ -1,10 +1,11 @@
 // Hypotheses from single features on the support plane (PlaneHypotheses.h): an upright object is
 // among the hypotheses of one of its rims or one of its horizontal lines seen alone; a line at the
 // wrong height above the plane makes none; with a stereo pair the recogniser finds a box from one
-// line; bad [plane_hypotheses] values are rejected; the shipped section equals the defaults.
+// line; a bottle's limb alone gives its axis; bad [plane_hypotheses] values are rejected; the shipped section equals the defaults.
 #include "recog_test_util.h"
 
 #include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/Limbs.h>
 #include <mrolr/recog/PlaneHypotheses.h>
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SyntheticObjects.h>
@@ -86,6 +87,72 @@ Feature fragment(const Feature& l, double f)
 	return g;
 }
 }  // namespace
+
+namespace
+{
+/** A line feature from @p a to @p b. */
+Feature lineFeature(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+	Feature f;
+	f.p1 = a, f.p2 = b, f.m = 0.5 * (a + b);
+	f.len_mm = (b - a).norm();
+	f.u = (b - a) / f.len_mm;
+	return f;
+}
+}  // namespace
+
+// A bottle's outline alone (one limb of its body, as stereo reconstructs it against the table):
+// among the hypotheses is its true axis, standing on the plane; the bottle is symmetric about it,
+// so the model origin (on the axis) is where it should be. The body (r 35) and the neck (r 15)
+// are its cylinders; the cone between them is not.
+TEST(plane_hypotheses, bottle_from_one_limb_alone)
+{
+	const auto bottle = makeBottle();
+	const auto gen = generatorOf(bottle);
+	ASSERT_EQ(gen.limbCylinders().size(), 2u);
+	const auto bodies = revolutionBodiesOf(featuresOf(bottle));
+	ASSERT_EQ(bodies.size(), 1u);
+	std::mt19937 rng(5);
+	for (int trial = 0; trial < 8; ++trial)
+	{
+		const double yaw = std::uniform_real_distribution<double>(-M_PI, M_PI)(rng);
+		const auto T = upright(table(), {40.0 * trial - 160, -190, 620 + 15.0 * trial}, yaw);
+		const Eigen::Vector3d cam_O = T.inverse() * Eigen::Vector3d::Zero();
+		const auto limbs = limbLines(bodies[0], cam_O);
+		ASSERT_FALSE(limbs.empty());
+		for (const auto& [a, b] : limbs)
+		{
+			if ((a - b).norm() < 100) continue;  // the body's two limbs (150 mm), not the neck's
+			const auto hyps = gen.generate({lineFeature(T * a, T * b)}, table());
+			ASSERT_FALSE(hyps.empty());
+			double best_mm = 1e9;
+			for (const auto& h : hyps)
+			{
+				EXPECT_TRUE(h.from_limb);
+				EXPECT_NEAR(gen.baseOffset_mm(h.T_OinS, table()), 0.0, 1e-6);
+				best_mm = std::min(best_mm, (h.T_OinS.translation() - T.translation()).norm());
+			}
+			EXPECT_LT(best_mm, 1e-6) << "trial " << trial;
+		}
+	}
+	// the same limb raised 80 mm (above the body) or tilted 15 deg out of the normal makes none
+	const auto T = upright(table(), {0, -190, 640}, 0.3);
+	const auto limb = limbLines(bodies[0], T.inverse() * Eigen::Vector3d::Zero()).front();
+	const Eigen::Vector3d up = 80 * table().n_S;
+	EXPECT_TRUE(gen.generate({lineFeature(T * limb.first + up, T * limb.second + up)}, table())
+	                .empty());
+	const Eigen::Vector3d top = T * limb.second, bottom = T * limb.first;
+	const Eigen::Vector3d side = table().n_S.cross(bottom).normalized();
+	const Eigen::Vector3d tilted =
+	    bottom + Eigen::AngleAxisd(15 * M_PI / 180, side) * (top - bottom);
+	EXPECT_TRUE(gen.generate({lineFeature(bottom, tilted)}, table()).empty());
+	// and with limb_hypotheses off, no cylinders
+	PlaneHypothesisOptions off;
+	off.limb_hypotheses = false;
+	EXPECT_TRUE(
+	    PlaneHypothesisGenerator(featuresOf(bottle), modelBaseZ_mm(bottle), off).limbCylinders()
+	        .empty());
+}
 
 // A cup's top rim alone: among the hypotheses is the true pose up to its yaw (the rim's yaws are
 // tried every 30°, the images' refinement sweeps finer).
@@ -257,14 +324,20 @@ TEST(plane_hypotheses, options_reject_bad_values)
 	    {"min_image_score = 0.7", "min_image_score = 1.5"},
 	    {"enable = true", "enable = maybe"},
 	    {"radius_tol_mm = 6", "radius_tol_mm = six"},
-	    {"prerank_spacing_mm = 9\n", ""}};
+	    {"prerank_spacing_mm = 9\n", ""},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_vertical_tol_deg = 95\n"},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_hypotheses = often\n"},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_min_mm = -2\n"}};
 	for (const auto& [from, to] : bad)
 	{
 		std::string text = good;
 		text.replace(text.find(from), from.size(), to);
 		// a new object each time: setContent merges with what was read before
 		const mrpt::config::CConfigFileMemory cfg(text);
-		const std::string key = from.substr(0, from.find(' '));
+		const std::string key =
+		    to.find("limb") != std::string::npos
+		        ? to.substr(to.find("limb"), to.find(' ', to.find("limb")) - to.find("limb"))
+		        : from.substr(0, from.find(' '));
 		try
 		{
 			PlaneHypothesisOptions q;
@@ -281,6 +354,17 @@ TEST(plane_hypotheses, options_reject_bad_values)
 	d.min_image_score = 0.9;
 	d.loadFromConfigFile(mrpt::config::CConfigFileMemory(std::string("[other]\nx = 1\n")), "p");
 	EXPECT_EQ(d.min_image_score, 0.9);
+	// the limb keys are optional (files written before them load with the defaults); given, read
+	PlaneHypothesisOptions older;
+	older.loadFromConfigFile(mrpt::config::CConfigFileMemory(good), "p");
+	EXPECT_TRUE(older.limb_hypotheses);
+	EXPECT_EQ(older.limb_min_mm, PlaneHypothesisOptions().limb_min_mm);
+	PlaneHypothesisOptions newer;
+	newer.loadFromConfigFile(
+	    mrpt::config::CConfigFileMemory(good + "limb_hypotheses = false\nlimb_min_mm = 33\n"),
+	    "p");
+	EXPECT_FALSE(newer.limb_hypotheses);
+	EXPECT_EQ(newer.limb_min_mm, 33);
 }
 
 TEST(plane_hypotheses, shipped_options_are_the_defaults)

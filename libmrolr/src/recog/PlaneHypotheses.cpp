@@ -2,6 +2,8 @@
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/PlaneHypotheses.h>
 
+#include "UprightPose.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,41 +14,15 @@ namespace mrolr::recog
 namespace
 {
 constexpr double kDeg = M_PI / 180;
-
-/** Two horizontal unit vectors (h1, h2 = n × h1) completing the plane's normal to a right-handed
- * basis. */
-std::pair<Eigen::Vector3d, Eigen::Vector3d> horizontalBasis(const Eigen::Vector3d& n)
-{
-	Eigen::Vector3d a = Eigen::Vector3d::UnitX();
-	if (std::abs(n.x()) > 0.9) a = Eigen::Vector3d::UnitZ();
-	const Eigen::Vector3d h1 = (a - a.dot(n) * n).normalized();
-	return {h1, n.cross(h1)};
-}
-
-/** The rotation taking the model's +z to @p n and its +x to the horizontal direction at angle
- * @p yaw from h1 (towards h2). */
-Eigen::Matrix3d uprightRotation(const Eigen::Vector3d& n, double yaw)
-{
-	const auto [h1, h2] = horizontalBasis(n);
-	Eigen::Matrix3d R;
-	R.col(0) = std::cos(yaw) * h1 + std::sin(yaw) * h2;
-	R.col(1) = -std::sin(yaw) * h1 + std::cos(yaw) * h2;
-	R.col(2) = n;
-	return R;
-}
+using detail::horizontalBasis;
+using detail::standOn;
+using detail::uprightRotation;
 
 /** Angle of the horizontal part of @p d_S in the basis (h1, h2) of @p n. */
 double horizontalAngle(const Eigen::Vector3d& d_S, const Eigen::Vector3d& n)
 {
 	const auto [h1, h2] = horizontalBasis(n);
 	return std::atan2(d_S.dot(h2), d_S.dot(h1));
-}
-
-/** @p t with its component along the plane's normal set so that the model's base (z = base_z)
- * lies in the plane: n·(R (x, y, base_z) + t) + d = 0 with R z = n. */
-Eigen::Vector3d standOn(Eigen::Vector3d t, const SupportPlane& plane, double base_z_mm)
-{
-	return t + (-plane.d_mm - base_z_mm - plane.n_S.dot(t)) * plane.n_S;
 }
 
 double meanRadius(const Feature& c)
@@ -76,6 +52,7 @@ PlaneHypothesisGenerator::PlaneHypothesisGenerator(std::vector<Feature> model_O,
 		if (f.isLine() && std::abs(f.u.z()) <= horiz_sin && f.len_mm >= opts_.min_line_mm)
 			lines_.push_back(i);
 	}
+	if (opts_.limb_hypotheses) findLimbCylinders();
 }
 
 double PlaneHypothesisGenerator::baseOffset_mm(const Eigen::Isometry3d& T_OinS,
@@ -142,10 +119,21 @@ std::vector<PlaneHypothesis> PlaneHypothesisGenerator::generate(
 	std::vector<PlaneHypothesis> out;
 	const double normal_cos = std::cos(opts_.scene_normal_tol_deg * kDeg);
 	const double horiz_sin = std::sin(opts_.horizontal_tol_deg * kDeg);
+	const double limb_cos = std::cos(opts_.limb_vertical_tol_deg * kDeg);
 	for (size_t s = 0; s < scene_S.size(); ++s)
 	{
 		const Feature& f = scene_S[s];
 		const double h = plane.height_mm(f.m);
+		if (f.isLine() && !cylinders_.empty() && f.len_mm >= opts_.limb_min_mm &&
+		    std::abs(f.u.dot(plane.n_S)) >= limb_cos)
+		{
+			const double h1 = plane.height_mm(f.p1), h2 = plane.height_mm(f.p2);
+			for (const LimbCylinder& c : cylinders_)
+				if (std::min(h1, h2) >= c.z_lo_mm - base_z_mm_ - opts_.height_tol_mm &&
+				    std::max(h1, h2) <= c.z_hi_mm - base_z_mm_ + opts_.height_tol_mm)
+					addLimbHypotheses(c, s, f, plane, out);
+			continue;
+		}
 		if (!f.isLine())
 		{
 			if (std::abs(f.u.dot(plane.n_S)) < normal_cos) continue;

@@ -32,6 +32,16 @@ void PlaneHypothesisOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
 	prerank_spacing_mm = in("prerank_spacing_mm", 0.5, 1000);
 	min_image_score = in("min_image_score", 0, 1);
 	max_base_offset_mm = in("max_base_offset_mm", 0, 1000);
+	// optional: added after the section was first shipped
+	if (util::hasKey(cfg, section, "limb_hypotheses"))
+		limb_hypotheses = util::readBool(cfg, section, "limb_hypotheses", limb_hypotheses);
+	auto optIn = [&](const char* key, double& v, double lo, double hi)
+	{
+		if (util::hasKey(cfg, section, key)) v = in(key, lo, hi);
+	};
+	optIn("limb_vertical_tol_deg", limb_vertical_tol_deg, 0, 90);
+	optIn("limb_max_taper_mm", limb_max_taper_mm, 0, 1000);
+	optIn("limb_min_mm", limb_min_mm, 0, 1e4);
 }
 
 void PlaneHypothesisOptions::dump(std::ostream& out) const
@@ -45,7 +55,11 @@ void PlaneHypothesisOptions::dump(std::ostream& out) const
 	    << "\nrim_yaw_step_deg = " << rim_yaw_step_deg << "\nmax_hypotheses = " << max_hypotheses
 	    << "\nprerank_spacing_mm = " << prerank_spacing_mm
 	    << "\nmin_image_score = " << min_image_score
-	    << "\nmax_base_offset_mm = " << max_base_offset_mm << "\n";
+	    << "\nmax_base_offset_mm = " << max_base_offset_mm
+	    << "\nlimb_hypotheses = " << (limb_hypotheses ? "true" : "false")
+	    << "\nlimb_vertical_tol_deg = " << limb_vertical_tol_deg
+	    << "\nlimb_max_taper_mm = " << limb_max_taper_mm << "\nlimb_min_mm = " << limb_min_mm
+	    << "\n";
 }
 
 }  // namespace mrolr::recog

@@ -11,7 +11,14 @@
  *   is tried every rim_yaw_step_deg;
  * - a horizontal model line matched to a horizontal scene line at its height above the plane
  *   fixes the yaw (both senses) and the line's lateral offset; along the line the scene segment
- *   (a fragment) is aligned start to start, end to end and middle to middle.
+ *   (a fragment) is aligned start to start, end to end and middle to middle;
+ * - a cylinder of the model (a frustum of a body of revolution, Limbs.h, of nearly constant
+ *   radius r) matched to a scene line along the plane's normal at heights within the cylinder's:
+ *   the line is a limb, where the sight rays graze the side, so the axis is r from it,
+ *   perpendicular to the plane through the camera centre and the line (either side of the line);
+ *   the yaw is tried every rim_yaw_step_deg. Stereo finds limbs where it finds no rim: the
+ *   outline of a bottle against the table is its strongest edge. The camera centre is the origin
+ *   of S (S is the left camera frame L for the head's scenes).
  * Every hypothesis stands on the plane with the model's +z along the plane's normal. They are
  * judged in the images (Recognizer): the 3D score cannot tell them apart, a single feature being
  * all they have in common with the scene. Millimetres; model frame O, scene frame S. */
@@ -31,7 +38,8 @@ namespace mrolr::recog
 struct PlaneHypothesis
 {
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();
-	bool from_rim = false;  ///< a rim match (else a horizontal line)
+	bool from_rim = false;   ///< a rim match
+	bool from_limb = false;  ///< a limb match (neither: a horizontal line)
 	int model_feature = 0;  ///< index into the model's features
 	int scene_feature = 0;  ///< index into the scene's features
 };
@@ -40,6 +48,14 @@ struct PlaneHypothesis
  * stands on the support plane (0 for models in the object frame O of docs/model.md, up to the
  * model building's noise). */
 double modelBaseZ_mm(const model::WireFrame& model_O);
+
+/** A cylinder of a model for limb hypotheses: its axis (model frame; parallel to +z within
+ * rim_normal_tol_deg) through (axis_x_mm, axis_y_mm), radius r_mm, from z_lo_mm to z_hi_mm
+ * (model z). */
+struct LimbCylinder
+{
+	double axis_x_mm = 0, axis_y_mm = 0, r_mm = 0, z_lo_mm = 0, z_hi_mm = 0;
+};
 
 /** Makes plane hypotheses for one model against scenes (PlaneHypotheses.h). */
 class PlaneHypothesisGenerator
@@ -58,6 +74,7 @@ class PlaneHypothesisGenerator
 
 	const std::vector<size_t>& rims() const { return rims_; }
 	const std::vector<size_t>& horizontalLines() const { return lines_; }
+	const std::vector<LimbCylinder>& limbCylinders() const { return cylinders_; }
 	double baseZ_mm() const { return base_z_mm_; }
 
  private:
@@ -66,6 +83,11 @@ class PlaneHypothesisGenerator
 	PlaneHypothesisOptions opts_;
 	std::vector<size_t> rims_;   ///< model conics near +z
 	std::vector<size_t> lines_;  ///< model lines near horizontal and long enough
+	std::vector<LimbCylinder> cylinders_;  ///< empty unless limb_hypotheses
+
+	void findLimbCylinders();
+	void addLimbHypotheses(const LimbCylinder& c, size_t s, const Feature& scene_line,
+	                       const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;
 
 	void addRimHypotheses(size_t rim, size_t s, const Feature& conic, const SupportPlane& plane,
 	                      std::vector<PlaneHypothesis>& out) const;

@@ -25,7 +25,13 @@ struct PlaneHypothesisOptions
 	double horizontal_tol_deg = 10;    ///< model and scene lines this close to horizontal
 	double max_length_ratio = 1.2;     ///< a scene line at most this × the model line's length
 	double min_line_mm = 15;           ///< shorter model or scene lines are not used
-	double rim_yaw_step_deg = 30;      ///< yaws tried per rim match (the refinement sweeps finer)
+	double rim_yaw_step_deg = 30;      ///< yaws tried per rim or limb match (the refinement sweeps finer)
+	/** Limb hypotheses (PlaneHypotheses.h). These four keys are optional in the section (files
+	 * written before them still load); defaults as here. */
+	bool limb_hypotheses = true;
+	double limb_vertical_tol_deg = 5;  ///< a scene line this close to the plane's normal
+	double limb_max_taper_mm = 3;      ///< a model frustum with |r0 − r1| up to this is a cylinder
+	double limb_min_mm = 20;           ///< shorter scene lines and model cylinders are not used
 	/** Hypotheses kept after the quick image score (best first, near-duplicates dropped), then
 	 * scored fully and the best refined as the clique hypotheses are. */
 	int max_hypotheses = 30;
