@@ -36,23 +36,14 @@ bool better(const ImageScore& a, const ImageScore& b)
 }
 }  // namespace
 
-Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O,
-                                        const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
-                                        const std::vector<Eigen::Vector3d>& axes_O) const
+/** The pattern search from @p start (its score @p start_s): steps of kStartStep along the 6
+ * parameters (rotations about @p axis_O's image), halved when none lowers the cost. */
+std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::patternSearch(
+    const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& start,
+    const ImageScore& start_s, const SelfOcclusion* occ, const Eigen::Vector3d& axis_O) const
 {
-	Eigen::Isometry3d best = T_OinL;
-	ImageScore best_s = score(samples_O, T_OinL, occ);
-	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
-	Eigen::Vector3d axis_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
-	for (const auto& a_O : axes_O)
-		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
-		{
-			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
-			const ImageScore s = score(samples_O, T, occ);
-			if (better(s, best_s)) best = T, best_s = s, axis_O = a_O;
-		}
-	const Eigen::Isometry3d swept = best;
-	const ImageScore swept_s = best_s;
+	Eigen::Isometry3d best = start;
+	ImageScore best_s = start_s;
 	double step_mm = kStartStep_mm, step_rad = kStartStep_deg * M_PI / 180;
 	for (int evals = 0; step_mm >= kLastStep_mm && evals < kMaxPatternEvaluations;)
 	{
@@ -70,6 +61,35 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
 				break;
 			}
 		if (!improved) step_mm /= 2, step_rad /= 2;
+	}
+	return {best, best_s};
+}
+
+Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O,
+                                        const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
+                                        const std::vector<Eigen::Vector3d>& axes_O) const
+{
+	const ImageScore start_s = score(samples_O, T_OinL, occ);
+	Eigen::Isometry3d swept = T_OinL;
+	ImageScore swept_s = start_s;
+	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
+	Eigen::Vector3d axis_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
+	const Eigen::Vector3d start_axis_O = axis_O;
+	for (const auto& a_O : axes_O)
+		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
+		{
+			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
+			const ImageScore s = score(samples_O, T, occ);
+			if (better(s, swept_s)) swept = T, swept_s = s, axis_O = a_O;
+		}
+	// the sweep scores each yaw unrefined: a neighbouring yaw may win by a few samples over a
+	// start that is off by a millimetre, so the start is refined too and the better kept
+	auto [best, best_s] = patternSearch(samples_O, swept, swept_s, occ, axis_O);
+	if (!swept.isApprox(T_OinL))
+	{
+		const auto [from_start, from_start_s] =
+		    patternSearch(samples_O, T_OinL, start_s, occ, start_axis_O);
+		if (better(from_start_s, best_s)) best = from_start, best_s = from_start_s;
 	}
 	return best_s.supported >= swept_s.supported ? best : swept;
 }

@@ -42,8 +42,8 @@ struct ImageVerificationOptions
 	 * the images: rotations about the model's up axis (z through its rims' centres) every
 	 * yaw_step_deg (0: none; a cup's handle is what fixes its yaw), then a pattern search over
 	 * the 6 pose parameters minimising the truncated oriented chamfer distance. */
-	int refine_candidates = 3;
-	double yaw_step_deg = 10;
+	int refine_candidates = 6;
+	double yaw_step_deg = 5;
 	double truncate_px =
 	    5;  ///< chamfer distance cap (px); also the cost of a wrongly oriented edge
 	/** Add, at each pose and for each camera, the limbs (outline generators) of the model's
@@ -204,8 +204,9 @@ class ImageVerifier
 	                 const SelfOcclusion* occ) const;
 
 	/** Refines @p T_OinL in the images (options().yaw_step_deg sweep about the model's z axis
-	 * through each of @p axes_O, then the pattern search); returns the refined pose if its score
-	 * is not lower, else @p T_OinL. */
+	 * through each of @p axes_O, then the pattern search from the best yaw and, when that is not
+	 * @p T_OinL itself, also from @p T_OinL, the one with more supported samples kept); returns
+	 * the refined pose if its score is not lower, else the swept one. */
 	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
 	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
 	                         const std::vector<Eigen::Vector3d>& axes_O) const;
@@ -218,6 +219,11 @@ class ImageVerifier
 	const EdgeImage& image(int i) const { return images_.at(i); }
 
  private:
+	std::pair<Eigen::Isometry3d, ImageScore> patternSearch(const std::vector<EdgeSample>& samples_O,
+	                                                       const Eigen::Isometry3d& start,
+	                                                       const ImageScore& start_s,
+	                                                       const SelfOcclusion* occ,
+	                                                       const Eigen::Vector3d& axis_O) const;
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right
 };
