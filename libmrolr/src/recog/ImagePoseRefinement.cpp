@@ -69,29 +69,36 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
                                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
                                         const std::vector<Eigen::Vector3d>& axes_O) const
 {
-	const ImageScore start_s = score(samples_O, T_OinL, occ);
-	Eigen::Isometry3d swept = T_OinL;
-	ImageScore swept_s = start_s;
+	// the sweep keeps the yaw with the most supported samples and the one with the highest
+	// fraction; each is scored unrefined, so both (and the start) are refined and compared then
+	struct Seed
+	{
+		Eigen::Isometry3d T;
+		ImageScore s;
+		Eigen::Vector3d axis_O;
+	};
+	const Eigen::Vector3d axis0_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
+	const Seed start{T_OinL, score(samples_O, T_OinL, occ), axis0_O};
+	Seed by_count = start, by_fraction = start;
 	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
-	Eigen::Vector3d axis_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
-	const Eigen::Vector3d start_axis_O = axis_O;
 	for (const auto& a_O : axes_O)
 		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
 		{
 			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
 			const ImageScore s = score(samples_O, T, occ);
-			if (better(s, swept_s)) swept = T, swept_s = s, axis_O = a_O;
+			if (better(s, by_count.s)) by_count = {T, s, a_O};
+			if (s.score > by_fraction.s.score) by_fraction = {T, s, a_O};
 		}
-	// the sweep scores each yaw unrefined: a neighbouring yaw may win by a few samples over a
-	// start that is off by a millimetre, so the start is refined too and the better kept
-	auto [best, best_s] = patternSearch(samples_O, swept, swept_s, occ, axis_O);
-	if (!swept.isApprox(T_OinL))
+	auto [best, best_s] = patternSearch(samples_O, by_count.T, by_count.s, occ, by_count.axis_O);
+	std::vector<const Seed*> others = {&start};
+	if (!by_fraction.T.isApprox(by_count.T)) others.push_back(&by_fraction);
+	for (const Seed* o : others)
 	{
-		const auto [from_start, from_start_s] =
-		    patternSearch(samples_O, T_OinL, start_s, occ, start_axis_O);
-		if (better(from_start_s, best_s)) best = from_start, best_s = from_start_s;
+		if (o->T.isApprox(by_count.T)) continue;
+		const auto [T, s] = patternSearch(samples_O, o->T, o->s, occ, o->axis_O);
+		if (better(s, best_s)) best = T, best_s = s;
 	}
-	return best_s.supported >= swept_s.supported ? best : swept;
+	return best_s.supported >= by_count.s.supported ? best : by_count.T;
 }
 
 }  // namespace mrolr::recog
