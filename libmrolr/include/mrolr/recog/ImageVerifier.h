@@ -203,10 +203,11 @@ class ImageVerifier
 	ImageScore score(const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& T_OinL,
 	                 const SelfOcclusion* occ) const;
 
-	/** Refines @p T_OinL in the images (options().yaw_step_deg sweep about the model's z axis
-	 * through each of @p axes_O, then the pattern search from the best yaw and, when that is not
-	 * @p T_OinL itself, also from @p T_OinL, the one with more supported samples kept); returns
-	 * the refined pose if its score is not lower, else the swept one. */
+	/** Refines @p T_OinL in the images: an options().yaw_step_deg sweep about the model's z axis
+	 * through each of @p axes_O, then the pattern search from the yaw with the most supported
+	 * samples, from the yaw with the highest supported fraction and from @p T_OinL (those that
+	 * differ); the refined pose with the most supported samples (then the lowest cost) is
+	 * returned if it has no fewer than the swept one, else the swept one. */
 	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
 	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
 	                         const std::vector<Eigen::Vector3d>& axes_O) const;
