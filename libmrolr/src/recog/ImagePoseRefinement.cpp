@@ -90,11 +90,12 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
 			if (s.score > by_fraction.s.score) by_fraction = {T, s, a_O};
 		}
 	auto [best, best_s] = patternSearch(samples_O, by_count.T, by_count.s, occ, by_count.axis_O);
-	std::vector<const Seed*> others = {&start};
-	if (!by_fraction.T.isApprox(by_count.T)) others.push_back(&by_fraction);
+	std::vector<const Seed*> others;  // each distinct seed refined once
+	if (!start.T.isApprox(by_count.T)) others.push_back(&start);
+	if (!by_fraction.T.isApprox(by_count.T) && !by_fraction.T.isApprox(start.T))
+		others.push_back(&by_fraction);
 	for (const Seed* o : others)
 	{
-		if (o->T.isApprox(by_count.T)) continue;
 		const auto [T, s] = patternSearch(samples_O, o->T, o->s, occ, o->axis_O);
 		if (better(s, best_s)) best = T, best_s = s;
 	}
