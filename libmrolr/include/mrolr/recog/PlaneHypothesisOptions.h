@@ -25,7 +25,8 @@ struct PlaneHypothesisOptions
 	double horizontal_tol_deg = 10;    ///< model and scene lines this close to horizontal
 	double max_length_ratio = 1.2;     ///< a scene line at most this × the model line's length
 	double min_line_mm = 15;           ///< shorter model or scene lines are not used
-	double rim_yaw_step_deg = 30;      ///< yaws tried per rim or limb match (the refinement sweeps finer)
+	/** Yaws tried per rim or limb match (the refinement sweeps finer). */
+	double rim_yaw_step_deg = 30;
 	/** Limb hypotheses (PlaneHypotheses.h). These four keys are optional in the section (files
 	 * written before them still load); defaults as here. */
 	bool limb_hypotheses = true;
