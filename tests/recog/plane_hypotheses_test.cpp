@@ -1,7 +1,8 @@
 // Hypotheses from single features on the support plane (PlaneHypotheses.h): an upright object is
 // among the hypotheses of one of its rims or one of its horizontal lines seen alone; a line at the
 // wrong height above the plane makes none; with a stereo pair the recogniser finds a box from one
-// line; a bottle's limb alone gives its axis; bad [plane_hypotheses] values are rejected; the shipped section equals the defaults.
+// line; a bottle's limb alone gives its axis; bad [plane_hypotheses] values are rejected; the
+// shipped section equals the defaults.
 #include "recog_test_util.h"
 
 #include <mrolr/recog/ImageVerifier.h>
