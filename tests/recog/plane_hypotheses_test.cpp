@@ -18,6 +18,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/imgproc.hpp>
 
+#include <array>
 #include <random>
 #include <sstream>
 
@@ -208,6 +209,56 @@ TEST(plane_hypotheses, box_from_one_horizontal_line)
 	}
 }
 
+// Two vertical edges of a box as stereo recovers them against a wall (fragments, no horizontal
+// edge): among the hypotheses is the box's true pose (both faces' widths, either order of the
+// lines); lines further apart than any two edges, or above the box, make none; a model with
+// cylinders (the bottle) and the option off get no edge pairs.
+TEST(plane_hypotheses, box_from_two_vertical_edges)
+{
+	const auto box = makeStaplerBox();  // 160 x 45 x 55 mm
+	const auto gen = generatorOf(box);
+	ASSERT_EQ(gen.verticalEdgePairs().size(), 6u);  // 4 vertical edges
+	std::mt19937 rng(17);
+	const std::array<Eigen::Vector3d, 3> corners = {
+	    Eigen::Vector3d(-80, -22.5, 0), Eigen::Vector3d(80, -22.5, 0), Eigen::Vector3d(80, 22.5, 0)};
+	const Eigen::Vector3d up(0, 0, 55);
+	for (int trial = 0; trial < 6; ++trial)
+	{
+		const double yaw = std::uniform_real_distribution<double>(-M_PI, M_PI)(rng);
+		const auto T = upright(table(), {20.0 * trial - 50, -190, 640}, yaw);
+		for (const auto& [a, b] : {std::pair<int, int>{0, 1}, {1, 2}, {2, 1}})
+		{
+			const Feature ea = lineFeature(T * (corners[a] + 0.1 * up), T * (corners[a] + 0.7 * up));
+			const Feature eb = lineFeature(T * (corners[b] + 0.3 * up), T * (corners[b] + 0.9 * up));
+			const auto hyps = gen.generate({ea, eb}, table());
+			const auto [r, t] = nearest(hyps, T);
+			EXPECT_LT(r, 1e-6) << "trial " << trial << " edges " << a << b;
+			EXPECT_LT(t, 1e-6) << "trial " << trial << " edges " << a << b;
+			for (const auto& h : hyps)
+			{
+				EXPECT_TRUE(h.from_edge_pair);
+				EXPECT_NEAR(gen.baseOffset_mm(h.T_OinS, table()), 0.0, 1e-6);
+			}
+		}
+	}
+	const auto T = upright(table(), {0, -190, 640}, 0.4);
+	const auto edge = [&](const Eigen::Vector3d& c, double lift)
+	{ return lineFeature(T * (c + Eigen::Vector3d(0, 0, lift)), T * (c + up * 0.8)); };
+	const Eigen::Vector3d wide(100, -22.5, 0);  // 180 mm from corner 0: no two edges are
+	EXPECT_TRUE(gen.generate({edge(corners[0], 5), edge(wide, 5)}, table()).empty());
+	const Eigen::Vector3d above(0, 0, 80);
+	EXPECT_TRUE(gen.generate({lineFeature(T * (corners[0] + above), T * (corners[0] + 2 * above)),
+	                          lineFeature(T * (corners[1] + above), T * (corners[1] + 2 * above))},
+	                         table())
+	                .empty());
+	EXPECT_TRUE(generatorOf(makeBottle()).verticalEdgePairs().empty());
+	PlaneHypothesisOptions off;
+	off.edge_pair_hypotheses = false;
+	EXPECT_TRUE(
+	    PlaneHypothesisGenerator(featuresOf(box), modelBaseZ_mm(box), off).verticalEdgePairs()
+	        .empty());
+}
+
 // The same base line 30 mm above the table (where the box has no horizontal line) or tilted 20°
 // out of the horizontal makes no hypothesis.
 TEST(plane_hypotheses, no_hypothesis_from_a_line_at_the_wrong_height_or_tilt)
@@ -308,6 +359,39 @@ TEST(plane_hypotheses, recogniser_finds_a_box_from_one_line_in_the_images)
 	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
 }
 
+// The same box seen by two of its vertical edges only (fragments, as stereo gives them against a
+// wall) is found from the edge pair; not when an edge-pair answer needs an image score no pose
+// reaches, nor with edge pairs off.
+TEST(plane_hypotheses, recogniser_finds_a_box_from_two_vertical_edges_in_the_images)
+{
+	const auto box = makeStaplerBox();
+	const auto T = upright(table(), {30, -190, 640}, 2.0);
+	const ImageVerifier images(drawEdges(box, T, 0), drawEdges(box, T, -kBaseline_mm),
+	                           calibration(), ImageVerificationOptions());
+	const Eigen::Vector3d a(80, -22.5, 0), b(80, 22.5, 0), lo(0, 0, 10), hi(0, 0, 45);
+	const std::vector<Feature> scene = {lineFeature(T * (a + lo), T * (a + hi)),
+	                                    lineFeature(T * (b + hi), T * (b + lo))};
+	const SupportPlane plane = table();
+	auto opts = RecognitionOptions::defaults();
+	opts.plane.limb_hypotheses = false;  // the box has no cylinder anyway
+	const auto r = Recognizer(box, opts).recognize(scene, &plane.n_S, &images, &plane);
+	ASSERT_TRUE(r.found);
+	EXPECT_TRUE(r.from_plane);
+	EXPECT_GE(r.image_score, opts.plane.edge_pair_min_image_score);
+	const double rot = std::min(test::rotationErrorDeg(r.T_OinS, T),
+	                            test::rotationErrorDeg(r.T_OinS * Eigen::AngleAxisd(
+	                                                                  M_PI, Eigen::Vector3d::UnitZ()),
+	                                                   T));
+	EXPECT_LT(rot, 3.0);
+	EXPECT_LT((r.T_OinS * Eigen::Vector3d(0, 0, 27) - T * Eigen::Vector3d(0, 0, 27)).norm(), 5.0);
+	auto strict = opts;
+	strict.plane.edge_pair_min_image_score = 1.0;
+	EXPECT_FALSE(Recognizer(box, strict).recognize(scene, &plane.n_S, &images, &plane).found);
+	auto off = opts;
+	off.plane.edge_pair_hypotheses = false;
+	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
+}
+
 TEST(plane_hypotheses, options_reject_bad_values)
 {
 	const std::string good =
@@ -328,17 +412,23 @@ TEST(plane_hypotheses, options_reject_bad_values)
 	    {"prerank_spacing_mm = 9\n", ""},
 	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_vertical_tol_deg = 95\n"},
 	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_hypotheses = often\n"},
-	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_min_mm = -2\n"}};
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_min_mm = -2\n"},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nedge_pair_hypotheses = 2x\n"},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nedge_pair_min_mm = -1\n"},
+	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nedge_pair_width_tol_mm = x\n"},
+	    {"max_base_offset_mm = 15\n",
+	     "max_base_offset_mm = 15\nedge_pair_min_image_score = 1.5\n"}};
 	for (const auto& [from, to] : bad)
 	{
 		std::string text = good;
 		text.replace(text.find(from), from.size(), to);
 		// a new object each time: setContent merges with what was read before
 		const mrpt::config::CConfigFileMemory cfg(text);
-		const std::string key =
-		    to.find("limb") != std::string::npos
-		        ? to.substr(to.find("limb"), to.find(' ', to.find("limb")) - to.find("limb"))
-		        : from.substr(0, from.find(' '));
+		// an optional key added after max_base_offset_mm is the one named
+		const size_t added = to.find('\n');
+		const std::string key = added != std::string::npos && added + 1 < to.size()
+		                            ? to.substr(added + 1, to.find(' ', added) - added - 1)
+		                            : from.substr(0, from.find(' '));
 		try
 		{
 			PlaneHypothesisOptions q;
@@ -366,6 +456,14 @@ TEST(plane_hypotheses, options_reject_bad_values)
 	    "p");
 	EXPECT_FALSE(newer.limb_hypotheses);
 	EXPECT_EQ(newer.limb_min_mm, 33);
+	EXPECT_TRUE(older.edge_pair_hypotheses);
+	EXPECT_EQ(older.edge_pair_min_mm, PlaneHypothesisOptions().edge_pair_min_mm);
+	PlaneHypothesisOptions pairs;
+	pairs.loadFromConfigFile(mrpt::config::CConfigFileMemory(
+	                             good + "edge_pair_hypotheses = false\nedge_pair_width_tol_mm = 2\n"),
+	                         "p");
+	EXPECT_FALSE(pairs.edge_pair_hypotheses);
+	EXPECT_EQ(pairs.edge_pair_width_tol_mm, 2);
 }
 
 TEST(plane_hypotheses, shipped_options_are_the_defaults)

@@ -53,6 +53,7 @@ PlaneHypothesisGenerator::PlaneHypothesisGenerator(std::vector<Feature> model_O,
 			lines_.push_back(i);
 	}
 	if (opts_.limb_hypotheses) findLimbCylinders();
+	if (opts_.edge_pair_hypotheses && cylinders_.empty()) findVerticalEdgePairs();
 }
 
 double PlaneHypothesisGenerator::baseOffset_mm(const Eigen::Isometry3d& T_OinS,
@@ -120,10 +121,13 @@ std::vector<PlaneHypothesis> PlaneHypothesisGenerator::generate(
 	const double normal_cos = std::cos(opts_.scene_normal_tol_deg * kDeg);
 	const double horiz_sin = std::sin(opts_.horizontal_tol_deg * kDeg);
 	const double limb_cos = std::cos(opts_.limb_vertical_tol_deg * kDeg);
+	std::vector<size_t> verticals;
 	for (size_t s = 0; s < scene_S.size(); ++s)
 	{
 		const Feature& f = scene_S[s];
 		const double h = plane.height_mm(f.m);
+		if (f.isLine() && f.len_mm >= opts_.limb_min_mm && std::abs(f.u.dot(plane.n_S)) >= limb_cos)
+			verticals.push_back(s);
 		if (f.isLine() && !cylinders_.empty() && f.len_mm >= opts_.limb_min_mm &&
 		    std::abs(f.u.dot(plane.n_S)) >= limb_cos)
 		{
@@ -149,6 +153,7 @@ std::vector<PlaneHypothesis> PlaneHypothesisGenerator::generate(
 			    std::abs(h - (model_[l].m.z() - base_z_mm_)) <= opts_.height_tol_mm)
 				addLineHypotheses(l, s, f, plane, out);
 	}
+	if (!edge_pairs_.empty()) addEdgePairHypotheses(scene_S, verticals, plane, out);
 	return out;
 }
 

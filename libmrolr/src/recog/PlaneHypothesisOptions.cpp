@@ -42,6 +42,12 @@ void PlaneHypothesisOptions::loadFromConfigFile(const mrpt::config::CConfigFileB
 	optIn("limb_vertical_tol_deg", limb_vertical_tol_deg, 0, 90);
 	optIn("limb_max_taper_mm", limb_max_taper_mm, 0, 1000);
 	optIn("limb_min_mm", limb_min_mm, 0, 1e4);
+	if (util::hasKey(cfg, section, "edge_pair_hypotheses"))
+		edge_pair_hypotheses =
+		    util::readBool(cfg, section, "edge_pair_hypotheses", edge_pair_hypotheses);
+	optIn("edge_pair_min_mm", edge_pair_min_mm, 0, 1e4);
+	optIn("edge_pair_width_tol_mm", edge_pair_width_tol_mm, 0, 1000);
+	optIn("edge_pair_min_image_score", edge_pair_min_image_score, 0, 1);
 }
 
 void PlaneHypothesisOptions::dump(std::ostream& out) const
@@ -59,7 +65,10 @@ void PlaneHypothesisOptions::dump(std::ostream& out) const
 	    << "\nlimb_hypotheses = " << (limb_hypotheses ? "true" : "false")
 	    << "\nlimb_vertical_tol_deg = " << limb_vertical_tol_deg
 	    << "\nlimb_max_taper_mm = " << limb_max_taper_mm << "\nlimb_min_mm = " << limb_min_mm
-	    << "\n";
+	    << "\nedge_pair_hypotheses = " << (edge_pair_hypotheses ? "true" : "false")
+	    << "\nedge_pair_min_mm = " << edge_pair_min_mm
+	    << "\nedge_pair_width_tol_mm = " << edge_pair_width_tol_mm
+	    << "\nedge_pair_min_image_score = " << edge_pair_min_image_score << "\n";
 }
 
 }  // namespace mrolr::recog

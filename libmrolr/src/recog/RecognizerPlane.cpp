@@ -75,6 +75,9 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	for (const auto& h : poses)
 	{
 		const double rank = detail::rankOf(h.v, h.image);
+		// a pair of vertical lines is common in a scene of boxes and cylinders: edge-pair answers
+		// need more of the images
+		if (hyps[h.cluster].from_edge_pair && h.image < po.edge_pair_min_image_score) continue;
 		if (rank <= best_rank || !upright(h.T, up_S) ||
 		    std::abs(plane_gen_->baseOffset_mm(h.T, plane)) > po.max_base_offset_mm)
 			continue;

@@ -18,7 +18,11 @@
  *   perpendicular to the plane through the camera centre and the line (either side of the line);
  *   the yaw is tried every rim_yaw_step_deg. Stereo finds limbs where it finds no rim: the
  *   outline of a bottle against the table is its strongest edge. The camera centre is the origin
- *   of S (S is the left camera frame L for the head's scenes).
+ *   of S (S is the left camera frame L for the head's scenes);
+ * - two of the model's vertical edges matched to two scene lines along the plane's normal as far
+ *   apart (horizontally) fix the yaw and the position (either assignment), for models without
+ *   cylinders (boxes): stereo recovers a box's vertical edges, which cross the epipolar lines,
+ *   where it misses its horizontal ones against a wall of similar brightness.
  * Every hypothesis stands on the plane with the model's +z along the plane's normal. They are
  * judged in the images (Recognizer): the 3D score cannot tell them apart, a single feature being
  * all they have in common with the scene. Millimetres; model frame O, scene frame S. */
@@ -39,7 +43,8 @@ struct PlaneHypothesis
 {
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();
 	bool from_rim = false;   ///< a rim match
-	bool from_limb = false;  ///< a limb match (neither: a horizontal line)
+	bool from_limb = false;  ///< a limb match
+	bool from_edge_pair = false;  ///< a vertical edge pair (none of the three: a horizontal line)
 	int model_feature = 0;  ///< index into the model's features
 	int scene_feature = 0;  ///< index into the scene's features
 };
@@ -55,6 +60,15 @@ double modelBaseZ_mm(const model::WireFrame& model_O);
 struct LimbCylinder
 {
 	double axis_x_mm = 0, axis_y_mm = 0, r_mm = 0, z_lo_mm = 0, z_hi_mm = 0;
+};
+
+/** Two vertical edges of a model (model frame, mm): their points in the xy plane, their z range
+ * (the lower of the two ends and the higher), their horizontal distance. */
+struct VerticalEdgePair
+{
+	size_t i = 0, j = 0;  ///< model feature indices
+	Eigen::Vector2d xy_i = Eigen::Vector2d::Zero(), xy_j = Eigen::Vector2d::Zero();
+	double z_lo_mm = 0, z_hi_mm = 0, width_mm = 0;
 };
 
 /** Makes plane hypotheses for one model against scenes (PlaneHypotheses.h). */
@@ -75,6 +89,9 @@ class PlaneHypothesisGenerator
 	const std::vector<size_t>& rims() const { return rims_; }
 	const std::vector<size_t>& horizontalLines() const { return lines_; }
 	const std::vector<LimbCylinder>& limbCylinders() const { return cylinders_; }
+	/** Pairs of the model's vertical edges for edge-pair hypotheses (empty unless
+	 * edge_pair_hypotheses and the model has no cylinder). */
+	const std::vector<VerticalEdgePair>& verticalEdgePairs() const { return edge_pairs_; }
 	double baseZ_mm() const { return base_z_mm_; }
 
  private:
@@ -84,7 +101,12 @@ class PlaneHypothesisGenerator
 	std::vector<size_t> rims_;   ///< model conics near +z
 	std::vector<size_t> lines_;  ///< model lines near horizontal and long enough
 	std::vector<LimbCylinder> cylinders_;  ///< empty unless limb_hypotheses
+	std::vector<VerticalEdgePair> edge_pairs_;
 
+	void findVerticalEdgePairs();
+	/** Edge-pair hypotheses for the vertical scene lines @p verticals (indices into @p scene). */
+	void addEdgePairHypotheses(const std::vector<Feature>& scene, const std::vector<size_t>& verticals,
+	                           const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;
 	void findLimbCylinders();
 	void addLimbHypotheses(const LimbCylinder& c, size_t s, const Feature& scene_line,
 	                       const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;

@@ -33,6 +33,16 @@ struct PlaneHypothesisOptions
 	double limb_vertical_tol_deg = 5;  ///< a scene line this close to the plane's normal
 	double limb_max_taper_mm = 3;      ///< a model frustum with |r0 − r1| up to this is a cylinder
 	double limb_min_mm = 20;           ///< shorter scene lines and model cylinders are not used
+	/** Edge-pair hypotheses (PlaneHypotheses.h), for models without cylinders: two scene lines
+	 * along the plane's normal (as limbs: limb_vertical_tol_deg, limb_min_mm) as far apart as
+	 * two of the model's vertical edges at least edge_pair_min_mm long, within
+	 * edge_pair_width_tol_mm. Optional keys; defaults as here. */
+	bool edge_pair_hypotheses = true;
+	double edge_pair_min_mm = 50;
+	double edge_pair_width_tol_mm = 4;
+	/** Image score an answer from an edge pair needs (at least min_image_score is needed in any
+	 * case): two vertical lines so far apart are common among boxes and cylinders. */
+	double edge_pair_min_image_score = 0.7;
 	/** Hypotheses kept after the quick image score (best first, near-duplicates dropped), then
 	 * scored fully and the best refined as the clique hypotheses are. */
 	int max_hypotheses = 30;
