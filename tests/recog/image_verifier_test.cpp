@@ -195,6 +195,23 @@ TEST(image_verifier, options_name_the_bad_key)
 	}
 	cfg.setContent(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
 	EXPECT_THROW(o.loadFromConfigFile(cfg, "iv"), mrolr::util::ConfigError);
+	// every key as dumped, one optional key out of range
+	std::ostringstream all;
+	ImageVerificationOptions().dump(all);
+	std::string text = "[iv]\n" + all.str();
+	const std::string key = "min_in_image_fraction = ";
+	text.replace(text.find(key), text.find('\n', text.find(key)) - text.find(key), key + "1.5");
+	const mrpt::config::CConfigFileMemory bad(text);
+	try
+	{
+		o.loadFromConfigFile(bad, "iv");
+		FAIL() << "min_in_image_fraction 1.5 was accepted";
+	}
+	catch (const mrolr::util::ConfigError& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("min_in_image_fraction"), std::string::npos)
+		    << e.what();
+	}
 }
 
 // The shipped [image_verification] equals the defaults (tests and the mission use the defaults).
@@ -280,4 +297,24 @@ TEST(image_verifier, a_mostly_occluded_pose_scores_zero)
 	EXPECT_LT(s.considered,
 	          ImageVerificationOptions().min_unoccluded_fraction * (s.considered + s.occluded));
 	EXPECT_EQ(s.score, 0);
+}
+
+// An object standing mostly outside the view: its few edges inside fit the images exactly (drawn
+// there), yet the pose scores 0 unless min_in_image_fraction is lowered — a few edges at the
+// image border are what clutter fits by chance.
+TEST(image_verifier, a_pose_mostly_outside_the_images_scores_zero)
+{
+	const Pair p;
+	const Eigen::Isometry3d aside = Eigen::Translation3d(-400, 0, 0) * boxPose();  // to the right
+	const cv::Mat l = draw(aside, 0), r = draw(aside, -kBaseline_mm);
+	const ImageVerifier images(l, r, calibration(), ImageVerificationOptions());
+	const ImageScore s = images.score(p.box, aside, &p.occ);
+	ASSERT_GE(s.considered, ImageVerificationOptions().min_samples);  // enough to judge
+	EXPECT_GT(s.outside, s.considered);
+	EXPECT_EQ(s.score, 0);
+	ImageVerificationOptions lenient;
+	lenient.min_in_image_fraction = 0;
+	EXPECT_GT(ImageVerifier(l, r, calibration(), lenient).score(p.box, aside, &p.occ).score, 0.8);
+	// at the drawn pose in view nothing is outside
+	EXPECT_EQ(p.images.score(p.box, boxPose(), &p.occ).outside, 0);
 }

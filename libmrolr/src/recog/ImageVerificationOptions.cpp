@@ -41,6 +41,9 @@ void ImageVerificationOptions::loadFromConfigFile(const mrpt::config::CConfigFil
 	    util::readDouble(cfg, section, "min_unoccluded_fraction", min_unoccluded_fraction);
 	util::requireInRange(cfg, section, "min_unoccluded_fraction", min_unoccluded_fraction, 0, 1);
 	mutual_occlusion = util::readBool(cfg, section, "mutual_occlusion", mutual_occlusion);
+	min_in_image_fraction =
+	    util::readDouble(cfg, section, "min_in_image_fraction", min_in_image_fraction);
+	util::requireInRange(cfg, section, "min_in_image_fraction", min_in_image_fraction, 0, 1);
 }
 
 void ImageVerificationOptions::dump(std::ostream& out) const
@@ -55,7 +58,8 @@ void ImageVerificationOptions::dump(std::ostream& out) const
 	    << "\nrevolution_visibility = " << (revolution_visibility ? "true" : "false")
 	    << "\noccluder_margin_mm = " << occluder_margin_mm
 	    << "\nmin_unoccluded_fraction = " << min_unoccluded_fraction
-	    << "\nmutual_occlusion = " << (mutual_occlusion ? "true" : "false") << "\n";
+	    << "\nmutual_occlusion = " << (mutual_occlusion ? "true" : "false")
+	    << "\nmin_in_image_fraction = " << min_in_image_fraction << "\n";
 }
 
 }  // namespace mrolr::recog

@@ -180,7 +180,7 @@ bool EdgeImage::occludedAt(const cv::Point2d& px, double depth_mm) const
 template <class Fn>
 void EdgeImage::forEachInViewWithDepth(const std::vector<EdgeSample>& s_O,
                                        const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
-                                       Fn fn) const
+                                       Fn fn, int* outside) const
 {
 	const Eigen::Isometry3d T_OinC = T_CcvInL_.inverse() * T_OinL;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
@@ -199,15 +199,21 @@ void EdgeImage::forEachInViewWithDepth(const std::vector<EdgeSample>& s_O,
 		for (const auto& s : *set)
 		{
 			const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
-			if (!inView(p) || !inView(q)) continue;
-			pts.emplace_back(p.x(), p.y(), p.z());
-			pts.emplace_back(q.x(), q.y(), q.z());
+			const bool in_view = inView(p) && inView(q);
+			if (!in_view && !outside) continue;
 			// a limb is on the outline by construction: only the model's parts off its bodies
 			// (a handle) can hide it (SelfOcclusion::hiddenLimb)
 			const bool limb = set == &limbs;
 			const bool hidden = occ && (limb                     ? occ->hiddenLimb(c_O, s.p_O)
 			                            : revolution_visibility_ ? occ->hiddenOnBodies(c_O, s.p_O)
 			                                                     : occ->hidden(c_O, s.p_O));
+			if (!in_view)
+			{
+				*outside += hidden ? 0 : 1;
+				continue;
+			}
+			pts.emplace_back(p.x(), p.y(), p.z());
+			pts.emplace_back(q.x(), q.y(), q.z());
 			flags.emplace_back(hidden, limb);
 		}
 	if (pts.empty()) return;
@@ -217,6 +223,8 @@ void EdgeImage::forEachInViewWithDepth(const std::vector<EdgeSample>& s_O,
 	for (size_t i = 0; i + 1 < px.size(); i += 2)
 		if (inside.contains(px[i]))
 			fn(px[i], px[i + 1] - px[i], flags[i / 2].first, flags[i / 2].second, pts[i].z);
+		else if (outside && !flags[i / 2].first)
+			++*outside;
 }
 
 void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
@@ -229,7 +237,7 @@ void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3
 
 void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
                       const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-                      double& cost_px2, int& occluded) const
+                      double& cost_px2, int& occluded, int* outside) const
 {
 	forEachInViewWithDepth(
 	    s_O, T_OinL, occ,
@@ -247,7 +255,8 @@ void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3
 		    const double d =
 		        oriented(px, tangent) ? std::min(truncate_px, distanceAt(px)) : truncate_px;
 		    cost_px2 += d * d;
-	    });
+	    },
+	    outside);
 }
 
 std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s_O,
@@ -289,16 +298,19 @@ ImageScore ImageVerifier::score(const std::vector<EdgeSample>& samples_O,
 	ImageScore s;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		int considered = 0, supported = 0, occluded = 0;
+		int considered = 0, supported = 0, occluded = 0, outside = 0;
 		images_[i].count(samples_O, T_OinL, occ, opts_.truncate_px, considered, supported, s.cost,
-		                 occluded);
+		                 occluded, &outside);
 		s.per_image[i] = considered ? static_cast<double>(supported) / considered : 0.0;
 		s.considered += considered, s.supported += supported, s.occluded += occluded;
+		s.outside += outside;
 	}
 	s.cost = s.considered ? s.cost / s.considered : 1e300;
 	const bool enough_unoccluded =
 	    s.considered >= opts_.min_unoccluded_fraction * (s.considered + s.occluded);
-	if (s.considered >= opts_.min_samples && enough_unoccluded)
+	const int in_image = s.considered + s.occluded;
+	const bool enough_in_image = in_image >= opts_.min_in_image_fraction * (in_image + s.outside);
+	if (s.considered >= opts_.min_samples && enough_unoccluded && enough_in_image)
 		s.score = static_cast<double>(s.supported) / s.considered;
 	else
 		s.cost = 1e300;  // too little in view to judge: never preferred

@@ -62,6 +62,10 @@ struct ImageVerificationOptions
 	/** Search again, with the found objects as occluders, for the models not found (the callers
 	 * that recognise several models in one stereo pair: mrolr-recognize, its evaluation). */
 	bool mutual_occlusion = true;
+	/** A pose with less than this fraction of its samples not hidden by the object itself inside
+	 * the images (both summed) scores 0: a few edges of an object standing mostly outside the
+	 * view fit clutter at the image border too easily. Optional key. */
+	double min_in_image_fraction = 0.5;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -95,6 +99,7 @@ struct ImageScore
 	std::array<double, 2> per_image = {0, 0};  ///< left, right score
 	double cost = 0;   ///< mean squared truncated chamfer distance of the considered samples (px²)
 	int occluded = 0;  ///< in-view samples hidden by an Occluder (not in considered)
+	int outside = 0;   ///< samples not hidden by the object itself but outside the images
 };
 
 /** An object recognised in the same stereo pair, which may hide parts of another: its edge
@@ -125,10 +130,12 @@ class EdgeImage
 	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
 	           double& cost_px2) const;
-	/** As the previous count(), and adds to @p occluded the samples hidden by the occluders. */
+	/** As the previous count(), and adds to @p occluded the samples hidden by the occluders and
+	 * to @p outside (may be null) those not hidden by @p occ but outside the image (or more than
+	 * 45° off the optic axis, or behind the camera). */
 	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-	           double& cost_px2, int& occluded) const;
+	           double& cost_px2, int& occluded, int* outside = nullptr) const;
 
 	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
 	 * without distortion (those outside the image too; the hull of a cylinder's rims is its
@@ -159,11 +166,11 @@ class EdgeImage
 	template <class Fn>
 	void forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	                   const SelfOcclusion* occ, Fn fn) const;
-	/** As forEachInView, and @p fn gets a fifth argument: the sample's depth in this camera (mm).
-	 */
+	/** As forEachInView, and @p fn gets a fifth argument: the sample's depth in this camera (mm);
+	 * @p outside (may be null) counts the samples not hidden by @p occ outside the image. */
 	template <class Fn>
 	void forEachInViewWithDepth(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	                            const SelfOcclusion* occ, Fn fn) const;
+	                            const SelfOcclusion* occ, Fn fn, int* outside = nullptr) const;
 	bool occludedAt(const cv::Point2d& px, double depth_mm) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
