@@ -102,10 +102,13 @@ TEST(rendered_eval, shipped_set_has_no_false_positive_and_keeps_its_rate)
 	EXPECT_EQ(s.rate_cases, 28);
 	EXPECT_GT(s.absent_cases, 0);
 	EXPECT_EQ(s.false_positives, 0);
-	// Regression guard, not the target (95 %): measured 25 of 28 (shipped models and
-	// options at 1a4f966; 22 at 3419bab before the limb hypotheses and the finer yaw sweep, 15
-	// before the luminance renders); the margin absorbs reconstruction changes; docs/recog.md.
-	EXPECT_GE(s.recognised, 22);
+	// Regression guard on one of the six sets (the 95 % is measured on all six and two
+	// held-out ones, docs/recog.md): measured 26 of 28 with the edge-pair hypotheses (25 at
+	// 1a4f966, 22 at 3419bab before the limb hypotheses and the finer yaw sweep, 15 before the
+	// luminance renders); the margin absorbs reconstruction changes.
+	EXPECT_GE(s.recognised, 24);
+	EXPECT_LT(s.median_rot_err_deg, 2.0);  // the medians (measured 1.13 deg, 1.07 mm)
+	EXPECT_LT(s.median_trans_err_mm, 5.0);
 	int behind_found = 0;
 	for (const auto& c : app.eval_cases) behind_found += c.result.occluders > 0 ? 1 : 0;
 	RecordProperty("rate_cases", s.rate_cases);
