@@ -126,10 +126,10 @@ std::vector<PlaneHypothesis> PlaneHypothesisGenerator::generate(
 	{
 		const Feature& f = scene_S[s];
 		const double h = plane.height_mm(f.m);
-		if (f.isLine() && f.len_mm >= opts_.limb_min_mm && std::abs(f.u.dot(plane.n_S)) >= limb_cos)
-			verticals.push_back(s);
-		if (f.isLine() && !cylinders_.empty() && f.len_mm >= opts_.limb_min_mm &&
-		    std::abs(f.u.dot(plane.n_S)) >= limb_cos)
+		const bool vertical = f.isLine() && f.len_mm >= opts_.limb_min_mm &&
+		                      std::abs(f.u.dot(plane.n_S)) >= limb_cos;
+		if (vertical) verticals.push_back(s);  // for the edge pairs
+		if (vertical && !cylinders_.empty())
 		{
 			const double h1 = plane.height_mm(f.p1), h2 = plane.height_mm(f.p2);
 			for (const LimbCylinder& c : cylinders_)

@@ -42,11 +42,11 @@ namespace mrolr::recog
 struct PlaneHypothesis
 {
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();
-	bool from_rim = false;   ///< a rim match
-	bool from_limb = false;  ///< a limb match
+	bool from_rim = false;        ///< a rim match
+	bool from_limb = false;       ///< a limb match
 	bool from_edge_pair = false;  ///< a vertical edge pair (none of the three: a horizontal line)
-	int model_feature = 0;  ///< index into the model's features
-	int scene_feature = 0;  ///< index into the scene's features
+	int model_feature = 0;        ///< index into the model's features
+	int scene_feature = 0;        ///< index into the scene's features
 };
 
 /** The lowest z (mm) of the model's edges (model::sampleWireFrame every 2 mm): its base, which
@@ -105,8 +105,9 @@ class PlaneHypothesisGenerator
 
 	void findVerticalEdgePairs();
 	/** Edge-pair hypotheses for the vertical scene lines @p verticals (indices into @p scene). */
-	void addEdgePairHypotheses(const std::vector<Feature>& scene, const std::vector<size_t>& verticals,
-	                           const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;
+	void addEdgePairHypotheses(const std::vector<Feature>& scene,
+	                           const std::vector<size_t>& verticals, const SupportPlane& plane,
+	                           std::vector<PlaneHypothesis>& out) const;
 	void findLimbCylinders();
 	void addLimbHypotheses(const LimbCylinder& c, size_t s, const Feature& scene_line,
 	                       const SupportPlane& plane, std::vector<PlaneHypothesis>& out) const;
