@@ -11,11 +11,6 @@ namespace mrolr::recog
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180;
-using detail::horizontalBasis;
-using detail::standOn;
-using detail::uprightRotation;
-
 /** A scene line's horizontal position in the plane's basis (h1, h2) and its height range. */
 struct Vertical
 {
@@ -26,7 +21,7 @@ struct Vertical
 
 void PlaneHypothesisGenerator::findVerticalEdgePairs()
 {
-	const double vertical_cos = std::cos(opts_.limb_vertical_tol_deg * kDeg);
+	const double vertical_cos = std::cos(opts_.limb_vertical_tol_deg * M_PI / 180);
 	std::vector<size_t> v;
 	for (size_t k = 0; k < model_.size(); ++k)
 		if (model_[k].isLine() && model_[k].len_mm >= opts_.edge_pair_min_mm &&
@@ -54,7 +49,7 @@ void PlaneHypothesisGenerator::addEdgePairHypotheses(const std::vector<Feature>&
                                                      std::vector<PlaneHypothesis>& out) const
 {
 	const Eigen::Vector3d& n = plane.n_S;
-	const auto [h1, h2] = horizontalBasis(n);
+	const auto [h1, h2] = detail::horizontalBasis(n);
 	std::vector<Vertical> vs;
 	for (const size_t s : verticals)
 	{
@@ -78,13 +73,12 @@ void PlaneHypothesisGenerator::addEdgePairHypotheses(const std::vector<Feature>&
 				const Eigen::Vector2d d_O = p.xy_j - p.xy_i;
 				const double yaw = std::atan2(d_S.y(), d_S.x()) - std::atan2(d_O.y(), d_O.x());
 				PlaneHypothesis h;
-				h.T_OinS.linear() = uprightRotation(n, yaw);
+				h.T_OinS.linear() = detail::uprightRotation(n, yaw);
 				const Eigen::Vector2d mid_S = 0.5 * (vs[a].xy + vs[b].xy);
 				const Eigen::Vector2d mid_O = 0.5 * (p.xy_i + p.xy_j);
 				const Eigen::Vector3d mid_O3(mid_O.x(), mid_O.y(), 0);
-				h.T_OinS.translation() =
-				    standOn(mid_S.x() * h1 + mid_S.y() * h2 - h.T_OinS.linear() * mid_O3, plane,
-				            base_z_mm_);
+				h.T_OinS.translation() = detail::standOn(
+				    mid_S.x() * h1 + mid_S.y() * h2 - h.T_OinS.linear() * mid_O3, plane, base_z_mm_);
 				h.from_edge_pair = true;
 				h.model_feature = static_cast<int>(p.i);
 				h.scene_feature = static_cast<int>(verticals[a]);
