@@ -1,14 +1,13 @@
 // Hypotheses from single features on the support plane (PlaneHypotheses.h): an upright object is
-// among the hypotheses of one of its rims or one of its horizontal lines seen alone; a line at the
-// wrong height above the plane makes none; with a stereo pair the recogniser finds a box from one
-// line; a bottle's limb alone gives its axis; bad [plane_hypotheses] values are rejected; the
-// shipped section equals the defaults.
+// among the hypotheses of one of its rims, one of its horizontal lines, a limb or two vertical
+// edges seen alone; a line at the wrong height above the plane makes none; bad [plane_hypotheses]
+// values are rejected; the shipped section equals the defaults. The recogniser with images:
+// plane_recogniser_images_test.cpp.
+#include "plane_test_util.h"
 #include "recog_test_util.h"
 
-#include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/Limbs.h>
 #include <mrolr/recog/PlaneHypotheses.h>
-#include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SyntheticObjects.h>
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
@@ -16,38 +15,16 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <opencv2/imgproc.hpp>
 
 #include <array>
 #include <random>
 #include <sstream>
 
 using namespace mrolr::recog;
+using namespace mrolr::recog::plane_test;
 
 namespace
 {
-constexpr double kFocal_px = 700, kBaseline_mm = 120;
-
-/** A camera 35° down onto a table top through (0, -200, 650) mm (left camera frame L: x left,
- * y up, z forward). */
-SupportPlane table()
-{
-	const double a = 35 * M_PI / 180;
-	return SupportPlane::through({0, -200, 650}, {0, std::cos(a), -std::sin(a)});
-}
-
-/** The model upright on @p plane: its +z along the normal, its origin (base) at @p p_S, turned
- * by @p yaw about the normal. */
-Eigen::Isometry3d upright(const SupportPlane& plane, const Eigen::Vector3d& p_S, double yaw)
-{
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = (Eigen::AngleAxisd(yaw, plane.n_S) *
-	              Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), plane.n_S))
-	                 .toRotationMatrix();
-	T.translation() = p_S - plane.height_mm(p_S) * plane.n_S;
-	return T;
-}
-
 /** (rotation deg, translation mm) error of the hypothesis of @p hyps nearest to @p truth (by the
  * larger of the two numbers). */
 std::pair<double, double> nearest(const std::vector<PlaneHypothesis>& hyps,
@@ -68,39 +45,6 @@ PlaneHypothesisGenerator generatorOf(const mrolr::model::WireFrame& m)
 	return PlaneHypothesisGenerator(featuresOf(m), modelBaseZ_mm(m), PlaneHypothesisOptions());
 }
 
-/** Index of the model line that is horizontal at height @p z_mm and longest. */
-size_t longestLineAt(const std::vector<Feature>& fs, double z_mm)
-{
-	size_t best = fs.size();
-	for (size_t i = 0; i < fs.size(); ++i)
-		if (fs[i].isLine() && std::abs(fs[i].u.z()) < 1e-6 && std::abs(fs[i].m.z() - z_mm) < 1e-6 &&
-		    (best == fs.size() || fs[i].len_mm > fs[best].len_mm))
-			best = i;
-	return best;
-}
-
-/** The part [0, @p f] of a line (a fragment sharing its start). */
-Feature fragment(const Feature& l, double f)
-{
-	Feature g = l;
-	g.p2 = l.p1 + f * (l.p2 - l.p1);
-	g.m = 0.5 * (g.p1 + g.p2);
-	g.len_mm = f * l.len_mm;
-	return g;
-}
-}  // namespace
-
-namespace
-{
-/** A line feature from @p a to @p b. */
-Feature lineFeature(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-	Feature f;
-	f.p1 = a, f.p2 = b, f.m = 0.5 * (a + b);
-	f.len_mm = (b - a).norm();
-	f.u = (b - a) / f.len_mm;
-	return f;
-}
 }  // namespace
 
 // A bottle's outline alone (one limb of its body, as stereo reconstructs it against the table):
@@ -286,113 +230,6 @@ TEST(plane_hypotheses, no_hypothesis_from_a_line_at_the_wrong_height_or_tilt)
 	rim.a_mm += 15, rim.b_mm += 15;
 	EXPECT_TRUE(cgen.generate({rim.transformed(upright(table(), {0, -200, 650}, 0))}, table())
 	                .empty());
-}
-
-namespace
-{
-mrolr::stereo::StereoCalibration calibration()
-{
-	mrolr::stereo::StereoCalibration c;
-	c.image_size = cv::Size(640, 480);
-	c.K_left = c.K_right = cv::Matx33d(kFocal_px, 0, 320, 0, kFocal_px, 240, 0, 0, 1);
-	c.t_LinR_mm = cv::Vec3d(-kBaseline_mm, 0, 0);
-	return c;
-}
-
-cv::Point pixel16(const Eigen::Vector3d& p_L, double cam_x_cv_mm)
-{
-	const Eigen::Vector3d c(-p_L.x() + cam_x_cv_mm, -p_L.y(), p_L.z());
-	return {static_cast<int>(std::lround(16 * (kFocal_px * c.x() / c.z() + 320))),
-	        static_cast<int>(std::lround(16 * (kFocal_px * c.y() / c.z() + 240)))};
-}
-
-/** The model's edges not hidden by itself, drawn 2 px wide by one camera of the pair. */
-cv::Mat drawEdges(const mrolr::model::WireFrame& m, const Eigen::Isometry3d& T_OinL,
-                  double cam_x_cv_mm)
-{
-	cv::Mat img(480, 640, CV_8U, cv::Scalar(20));
-	const auto fs = featuresOf(m);
-	const SelfOcclusion occ(fs);
-	const Eigen::Vector3d cam_O = T_OinL.inverse() * Eigen::Vector3d(cam_x_cv_mm, 0, 0);
-	const auto samples = edgeSamplesOf(m, 1.0);
-	for (size_t k = 1; k < samples.size(); ++k)
-	{
-		const auto &a = samples[k - 1], &b = samples[k];
-		if (a.feature != b.feature || (a.p_O - b.p_O).norm() > 3) continue;
-		if (occ.hidden(cam_O, a.p_O) || occ.hidden(cam_O, b.p_O)) continue;
-		cv::line(img, pixel16(T_OinL * a.p_O, cam_x_cv_mm), pixel16(T_OinL * b.p_O, cam_x_cv_mm),
-		         cv::Scalar(200), 2, cv::LINE_AA, 4);
-	}
-	return img;
-}
-
-/** Rotation error (deg) of the stapler box's pose @p T against @p truth, modulo the box's half
- * turn about its axis, and the distance (mm) between their box centres (27 mm up). */
-std::pair<double, double> boxPoseError(const Eigen::Isometry3d& T, const Eigen::Isometry3d& truth)
-{
-	const Eigen::Isometry3d turned = T * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ());
-	const double rot =
-	    std::min(test::rotationErrorDeg(T, truth), test::rotationErrorDeg(turned, truth));
-	const Eigen::Vector3d c(0, 0, 27);
-	return {rot, (T * c - truth * c).norm()};
-}
-}  // namespace
-
-// With the stereo pair, the recogniser finds the stapler box from one of its horizontal lines (a
-// fragment): the cliques have nothing to match, the plane hypotheses do; without the plane it is
-// not found; the cup is not found from the same line.
-TEST(plane_hypotheses, recogniser_finds_a_box_from_one_line_in_the_images)
-{
-	const auto box = makeStaplerBox();
-	const auto fs = featuresOf(box);
-	const auto T = upright(table(), {30, -190, 640}, 0.5);
-	const ImageVerifier images(drawEdges(box, T, 0), drawEdges(box, T, -kBaseline_mm),
-	                           calibration(), ImageVerificationOptions());
-	const std::vector<Feature> scene = {fragment(fs[longestLineAt(fs, 0)], 0.7).transformed(T)};
-	const SupportPlane plane = table();
-	const auto opts = RecognitionOptions::defaults();
-	const Recognizer rec(box, opts);
-	EXPECT_FALSE(rec.recognize(scene, &plane.n_S, &images).found);
-	const auto r = rec.recognize(scene, &plane.n_S, &images, &plane);
-	ASSERT_TRUE(r.found);
-	EXPECT_TRUE(r.from_plane);
-	EXPECT_GE(r.image_score, 0.7);
-	const auto [rot, centre] = boxPoseError(r.T_OinS, T);
-	EXPECT_LT(rot, 3.0);
-	EXPECT_LT(centre, 5.0);
-	EXPECT_FALSE(Recognizer(makeCup(), opts).recognize(scene, &plane.n_S, &images, &plane).found);
-	auto off = opts;
-	off.plane.enable = false;
-	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
-}
-
-// The same box seen by two of its vertical edges only (fragments, as stereo gives them against a
-// wall) is found from the edge pair; not when an edge-pair answer needs an image score no pose
-// reaches, nor with edge pairs off.
-TEST(plane_hypotheses, recogniser_finds_a_box_from_two_vertical_edges_in_the_images)
-{
-	const auto box = makeStaplerBox();
-	const auto T = upright(table(), {30, -190, 640}, 2.0);
-	const ImageVerifier images(drawEdges(box, T, 0), drawEdges(box, T, -kBaseline_mm),
-	                           calibration(), ImageVerificationOptions());
-	const Eigen::Vector3d a(80, -22.5, 0), b(80, 22.5, 0), lo(0, 0, 10), hi(0, 0, 45);
-	const std::vector<Feature> scene = {lineFeature(T * (a + lo), T * (a + hi)),
-	                                    lineFeature(T * (b + hi), T * (b + lo))};
-	const SupportPlane plane = table();
-	const auto opts = RecognitionOptions::defaults();
-	const auto r = Recognizer(box, opts).recognize(scene, &plane.n_S, &images, &plane);
-	ASSERT_TRUE(r.found);
-	EXPECT_TRUE(r.from_plane);
-	EXPECT_GE(r.image_score, opts.plane.edge_pair_min_image_score);
-	const auto [rot, centre] = boxPoseError(r.T_OinS, T);
-	EXPECT_LT(rot, 3.0);
-	EXPECT_LT(centre, 5.0);
-	auto strict = opts;
-	strict.plane.edge_pair_min_image_score = 1.0;
-	EXPECT_FALSE(Recognizer(box, strict).recognize(scene, &plane.n_S, &images, &plane).found);
-	auto off = opts;
-	off.plane.edge_pair_hypotheses = false;
-	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
 }
 
 TEST(plane_hypotheses, options_reject_bad_values)
