@@ -161,15 +161,6 @@ void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3
 	count(s_O, T_OinL, occ, 0, considered, supported, cost);
 }
 
-template <class Fn>
-void EdgeImage::forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                              const SelfOcclusion* occ, Fn fn) const
-{
-	forEachInViewWithDepth(s_O, T_OinL, occ,
-	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
-	                           bool limb, double) { fn(px, tangent, hidden, limb); });
-}
-
 bool EdgeImage::occludedAt(const cv::Point2d& px, double depth_mm) const
 {
 	if (occluder_z_.empty()) return false;

@@ -162,12 +162,8 @@ class EdgeImage
 
  private:
 	/** Projects the samples of @p s_O (and the limbs seen from this camera when enabled) at
-	 * @p T_OinL; calls @p fn(pixel, tangent pixel, hidden, limb) for those in the image. */
-	template <class Fn>
-	void forEachInView(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	                   const SelfOcclusion* occ, Fn fn) const;
-	/** As forEachInView, and @p fn gets a fifth argument: the sample's depth in this camera (mm);
-	 * @p outside (may be null) counts the samples not hidden by @p occ outside the image. */
+	 * @p T_OinL; calls @p fn(pixel, tangent pixel, hidden, limb, depth in this camera mm) for
+	 * those in the image; @p outside (may be null) counts those not hidden by @p occ outside it. */
 	template <class Fn>
 	void forEachInViewWithDepth(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	                            const SelfOcclusion* occ, Fn fn, int* outside = nullptr) const;
