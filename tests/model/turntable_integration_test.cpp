@@ -380,3 +380,14 @@ TEST(TurntableOptions, RimChordKeysAreReadAndChecked)
 	EXPECT_EQ(t.rim_chords.min_image_arc_deg, 150);
 	expectTurntableKeyRejected("rim_chord_max_radius_ratio = 0.5");
 }
+
+TEST(TurntableOptions, ViewsAreReconstructedWithoutCornerPlacedSegments)
+{
+	// corner-placed segments would turn a rim's edge-on chords into lines (docs/model.md, step 7)
+	mrolr::stereo::SceneOptions so;
+	so.segments.corner_lines = true;
+	so.segments.max_angle_diff_deg = 42;
+	const auto t = turntableSceneOptions(so);
+	EXPECT_FALSE(t.segments.corner_lines);
+	EXPECT_EQ(t.segments.max_angle_diff_deg, 42);  // the rest as given
+}

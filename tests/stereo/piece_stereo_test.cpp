@@ -7,6 +7,8 @@
 #include <mrolr/stereo/ImagePieces.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 
+#include <mrpt/config/CConfigFileMemory.h>
+
 #include <gtest/gtest.h>
 
 using namespace mrolr::stereo;
@@ -198,4 +200,79 @@ TEST(PieceStereo, CornerConsistencyChoosesBetweenTwoCandidates)
 	const double z20 = rect.pointInLeftCamera(300, 100, 20).z();
 	EXPECT_NEAR(depthOfA(0), z20 / 2, 0.01 * z20);  // off: the better grey wins, disparity 40
 	EXPECT_NEAR(depthOfA(4), z20, 0.01 * z20);      // on: consistent with B's corner
+}
+
+namespace
+{
+/** Edgels every pixel from a to b (px), gradient across the segment. */
+EdgeString edgelsAlong(cv::Point2d a, cv::Point2d b)
+{
+	const double len = cv::norm(b - a);
+	const cv::Point2d u = (b - a) / len;
+	EdgeString s;
+	for (int k = 0; k <= static_cast<int>(len); ++k)
+		s.push_back({a + u * static_cast<double>(k), {u.y, -u.x}});
+	return s;
+}
+}  // namespace
+
+TEST(PieceStereo, ShortUnpairedEdgePlacedFromItsCorners)
+{
+	// left: vertical edges A and B joined by C, which crosses the scanlines at 56°; the right
+	// image has A and B as segments (disparities 20 and 24) but C only as edgels (a short piece
+	// of a longer string there): C's ends take A's and B's disparities
+	const Rectifier rect(testRig(0));
+	const std::vector<EdgeMatch> no_matches;
+	const std::vector<EdgeString> left_strings(3, EdgeString(60));
+	const std::vector<ImagePiece> left = {linePiece(0, {300, 100}, {300, 160}, 150, 30),
+	                                      linePiece(1, {300, 160}, {320, 190}, 150, 60),
+	                                      linePiece(2, {320, 190}, {320, 250}, 150, 60)};
+	const std::vector<ImagePiece> right = {linePiece(0, {280, 100}, {280, 160}, 150, 30),
+	                                       linePiece(2, {296, 190}, {296, 250}, 150, 60)};
+	const std::vector<EdgeString> with_c = {edgelsAlong({280, 160}, {296, 190})};
+	const std::vector<EdgeString> without_c = {edgelsAlong({380, 160}, {396, 190})};
+	const auto lines = [&](const std::vector<EdgeString>& right_strings, bool corner_lines)
+	{
+		SegmentStereoOptions o;
+		o.corner_lines = corner_lines;
+		std::vector<LineFit3> out;
+		std::vector<ConicFit3> conics;
+		reconstructPieces({left_strings, left, right, no_matches, 5, 100, &right_strings}, rect,
+		                  FitOptions{}, o, out, conics);
+		return out;
+	};
+	const auto placed = lines(with_c, true);
+	ASSERT_EQ(placed.size(), 3u);
+	const Eigen::Vector3d c1 = rect.pointInLeftCamera(300, 160, 20),
+	                      c2 = rect.pointInLeftCamera(320, 190, 24);
+	EXPECT_LT((placed[1].p1 - c1).norm(), 1e-6 * c1.norm());
+	EXPECT_LT((placed[1].p2 - c2).norm(), 1e-6 * c2.norm());
+	EXPECT_EQ(lines(without_c, true).size(), 2u);  // nothing in the right image there
+	EXPECT_EQ(lines(with_c, false).size(), 2u);    // off
+}
+
+TEST(PieceStereo, CornerLineKeysAreReadAndChecked)
+{
+	mrpt::config::CConfigFileMemory cfg(
+	    "[scene]\nsegment_corner_lines = false\nsegment_corner_line_min_support = 0.5\n");
+	SegmentStereoOptions o;
+	o.loadFromConfigFile(cfg, "scene");
+	EXPECT_FALSE(o.corner_lines);
+	EXPECT_EQ(o.corner_line_min_support, 0.5);
+	for (const char* bad : {"0", "1.5", "x"})
+	{
+		mrpt::config::CConfigFileMemory b(std::string("[scene]\nsegment_corner_line_min_support = ") +
+		                                  bad + "\n");
+		try
+		{
+			SegmentStereoOptions().loadFromConfigFile(b, "scene");
+			ADD_FAILURE() << bad << " accepted";
+		}
+		catch (const std::exception& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("segment_corner_line_min_support"),
+			          std::string::npos)
+			    << e.what();
+		}
+	}
 }

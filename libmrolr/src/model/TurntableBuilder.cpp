@@ -181,9 +181,17 @@ void renumber(WireFrame& wf)
 	wf.cliques.clear();
 }
 
-WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& so,
+stereo::SceneOptions turntableSceneOptions(const stereo::SceneOptions& scene_options)
+{
+	stereo::SceneOptions so = scene_options;
+	so.segments.corner_lines = false;
+	return so;
+}
+
+WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& scene_options,
                              const TurntableOptions& o)
 {
+	const stereo::SceneOptions so = turntableSceneOptions(scene_options);
 	const stereo::StereoCalibration calib = stereo::loadStereoCalibration(set.calib_path);
 	std::vector<WireFrame> views;
 	std::vector<double> angles_deg;

@@ -1,4 +1,5 @@
 #include <mrolr/stereo/CornerPairStereo.h>
+#include <mrolr/stereo/EdgelSupport.h>
 #include <mrolr/stereo/EllipseStereo.h>
 #include <mrolr/stereo/SegmentStereo.h>
 #include <mrolr/util/Config.h>
@@ -100,8 +101,10 @@ std::optional<Pair> tryPair(const PieceStereoInput& in, size_t i, size_t j, doub
 	return p;
 }
 
-double cornerDisparity(const cv::Point2d& q, const std::vector<std::optional<Pair>>& pairs,
-                       const std::vector<EdgeMatch>& matches, const SegmentStereoOptions& o);
+std::vector<double> cornerDisparities(const cv::Point2d& q,
+                                      const std::vector<std::optional<Pair>>& pairs,
+                                      const std::vector<EdgeMatch>& matches,
+                                      const SegmentStereoOptions& o);
 
 /** Disparity of pair @p p's 3D line at row y (its linear profile, extended past its ends). */
 double pairDisparityAtRow(const Pair& p, double y)
@@ -119,8 +122,8 @@ double cornerInconsistency(const ImagePiece& l, const Pair& c,
 {
 	double cost = 0;
 	for (const cv::Point2d& q : {l.a, l.b})
-		if (const double d = cornerDisparity(q, others, matches, o); !std::isnan(d))
-			cost += std::abs(pairDisparityAtRow(c, q.y) - d) / o.corner_consistency_px;
+		if (const auto d = cornerDisparities(q, others, matches, o); !d.empty())
+			cost += std::abs(pairDisparityAtRow(c, q.y) - d.front()) / o.corner_consistency_px;
 	return cost;
 }
 
@@ -163,32 +166,39 @@ std::vector<std::optional<Pair>> matchSegments(const PieceStereoInput& in, const
 	return chosen;
 }
 
-/** Disparity at a corner q: from the nearest matched segment passing within corner_radius_px of q
- * (its linear disparity profile, extended by corner_radius_px beyond its ends), else the median of
- * the point matches within corner_radius_px; NaN if neither. */
-double cornerDisparity(const cv::Point2d& q, const std::vector<std::optional<Pair>>& pairs,
-                       const std::vector<EdgeMatch>& matches, const SegmentStereoOptions& o)
+/** Candidate disparities at a corner q, nearest first: each matched segment passing within
+ * corner_radius_px of q (its linear disparity profile, extended by corner_radius_px beyond its
+ * ends), then the median of the point matches within corner_radius_px; empty if neither. */
+std::vector<double> cornerDisparities(const cv::Point2d& q,
+                                      const std::vector<std::optional<Pair>>& pairs,
+                                      const std::vector<EdgeMatch>& matches,
+                                      const SegmentStereoOptions& o)
 {
-	double best = o.corner_radius_px, d = std::nan("");
-	for (const auto& p : pairs)
+	std::vector<std::pair<double, double>> by_distance;  // (px from q, disparity px)
+	for (auto it = pairs.rbegin(); it != pairs.rend(); ++it)  // of two as near, the later first
 	{
+		const auto& p = *it;
 		if (!p) continue;
 		const cv::Point2d a(p->e1.x, p->e1.y), ab = cv::Point2d(p->e2.x, p->e2.y) - a;
 		const double len = cv::norm(ab);
 		if (len < 1) continue;
 		const double t = std::clamp((q - a).dot(ab) / (len * len), -o.corner_radius_px / len,
 		                            1 + o.corner_radius_px / len);
-		if (const double r = cv::norm(a + t * ab - q); r <= best)
-			best = r, d = p->e1.z + t * (p->e2.z - p->e1.z);
+		if (const double r = cv::norm(a + t * ab - q); r <= o.corner_radius_px)
+			by_distance.emplace_back(r, p->e1.z + t * (p->e2.z - p->e1.z));
 	}
-	if (!std::isnan(d)) return d;
+	std::stable_sort(by_distance.begin(), by_distance.end(),
+	                 [](const auto& x, const auto& y) { return x.first < y.first; });
+	std::vector<double> out;
+	for (const auto& c : by_distance) out.push_back(c.second);
 	std::vector<double> near;
 	for (const auto& m : matches)
 		if (std::hypot(m.x_left_px - q.x, m.y_px - q.y) <= o.corner_radius_px)
 			near.push_back(m.disparity_px);
-	if (near.empty()) return d;
+	if (near.empty()) return out;
 	std::nth_element(near.begin(), near.begin() + static_cast<long>(near.size() / 2), near.end());
-	return near[near.size() / 2];
+	out.push_back(near[near.size() / 2]);
+	return out;
 }
 
 /** Is there a right segment near the scanline direction along the predicted right segment a → b? */
@@ -208,18 +218,45 @@ bool rightSegmentAlong(const PieceStereoInput& in, cv::Point2d a, cv::Point2d b,
 	return false;
 }
 
-/** A left piece along the scanlines placed from the disparities at its two corners. */
+/** A left piece along the scanlines placed from the disparities at its two corners (the nearest
+ * candidates) when the right image shows a segment along the predicted position. */
 std::optional<LineFit3> horizontalLine(const PieceStereoInput& in, const ImagePiece& l,
                                        const std::vector<std::optional<Pair>>& pairs,
                                        const Rectifier& rect, const SegmentStereoOptions& o)
 {
-	const double da = cornerDisparity(l.a, pairs, in.matches, o),
-	             db = cornerDisparity(l.b, pairs, in.matches, o);
-	if (std::isnan(da) || std::isnan(db) ||
-	    !rightSegmentAlong(in, l.a - cv::Point2d(da, 0), l.b - cv::Point2d(db, 0), o))
+	const auto da = cornerDisparities(l.a, pairs, in.matches, o),
+	           db = cornerDisparities(l.b, pairs, in.matches, o);
+	if (da.empty() || db.empty() ||
+	    !rightSegmentAlong(in, l.a - cv::Point2d(da[0], 0), l.b - cv::Point2d(db[0], 0), o))
 		return std::nullopt;
-	return LineFit3{rect.pointInLeftCamera(l.a.x, l.a.y, da),
-	                rect.pointInLeftCamera(l.b.x, l.b.y, db), 0, static_cast<int>(l.hi - l.lo)};
+	return LineFit3{rect.pointInLeftCamera(l.a.x, l.a.y, da[0]),
+	                rect.pointInLeftCamera(l.b.x, l.b.y, db[0]), 0, static_cast<int>(l.hi - l.lo)};
+}
+
+/** A left line piece across the scanlines that no right segment pairs with (too short in the right
+ * image, or split there differently) placed from the candidate disparities at its two corners:
+ * the first pair (nearest first) within the disparity range and gradient limit whose predicted
+ * right segment lies on right edgels for corner_line_min_support of its length. */
+std::optional<LineFit3> cornerPlacedLine(const PieceStereoInput& in, const ImagePiece& l,
+                                         const std::vector<std::optional<Pair>>& pairs,
+                                         const Rectifier& rect, const SegmentStereoOptions& o)
+{
+	if (!in.right_strings) return std::nullopt;
+	const double len = cv::norm(l.b - l.a);
+	const auto inRange = [&](double d) { return d >= in.d_min_px && d <= in.d_max_px; };
+	for (const double da : cornerDisparities(l.a, pairs, in.matches, o))
+		for (const double db : cornerDisparities(l.b, pairs, in.matches, o))
+		{
+			if (!inRange(da) || !inRange(db) || std::abs(db - da) > o.max_disparity_gradient * len)
+				continue;
+			if (edgelSupport(*in.right_strings, l.a - cv::Point2d(da, 0),
+			                 l.b - cv::Point2d(db, 0), o.max_angle_diff_deg) >=
+			    o.corner_line_min_support)
+				return LineFit3{rect.pointInLeftCamera(l.a.x, l.a.y, da),
+				                rect.pointInLeftCamera(l.b.x, l.b.y, db), 0,
+				                static_cast<int>(l.hi - l.lo)};
+		}
+	return std::nullopt;
 }
 
 std::vector<StereoEdgel> matchedEdgels(const ImagePiece& p, const MatchIndex& m,
@@ -263,7 +300,12 @@ void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const 
 				continue;
 			}
 		}
-		if (p.is_line) continue;  // left to the 3D strings of the point matches
+		if (p.is_line)
+		{
+			if (o.corner_lines)
+				if (auto c = cornerPlacedLine(in, p, pairs, rect, o)) lines.push_back(*c);
+			continue;  // else left to the 3D strings of the point matches
+		}
 		auto e = ellipsePairSamples(in, p, rect);
 		if (static_cast<int>(e.size()) < 2 * o.min_conic_matches) e = matchedEdgels(p, m, rect);
 		const auto arc = piecePoints(in.left_strings, p);
@@ -291,6 +333,8 @@ void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBas
 	corner_pairs = util::readBool(cfg, section, "segment_corner_pairs", corner_pairs);
 	rd("segment_corner_row_tol_px", corner_row_tol_px);
 	rd("segment_corner_consistency_px", corner_consistency_px);
+	corner_lines = util::readBool(cfg, section, "segment_corner_lines", corner_lines);
+	rd("segment_corner_line_min_support", corner_line_min_support);
 	min_line_edgels =
 	    static_cast<int>(util::readInt(cfg, section, "segment_min_line_edgels", min_line_edgels));
 	both_sides_below_edgels = static_cast<int>(
@@ -298,6 +342,8 @@ void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBas
 	util::requireInRange(cfg, section, "segment_corner_row_tol_px", corner_row_tol_px, 0.01, 10);
 	util::requireInRange(cfg, section, "segment_min_row_overlap", min_row_overlap, 0, 1);
 	util::requireInRange(cfg, section, "segment_min_conic_matches", min_conic_matches, 3, 1e6);
+	util::requireInRange(cfg, section, "segment_corner_line_min_support", corner_line_min_support,
+	                     0.01, 1);
 }
 
 void SegmentStereoOptions::dump(std::ostream& out) const
@@ -314,7 +360,9 @@ void SegmentStereoOptions::dump(std::ostream& out) const
 	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px
 	    << "\nsegment_min_line_edgels = " << min_line_edgels
 	    << "\nsegment_both_sides_below_edgels = " << both_sides_below_edgels
-	    << "\nsegment_corner_consistency_px = " << corner_consistency_px << "\n";
+	    << "\nsegment_corner_consistency_px = " << corner_consistency_px
+	    << "\nsegment_corner_lines = " << corner_lines
+	    << "\nsegment_corner_line_min_support = " << corner_line_min_support << "\n";
 }
 
 }  // namespace mrolr::stereo

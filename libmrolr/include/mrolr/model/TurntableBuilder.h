@@ -81,7 +81,14 @@ void cropToObject(WireFrame& wf, const TurntableOptions& options);
 WireFrame viewInObjectFrame(const stereo::StereoScene& scene, const Eigen::Isometry3d& T_LinT_mm,
                             double angle_deg, const TurntableOptions& options);
 
-/** Builds the object model from all views, merged; ids renumbered 1, 2, … */
+/** The scene options of a turntable view: @p scene_options without corner-placed lines
+ * (segment_corner_lines), which on a rim seen nearly edge-on join its short chords into straight
+ * 3D lines and so take away the chords the rim is recovered from (rimsFromChords; the bottle's
+ * neck rim). */
+stereo::SceneOptions turntableSceneOptions(const stereo::SceneOptions& scene_options);
+
+/** Builds the object model from all views (with turntableSceneOptions), merged; ids renumbered
+ * 1, 2, … */
 WireFrame buildFromTurntable(const TurntableSet& set, const stereo::SceneOptions& scene_options,
                              const TurntableOptions& options);
 

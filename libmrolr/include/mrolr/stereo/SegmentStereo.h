@@ -6,7 +6,10 @@
  * x_R(y) along the rows the two segments share, so the 3D ends are where the segments' epipolar
  * extents overlap. A piece near the scanline direction has no usable d(y) (both planes contain
  * the baseline); its two ends are corners where it meets matched segments, whose disparities it
- * takes, and the right image must show a segment along the predicted position. An elliptical arc
+ * takes, and the right image must show a segment along the predicted position. A piece across the
+ * scanlines that pairs with no right segment (a box's short receding edge, which the other camera
+ * sees foreshortened to a few edgels of a longer string) is placed the same way when the right
+ * image has edgels along the predicted segment (EdgelSupport.h). An elliptical arc
  * of the left image is reconstructed from the samples of its ellipse pair (EllipseStereo.h), or
  * else from the point matches inside it, and back-projected whole (Fit3's conicFromEllipse). */
 
@@ -43,6 +46,11 @@ struct SegmentStereoOptions
 	 * |d_candidate − d_corner| / this (px) at each of its ends where another matched segment (or
 	 * point matches) gives the corner's disparity; 0: off */
 	double corner_consistency_px = 0;
+	/** A left line piece across the scanlines with no right partner (too short in the right image,
+	 * or split there differently) is placed from the disparities at its two corners when the right
+	 * image has edgels along corner_line_min_support of the predicted segment */
+	bool corner_lines = true;
+	double corner_line_min_support = 0.7;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;

@@ -136,7 +136,8 @@ ViewsInTurntableFrame reconstructViews(const model::TurntableSet& set,
 	{
 		const cv::Mat left = readImage(v.left_png), right = readImage(v.right_png);
 		AlignView view;
-		view.wf_T = model::viewInObjectFrame(stereo::reconstructScene(left, right, calib, so),
+		view.wf_T = model::viewInObjectFrame(
+		    stereo::reconstructScene(left, right, calib, model::turntableSceneOptions(so)),
 		                                     set.T_LinT_mm, 0.0, c.turntable);
 		if (io) view.images = std::make_shared<recog::ImageVerifier>(left, right, calib, *io);
 		out.views.push_back(std::move(view));
