@@ -121,6 +121,7 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	segments.loadFromConfigFile(cfg, section);
 	dense.loadFromConfigFile(cfg, section);
 	circles.loadFromConfigFile(cfg, section);
+	edge_on_rims.loadFromConfigFile(cfg, section);
 }
 
 void SceneOptions::dump(std::ostream& out) const
@@ -138,6 +139,7 @@ void SceneOptions::dump(std::ostream& out) const
 	segments.dump(out);
 	dense.dump(out);
 	circles.dump(out);
+	edge_on_rims.dump(out);
 }
 
 std::vector<std::vector<StereoEdgel>> stereoStrings(const std::vector<EdgeMatch>& matches,
@@ -180,6 +182,14 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	if (o.segments.enabled) addPieceFeatures(ls, rs, lr, rr, matches, rect, o, scene);
 	if (o.dense.enabled) addDenseFeatures(ls, lr, rr, matches, rect, o, scene);
 	if (o.circles.enabled && up_L) addHorizontalCircles(ls, rs, lr, matches, rect, *up_L, o, scene);
+	if (o.edge_on_rims.enabled && up_L)
+	{
+		FitOptions piece_fit = o.fit;
+		if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
+		const auto rims = edgeOnRims(ls, segmentImageStrings(ls, lr, piece_fit), scene.lines,
+		                             scene.conics, *up_L, rect, o.edge_on_rims);
+		scene.edge_on_rims = addNewFeatures(scene, {}, rims, o.segments.duplicate_mm);
+	}
 	return scene;
 }
 

@@ -7,6 +7,7 @@
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
+#include <mrolr/stereo/EdgeOnRims.h>
 #include <mrolr/stereo/HorizontalCircles.h>
 #include <mrolr/stereo/HorizontalEdges.h>
 #include <mrolr/stereo/Rectifier.h>
@@ -36,6 +37,7 @@ struct SceneOptions
 	SegmentStereoOptions segments;  ///< piece stereo (SegmentStereo.h) adds what 3D strings miss
 	DenseEdgeOptions dense;  ///< dense disparities for unmatched edgels (DenseEdgeStereo.h)
 	HorizontalCircleOptions circles;  ///< rims as horizontal circles (needs the up direction)
+	EdgeOnRimOptions edge_on_rims;    ///< rims seen edge-on (needs the up direction)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -51,6 +53,7 @@ struct StereoScene
 	size_t piece_features = 0;    ///< lines and conics added by piece stereo (SegmentStereo.h)
 	size_t dense_features = 0;    ///< lines and conics added by dense edge stereo
 	size_t circle_features = 0;   ///< horizontal circles added (HorizontalCircles.h)
+	size_t edge_on_rims = 0;      ///< rims seen edge-on added (EdgeOnRims.h)
 };
 
 /** Splits the matched edgels of each left string into 3D edge strings: a new string starts after
