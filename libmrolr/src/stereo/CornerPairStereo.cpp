@@ -13,16 +13,6 @@ struct Corners
 	cv::Point2d first, second;
 };
 
-/** Intersection of the lines through a → b and c → d (px); false when nearly parallel. */
-bool intersect(cv::Point2d a, cv::Point2d b, cv::Point2d c, cv::Point2d d, cv::Point2d& x)
-{
-	const cv::Point2d u = b - a, v = d - c;
-	const double den = u.cross(v);
-	if (std::abs(den) < std::sin(20 * M_PI / 180) * cv::norm(u) * cv::norm(v)) return false;
-	x = a + u * ((c - a).cross(v) / den);
-	return true;
-}
-
 /** The corner at end @p end of piece i: the intersection with another line piece (of any string:
  * edge chains often break at corners, or round them with a short arc) that ends within 8 px of
  * it, the intersection within 6 px of both ends. */
@@ -33,13 +23,12 @@ std::optional<cv::Point2d> cornerAt(const std::vector<ImagePiece>& pieces, size_
 	for (size_t j = 0; j < pieces.size(); ++j)
 	{
 		const ImagePiece& n = pieces[j];
-		cv::Point2d x;
 		if (j == i || !n.is_line) continue;
 		const cv::Point2d n_end = cv::norm(n.a - end) < cv::norm(n.b - end) ? n.a : n.b;
-		if (cv::norm(n_end - end) > 8 || !intersect(pieces[i].a, pieces[i].b, n.a, n.b, x) ||
-		    cv::norm(x - end) > 6 || cv::norm(x - n_end) > 6)
-			continue;
-		if (!best || cv::norm(x - end) < cv::norm(*best - end)) best = x;
+		if (cv::norm(n_end - end) > 8) continue;
+		const auto x = lineIntersection(pieces[i].a, pieces[i].b, n.a, n.b);
+		if (!x || cv::norm(*x - end) > 6 || cv::norm(*x - n_end) > 6) continue;
+		if (!best || cv::norm(*x - end) < cv::norm(*best - end)) best = *x;
 	}
 	return best;
 }

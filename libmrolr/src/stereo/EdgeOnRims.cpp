@@ -12,15 +12,6 @@ namespace mrolr::stereo
 {
 namespace
 {
-/** Intersection of the image lines through a → b and c → d; nothing when nearly parallel. */
-std::optional<cv::Point2d> intersect(cv::Point2d a, cv::Point2d b, cv::Point2d c, cv::Point2d d)
-{
-	const cv::Point2d u = b - a, v = d - c;
-	const double den = u.cross(v);
-	if (std::abs(den) < std::sin(20 * M_PI / 180) * cv::norm(u) * cv::norm(v)) return std::nullopt;
-	return a + u * ((c - a).cross(v) / den);
-}
-
 /** Candidate tangent points at end @p q of rim piece @p p, nearest first: where the piece's line
  * meets the image of each steep 3D line passing within corner_radius_px of q (3D, mm in L), and
  * which line. */
@@ -39,7 +30,7 @@ std::vector<std::pair<Eigen::Vector3d, size_t>> tangentPoints(const ImagePiece& 
 		if (l.p1.z() <= 0 || l.p2.z() <= 0) continue;
 		const cv::Point2d u1 = rect.leftPixelOf(l.p1), u2 = rect.leftPixelOf(l.p2);
 		const double len = cv::norm(u2 - u1);
-		const auto x = len > 1 ? intersect(p.a, p.b, u1, u2) : std::nullopt;
+		const auto x = len > 1 ? lineIntersection(p.a, p.b, u1, u2) : std::nullopt;
 		if (!x) continue;
 		// near the end, or on the piece's line beyond it (the rim's edge may fade before the
 		// silhouette where its two sides have the same grey)

@@ -122,6 +122,15 @@ void mergeArcs(const std::vector<cv::Point2d>& p, const FitOptions& o,
 }
 }  // namespace
 
+std::optional<cv::Point2d> lineIntersection(cv::Point2d a, cv::Point2d b, cv::Point2d c,
+                                            cv::Point2d d)
+{
+	const cv::Point2d u = b - a, v = d - c;
+	const double den = u.cross(v);
+	if (std::abs(den) < std::sin(20 * M_PI / 180) * cv::norm(u) * cv::norm(v)) return std::nullopt;
+	return a + u * ((c - a).cross(v) / den);
+}
+
 std::vector<cv::Point2d> piecePoints(const std::vector<EdgeString>& strings, const ImagePiece& p)
 {
 	std::vector<cv::Point2d> out;

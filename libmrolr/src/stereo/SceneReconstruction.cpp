@@ -87,6 +87,14 @@ std::vector<EdgeString> keepInside(const std::vector<EdgeString>& strings, const
 	return out;
 }
 
+/** The fitting options of the 2D pieces: the scene's, with segment_min_line_edgels if set. */
+FitOptions pieceFitOptions(const SceneOptions& o)
+{
+	FitOptions f = o.fit;
+	if (o.segments.min_line_edgels > 0) f.min_line_edgels = o.segments.min_line_edgels;
+	return f;
+}
+
 bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
 {
 	return m.string == prev.string && m.edgel - prev.edgel <= o.max_gap_edgels + 1 &&
@@ -184,10 +192,8 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	if (o.circles.enabled && up_L) addHorizontalCircles(ls, rs, lr, matches, rect, *up_L, o, scene);
 	if (o.edge_on_rims.enabled && up_L)
 	{
-		FitOptions piece_fit = o.fit;
-		if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
-		const auto rims = edgeOnRims(ls, segmentImageStrings(ls, lr, piece_fit), scene.lines,
-		                             scene.conics, *up_L, rect, o.edge_on_rims);
+		const auto rims = edgeOnRims(ls, segmentImageStrings(ls, lr, pieceFitOptions(o)),
+		                             scene.lines, scene.conics, *up_L, rect, o.edge_on_rims);
 		scene.edge_on_rims = addNewFeatures(scene, {}, rims, o.segments.duplicate_mm);
 	}
 	return scene;
@@ -197,8 +203,7 @@ void addPieceFeatures(const std::vector<EdgeString>& ls, const std::vector<EdgeS
                       const cv::Mat& lr, const cv::Mat& rr, const std::vector<EdgeMatch>& matches,
                       const Rectifier& rect, const SceneOptions& o, StereoScene& scene)
 {
-	FitOptions piece_fit = o.fit;
-	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
+	const FitOptions piece_fit = pieceFitOptions(o);
 	const auto lp = segmentImageStrings(ls, lr, piece_fit),
 	           rp = segmentImageStrings(rs, rr, piece_fit);
 	std::vector<LineFit3> lines;
@@ -227,9 +232,7 @@ void addHorizontalCircles(const std::vector<EdgeString>& ls, const std::vector<E
                           const std::vector<EdgeMatch>& matches, const Rectifier& rect,
                           const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene)
 {
-	FitOptions piece_fit = o.fit;
-	if (o.segments.min_line_edgels > 0) piece_fit.min_line_edgels = o.segments.min_line_edgels;
-	const auto lp = segmentImageStrings(ls, lr, piece_fit);
+	const auto lp = segmentImageStrings(ls, lr, pieceFitOptions(o));
 	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles,
 	                                 &rs);
 	scene.circle_features = addNewFeatures(scene, {}, c, o.segments.duplicate_mm);

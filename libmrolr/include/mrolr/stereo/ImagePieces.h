@@ -10,6 +10,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace mrolr::stereo
@@ -28,6 +29,11 @@ struct ImagePiece
 /** Pieces of every string; @p grey is the rectified image the strings came from (8-bit). */
 std::vector<ImagePiece> segmentImageStrings(const std::vector<EdgeString>& strings,
                                             const cv::Mat& grey, const FitOptions& o);
+
+/** Intersection (px) of the image lines through a → b and c → d; nothing when they cross at less
+ * than 20° (a corner is not located along nearly parallel lines). */
+std::optional<cv::Point2d> lineIntersection(cv::Point2d a, cv::Point2d b, cv::Point2d c,
+                                            cv::Point2d d);
 
 /** The image points of a piece's edgels, in order. */
 std::vector<cv::Point2d> piecePoints(const std::vector<EdgeString>& strings, const ImagePiece& p);
