@@ -49,5 +49,6 @@ struct Arm : mrolr::hw::ArmDevice
 	mrolr::hw::ArmJoints joints() const override { return j; }
 	void setGripper(bool c) override { closed = c; }
 	bool gripperClosed() const override { return closed; }
+	double gripperWidthMm() const override { return closed ? 0 : 90; }
 };
 }  // namespace fake

@@ -39,7 +39,7 @@ TEST(SerialClient, BaseDriverSendsExactBytesAndReadsOdometry)
 	auto [host, dev] = makeMemoryPipe();
 	ScriptedPeer peer(
 	    std::move(dev),
-	    {{f("1 OK LABMATE 1")}, {f("2 OK")}, {f("3 OK 0.5 -0.25 0.125 10000 9990 2.5")}});
+	    {{f("1 OK LABMATE 1")}, {f("2 OK")}, {f("3 OK 0.5 -0.25 0.125 10000 9990 2.5 1")}});
 	SerialBase base(std::make_unique<SerialClient>(std::move(host), fastLink()));
 	base.step({0.2, -0.1, 0.5});
 	const Odometry o = base.odometry();
@@ -52,6 +52,7 @@ TEST(SerialClient, BaseDriverSendsExactBytesAndReadsOdometry)
 	EXPECT_EQ(o.ticks_right, 10000);
 	EXPECT_EQ(o.ticks_left, 9990);
 	EXPECT_EQ(o.time_s, 2.5);
+	EXPECT_TRUE(o.bumper);
 }
 
 TEST(SerialClient, RepliesArrivingInPiecesAreReassembled)
@@ -167,12 +168,22 @@ TEST(SerialClient, ADisconnectIsReportedAtOnce)
 TEST(SerialClient, MalformedReplyFieldsAreReportedAsGarbage)
 {
 	auto [host, dev] = makeMemoryPipe();
-	ScriptedPeer peer(std::move(dev), {{f("1 OK LABMATE 1")}, {f("2 OK 1 2 3 4.5 6 7")}});
+	ScriptedPeer peer(std::move(dev), {{f("1 OK LABMATE 1")}, {f("2 OK 1 2 3 4.5 6 7 0")}});
 	SerialBase base(std::make_unique<SerialClient>(std::move(host), fastLink()));
 	const auto e = expectSerialError([&] { base.odometry(); });
 	EXPECT_EQ(e.kind(), Kind::Garbage);
 	EXPECT_NE(std::string(e.what()).find("ticks_r: '4.5' is not an integer"), std::string::npos)
 	    << e.what();
+}
+
+TEST(SerialClient, ABumperFieldOtherThanZeroOrOneIsGarbage)
+{
+	auto [host, dev] = makeMemoryPipe();
+	ScriptedPeer peer(std::move(dev), {{f("1 OK LABMATE 1")}, {f("2 OK 1 2 3 4 6 7 yes")}});
+	SerialBase base(std::make_unique<SerialClient>(std::move(host), fastLink()));
+	const auto e = expectSerialError([&] { base.odometry(); });
+	EXPECT_EQ(e.kind(), Kind::Garbage);
+	EXPECT_NE(std::string(e.what()).find("bumper"), std::string::npos) << e.what();
 }
 
 TEST(SerialDrivers, RefuseAnotherDeviceOnThePort)
@@ -203,8 +214,10 @@ TEST(SerialDrivers, LimitRefusalsBecomeTheInterfacesExceptions)
 	EXPECT_THROW(sarm.moveTo({-1, 0, 0, 0, 0, 0, 0}), std::out_of_range);
 	EXPECT_THROW(shead.grab(), std::logic_error);  // no image source
 	EXPECT_DOUBLE_EQ(shead.moveTo({0.1, 0, 0, 0}), 0.5);
+	EXPECT_DOUBLE_EQ(sarm.gripperWidthMm(), 90);
 	sarm.setGripper(true);
 	EXPECT_TRUE(sarm.gripperClosed());
+	EXPECT_DOUBLE_EQ(sarm.gripperWidthMm(), 0);
 	EXPECT_TRUE(arm.closed);
 }
 

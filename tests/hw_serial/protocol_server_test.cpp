@@ -40,7 +40,7 @@ TEST_F(BaseProtocol, BaseStepsAndReportsOdometry)
 	EXPECT_EQ(base.steps[0].v1_mps, 0.2);
 	EXPECT_EQ(base.steps[0].v2_mps, 0.1);
 	EXPECT_EQ(base.steps[0].dt_s, 0.5);
-	EXPECT_EQ(ask(server, "3 ODO?"), "3 OK 0.1 0 0 10 -3 0.5");
+	EXPECT_EQ(ask(server, "3 ODO?"), "3 OK 0.1 0 0 10 -3 0.5 0");
 }
 
 TEST_F(BaseProtocol, ExactReplyBytes)
@@ -124,7 +124,7 @@ TEST(ProtocolServer, ArmMovesGripsAndRefusesLimits)
 	EXPECT_EQ(ask(server, "1 MOVE 500 10 -20 30 -40 50 -60"), "1 OK");
 	EXPECT_EQ(ask(server, "2 JNT?"), "2 OK 500 10 -20 30 -40 50 -60");
 	EXPECT_EQ(ask(server, "3 GRIP 1"), "3 OK");
-	EXPECT_EQ(ask(server, "4 GRIP?"), "4 OK 1");
+	EXPECT_EQ(ask(server, "4 GRIP?"), "4 OK 1 0");
 	EXPECT_EQ(ask(server, "5 GRIP 2").rfind("5 ERR BADARG", 0), 0u);
 	EXPECT_EQ(ask(server, "6 GRIP").rfind("6 ERR BADARG", 0), 0u);
 	EXPECT_EQ(ask(server, "7 MOVE -1 0 0 0 0 0 0"),

@@ -31,7 +31,7 @@ TEST(SerialApp, SendPrintsTheReplyOfAnEmulatedDevice)
 	EXPECT_EQ(base.steps[0].v2_mps, -0.5);
 	auto odo = parsed({"send", pty.slavePath(), "ODO?", "--json"});
 	EXPECT_EQ(odo.run(), 0);
-	EXPECT_EQ(odo.reply, (std::vector<std::string>{"0.5", "0", "0", "10", "-3", "2"}));
+	EXPECT_EQ(odo.reply, (std::vector<std::string>{"0.5", "0", "0", "10", "-3", "2", "0"}));
 }
 
 TEST(SerialApp, SendReportsTheDevicesRefusalAndMissingPorts)

@@ -62,6 +62,7 @@ std::vector<std::string> BaseHandler::execute(const std::string& verb,
 	fields.push_back(std::to_string(o.ticks_right));
 	fields.push_back(std::to_string(o.ticks_left));
 	fields.push_back(formatNumber(o.time_s));
+	fields.push_back(o.bumper ? "1" : "0");
 	return fields;
 }
 
@@ -101,7 +102,8 @@ std::vector<std::string> ArmHandler::execute(const std::string& verb,
 	}
 	if (verb != "GRIP?" && verb != "JNT?") unknown(verb, kArmId);
 	requireNoArgs(args, verb);
-	if (verb == "GRIP?") return {device_.gripperClosed() ? "1" : "0"};
+	if (verb == "GRIP?")
+		return {device_.gripperClosed() ? "1" : "0", formatNumber(device_.gripperWidthMm())};
 	const auto j = device_.joints();
 	return numberFields(std::vector<double>(j.begin(), j.end()));
 }

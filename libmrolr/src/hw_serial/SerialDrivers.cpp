@@ -69,8 +69,8 @@ Odometry SerialBase::odometry() const
 {
 	const auto f = client_->call("ODO?", {});
 	Odometry o;
-	if (f.size() != 6)
-		replyNumbers(*client_, f, 6, "ODO? reply");  // throws, naming the field count
+	if (f.size() != 7)
+		replyNumbers(*client_, f, 7, "ODO? reply");  // throws, naming the field count
 	const auto pose = replyNumbers(*client_, {f[0], f[1], f[2]}, 3, "ODO? pose");
 	o.xv_zxphi = Eigen::Vector3d(pose[0], pose[1], pose[2]);
 	try
@@ -83,6 +83,8 @@ Odometry SerialBase::odometry() const
 		replyNumbers(*client_, {"x"}, 1, e.what());  // reported as a malformed reply
 	}
 	o.time_s = replyNumbers(*client_, {f[5]}, 1, "ODO? t_s")[0];
+	if (f[6] != "0" && f[6] != "1") replyNumbers(*client_, {"x"}, 1, "ODO? bumper is not 0 or 1");
+	o.bumper = f[6] == "1";
 	return o;
 }
 
@@ -150,12 +152,26 @@ void SerialArm::setGripper(bool closed)
 	client_->call("GRIP", {closed ? "1" : "0"});
 }
 
+namespace
+{
+/** `GRIP?` → (closed, width_mm). */
+std::pair<bool, double> gripperState(SerialClient& client)
+{
+	const auto f = client.call("GRIP?", {});
+	if (f.size() != 2 || (f[0] != "0" && f[0] != "1"))
+		replyNumbers(client, {"x"}, 1, "GRIP? reply is not '0|1 width_mm'");
+	return {f[0] == "1", replyNumbers(client, {f[1]}, 1, "GRIP? width_mm")[0]};
+}
+}  // namespace
+
 bool SerialArm::gripperClosed() const
 {
-	const auto f = client_->call("GRIP?", {});
-	if (f.size() != 1 || (f[0] != "0" && f[0] != "1"))
-		replyNumbers(*client_, {"x"}, 1, "GRIP? reply is not 0 or 1");
-	return f[0] == "1";
+	return gripperState(*client_).first;
+}
+
+double SerialArm::gripperWidthMm() const
+{
+	return gripperState(*client_).second;
 }
 
 }  // namespace mrolr::hw

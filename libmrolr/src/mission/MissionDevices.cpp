@@ -78,6 +78,7 @@ class ShadowedArm : public hw::ArmDevice
 		d_.lab.setGripper(closed);
 	}
 	bool gripperClosed() const override { return d_.serial->gripperClosed(); }
+	double gripperWidthMm() const override { return d_.serial->gripperWidthMm(); }
 
  private:
 	Pair<hw::ArmDevice> d_;

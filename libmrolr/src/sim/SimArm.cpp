@@ -25,6 +25,8 @@ void SimArmOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 			                        kJointNames[i] + " maximum must exceed its minimum");
 	}
 	grasp_radius_m = util::readDouble(cfg, section, "grasp_radius_m", grasp_radius_m);
+	open_width_mm = util::readDouble(cfg, section, "open_width_mm", open_width_mm);
+	util::requireInRange(cfg, section, "open_width_mm", open_width_mm, 1, 1000);
 }
 
 void SimArmOptions::dump(std::ostream& out) const
@@ -33,13 +35,17 @@ void SimArmOptions::dump(std::ostream& out) const
 	for (double v : min) out << " " << v;
 	out << "\njoint_max =";
 	for (double v : max) out << " " << v;
-	out << "\ngrasp_radius_m = " << grasp_radius_m << "\n";
+	out << "\ngrasp_radius_m = " << grasp_radius_m << "\nopen_width_mm = " << open_width_mm << "\n";
 }
 
 SimArm::SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW,
                const SimArmOptions& o, std::map<std::string, Eigen::Isometry3d>& objects,
-               mrpt::opengl::COpenGLScene* scene)
-    : T_GinW_(std::move(T_GinW)), options_(o), objects_(objects), scene_(scene)
+               mrpt::opengl::COpenGLScene* scene, JawWidth jaw_width)
+    : T_GinW_(std::move(T_GinW)),
+      options_(o),
+      objects_(objects),
+      scene_(scene),
+      jaw_width_(std::move(jaw_width))
 {
 	for (int i = 0; i < 7; ++i) joints_[i] = std::clamp(0.0, o.min[i], o.max[i]);
 }
@@ -72,6 +78,13 @@ void SimArm::setGripper(bool closed)
 			T_OinG_ = T_GinW.inverse() * T_OinW;
 			return;
 		}
+}
+
+double SimArm::gripperWidthMm() const
+{
+	if (!closed_) return options_.open_width_mm;
+	if (grasped_.empty() || !jaw_width_) return 0;
+	return jaw_width_(grasped_, T_OinG_);
 }
 
 void SimArm::carry()

@@ -21,6 +21,9 @@ struct Odometry
 	long ticks_right = 0;                                ///< encoder of wheel 1 (v1)
 	long ticks_left = 0;                                 ///< encoder of wheel 2 (v2)
 	double time_s = 0;
+	/** The bumper is pressed: the base ran into something and stopped there (it stays pressed
+	 * while the base stands against it). */
+	bool bumper = false;
 };
 
 /** The Labmate base (thesis 4.2.6): wheel-velocity steps and encoder odometry. */
@@ -78,6 +81,10 @@ class ArmDevice
 	virtual ArmJoints joints() const = 0;
 	virtual void setGripper(bool closed) = 0;
 	virtual bool gripperClosed() const = 0;
+	/** Distance between the jaws (mm) as the gripper's encoder reports it: the full opening when
+	 * open, about 0 when closed on nothing, the object's width when closed on one. The robot
+	 * decides from this whether it holds something; no device tells it what it holds. */
+	virtual double gripperWidthMm() const = 0;
 };
 
 }  // namespace mrolr::hw

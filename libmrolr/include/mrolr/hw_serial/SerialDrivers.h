@@ -55,6 +55,7 @@ class SerialArm : public ArmDevice
 	ArmJoints joints() const override;
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override;
+	double gripperWidthMm() const override;
 
  private:
 	std::unique_ptr<SerialClient> client_;

@@ -25,24 +25,31 @@ struct SimArmOptions
 	hw::ArmJoints max{915, 180, 90, 160, 110, 90, 180};
 	double grasp_radius_m =
 	    0.05;  ///< an object whose origin is this close to the gripper is caught
+	double open_width_mm = 90;  ///< jaw distance of the open gripper (the RTX's 90 mm)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
 
+/** The jaw distance (mm) when the gripper closes on object @p name at @p T_OinG (m); 0 when the
+ * jaws meet without touching it. */
+using JawWidth = std::function<double(const std::string& name, const Eigen::Isometry3d& T_OinG)>;
+
 class SimArm : public hw::ArmDevice
 {
  public:
 	/** @p T_GinW: gripper pose in W (thesis axes) for joints; @p objects: name → T_OinW (the arm
-	 * updates the grasped one); @p scene: if given, its "object.<name>" visual follows. */
+	 * updates the grasped one); @p scene: if given, its "object.<name>" visual follows;
+	 * @p jaw_width: the width the closed jaws report on a caught object (unset: 0). */
 	SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW, const SimArmOptions& o,
 	       std::map<std::string, Eigen::Isometry3d>& objects,
-	       mrpt::opengl::COpenGLScene* scene = nullptr);
+	       mrpt::opengl::COpenGLScene* scene = nullptr, JawWidth jaw_width = {});
 
 	void moveTo(const hw::ArmJoints& joints) override;
 	hw::ArmJoints joints() const override { return joints_; }
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override { return closed_; }
+	double gripperWidthMm() const override;
 	/** Name of the object in the gripper, or "". */
 	const std::string& grasped() const { return grasped_; }
 
@@ -53,6 +60,7 @@ class SimArm : public hw::ArmDevice
 	SimArmOptions options_;
 	std::map<std::string, Eigen::Isometry3d>& objects_;
 	mrpt::opengl::COpenGLScene* scene_;
+	JawWidth jaw_width_;
 	hw::ArmJoints joints_{};
 	bool closed_ = false;
 	std::string grasped_;
