@@ -1,4 +1,4 @@
-#include <mrolr/world/Fields.h>
+#include <mrolr/util/IniFields.h>
 #include <mrolr/world/ObjectShape.h>
 #include <mrolr/world/StrokeFont.h>
 

@@ -1,6 +1,6 @@
 #include "WorldSections.h"
 
-#include <mrolr/world/Fields.h>
+#include <mrolr/util/IniFields.h>
 #include <mrolr/world/World.h>
 
 #include <cmath>

@@ -5,7 +5,7 @@
  * the object model frame O of thesis 6.1: z up along the turntable axis, origin at the centre of
  * the object's footprint on the table, x and y horizontal. */
 
-#include <mrolr/world/IniDocument.h>
+#include <mrolr/world/WorldIni.h>
 
 #include <Eigen/Core>
 

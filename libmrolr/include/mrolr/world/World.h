@@ -7,7 +7,7 @@
  * the base centre of the vehicle's start pose on the ground plane (C0 is head_height_m above it,
  * geometry::T_C0inW); vehicle headings φ turn from z towards x. */
 
-#include <mrolr/world/IniDocument.h>
+#include <mrolr/world/WorldIni.h>
 #include <mrolr/world/Scenery.h>
 
 #include <Eigen/Core>

@@ -1,13 +1,13 @@
 #pragma once
-/** Typed reading of world-file values ("1.2 3 -4", "known", colours) with errors that name file,
+/** Typed reading of IniDocument values ("1.2 3 -4", "known", colours) with errors that name file,
  * line, section, key and value. */
 
-#include <mrolr/world/IniDocument.h>
+#include <mrolr/util/IniDocument.h>
 
 #include <string>
 #include <vector>
 
-namespace mrolr::world
+namespace mrolr::util
 {
 /** The whitespace/comma separated fields of an entry's value. */
 std::vector<std::string> fieldsOf(const IniEntry& e);
@@ -43,4 +43,4 @@ bool optionalBool(const IniDocument& doc, const IniSection& s, const std::string
 void rejectUnknownKeys(const IniDocument& doc, const IniSection& s,
                        const std::vector<std::string>& allowed);
 
-}  // namespace mrolr::world
+}  // namespace mrolr::util

@@ -1,9 +1,9 @@
-#include <mrolr/world/IniDocument.h>
+#include <mrolr/util/IniDocument.h>
 
 #include <fstream>
 #include <sstream>
 
-namespace mrolr::world
+namespace mrolr::util
 {
 namespace
 {
@@ -29,7 +29,7 @@ std::string stripComment(const std::string& line)
 
 [[noreturn]] void failLine(const std::string& path, int line, const std::string& why)
 {
-	throw WorldError(path + ":" + std::to_string(line) + ": " + why);
+	throw IniError(path + ":" + std::to_string(line) + ": " + why);
 }
 
 void addEntry(IniDocument& doc, const std::string& text, int line)
@@ -84,7 +84,7 @@ IniDocument IniDocument::parse(const std::string& text, const std::string& path)
 IniDocument IniDocument::load(const std::string& path)
 {
 	std::ifstream f(path);
-	if (!f) throw WorldError(path + ": cannot open file");
+	if (!f) throw IniError(path + ": cannot open file");
 	std::ostringstream os;
 	os << f.rdbuf();
 	return parse(os.str(), path);
@@ -105,7 +105,7 @@ std::string IniDocument::describe(const IniSection& s, const IniEntry& e) const
 
 void IniDocument::fail(const IniSection& s, const IniEntry& e, const std::string& why) const
 {
-	throw WorldError(describe(s, e) + ": " + why);
+	throw IniError(describe(s, e) + ": " + why);
 }
 
-}  // namespace mrolr::world
+}  // namespace mrolr::util

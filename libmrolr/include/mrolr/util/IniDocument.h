@@ -1,16 +1,18 @@
 #pragma once
-/** An `.ini` file read in file order. MRPT's CConfigFile keeps keys in a map, but a world's
- * waypoints are a route whose order matters, so world files are read with this small reader; it
- * keeps every key's line number so that errors can name file, section, key, value and line. */
+/** An `.ini` file read in file order. MRPT's CConfigFile keeps keys in a map, but a route's
+ * waypoints (a world's, a plan's) are an order that matters, so such files are read with this
+ * small reader; it keeps every key's line number so that errors can name file, section, key, value
+ * and line. */
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace mrolr::world
+namespace mrolr::util
 {
-/** Thrown for any malformed world description; what() names file, section, key and value. */
-class WorldError : public std::runtime_error
+/** Thrown for any malformed file read this way; what() names file, line, section, key and
+ * value. */
+class IniError : public std::runtime_error
 {
  public:
 	using std::runtime_error::runtime_error;
@@ -41,7 +43,7 @@ struct IniDocument
 	std::string path;
 	std::vector<IniSection> sections;
 
-	/** Reads @p path; throws WorldError (naming file and line) if unreadable or malformed. */
+	/** Reads @p path; throws IniError (naming file and line) if unreadable or malformed. */
 	static IniDocument load(const std::string& path);
 	/** Parses @p text as if read from a file called @p path. */
 	static IniDocument parse(const std::string& text, const std::string& path);
@@ -49,8 +51,8 @@ struct IniDocument
 	const IniSection* find(const std::string& name) const;
 	/** "FILE:LINE [SECTION] KEY = 'VALUE'" for error messages. */
 	std::string describe(const IniSection& s, const IniEntry& e) const;
-	/** Throws WorldError "FILE:LINE [SECTION] KEY = 'VALUE': why". */
+	/** Throws IniError "FILE:LINE [SECTION] KEY = 'VALUE': why". */
 	[[noreturn]] void fail(const IniSection& s, const IniEntry& e, const std::string& why) const;
 };
 
-}  // namespace mrolr::world
+}  // namespace mrolr::util

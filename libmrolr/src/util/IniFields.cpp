@@ -1,21 +1,21 @@
 #include <mrolr/util/Config.h>
-#include <mrolr/world/Fields.h>
+#include <mrolr/util/IniFields.h>
 
 #include <algorithm>
 #include <cctype>
 
-namespace mrolr::world
+namespace mrolr::util
 {
 std::vector<std::string> fieldsOf(const IniEntry& e)
 {
-	return util::splitFields(e.value);
+	return splitFields(e.value);
 }
 
 double numberField(const IniDocument& doc, const IniSection& s, const IniEntry& e,
                    const std::string& text)
 {
 	double v = 0;
-	if (!util::parseDouble(text, v)) doc.fail(s, e, "'" + text + "' is not a number");
+	if (!parseDouble(text, v)) doc.fail(s, e, "'" + text + "' is not a number");
 	return v;
 }
 
@@ -35,7 +35,7 @@ const IniEntry& require(const IniDocument& doc, const IniSection& s, const std::
 {
 	const IniEntry* e = s.find(key);
 	if (!e)
-		throw WorldError(doc.path + ":" + std::to_string(s.line) + " [" + s.name + "] " + key +
+		throw IniError(doc.path + ":" + std::to_string(s.line) + " [" + s.name + "] " + key +
 		                 ": missing key");
 	return *e;
 }
@@ -79,4 +79,4 @@ void rejectUnknownKeys(const IniDocument& doc, const IniSection& s,
 			doc.fail(s, e, "unknown key in this section");
 }
 
-}  // namespace mrolr::world
+}  // namespace mrolr::util
