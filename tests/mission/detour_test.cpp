@@ -7,15 +7,14 @@ using namespace mrolr;
 
 namespace
 {
-world::World tableWorld(double yaw_deg)
+std::vector<mission::PlanTable> tableWorld(double yaw_deg)
 {
-	return world::World::parse("[table.main]\ncentre_m = 0.0 1.5\nyaw_deg = " +
-	                           std::to_string(yaw_deg) + "\nsize_m = 1.6 0.9 0.75\n");
+	return {mission::PlanTable{"main", 0.0, 1.5, yaw_deg, 1.6, 0.9, 0.75}};
 }
 
 /** Smallest distance (m) from points sampled along the polyline to the table's centre box, in
  * units where a point inside the grown footprint gives a negative value. */
-double minClearance(const world::Table& t, const std::vector<Eigen::Vector2d>& poly)
+double minClearance(const mission::PlanTable& t, const std::vector<Eigen::Vector2d>& poly)
 {
 	const double yaw = t.yaw_deg * M_PI / 180;
 	const Eigen::Vector2d az(std::cos(yaw), std::sin(yaw)), ax(-std::sin(yaw), std::cos(yaw));
@@ -44,8 +43,8 @@ TEST(TableDetour, StraightPathThroughTheTableGoesRoundIt)
 		std::vector<Eigen::Vector2d> poly{from};
 		poly.insert(poly.end(), via.begin(), via.end());
 		poly.push_back(to);
-		EXPECT_GE(minClearance(w.tables[0], poly), 0.4 - 1e-9) << yaw;
-		EXPECT_LT(minClearance(w.tables[0], {from, to}), 0) << "the straight path hit the table";
+		EXPECT_GE(minClearance(w[0], poly), 0.4 - 1e-9) << yaw;
+		EXPECT_LT(minClearance(w[0], {from, to}), 0) << "the straight path hit the table";
 	}
 }
 

@@ -1,5 +1,5 @@
-// The default mission with navigation measurements made in the rendered stereo pairs
-// ([navigation] measurement_source = images): the vision area's features, patches and matches.
+// The short mission with navigation measurements made in the rendered stereo pairs
+// ([navigation] landmark_sensor = images): the vision area's features, patches and matches.
 #include "MissionTestConfig.h"
 
 #include <mrolr/mission/Mission.h>
@@ -11,20 +11,22 @@ using namespace mrolr;
 TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
 {
 	auto cfg = mission::test::defaultMissionConfig();
-	cfg.write("navigation", "measurement_source", "images");
 	cfg.write("search", "render_stereo", "false");  // no sweep pairs: only navigation grabs
-	cfg.write("search", "scene_source", "simulated");
-	const auto o = mission::test::optionsFrom(cfg);
-	const auto r = mission::Mission(o).run();
+	cfg.write("search", "scene_sensor", "exact_sim");
+	const auto run = mission::test::runMission(cfg, mission::test::shortRoute());
+	const auto& r = run.r;
 	EXPECT_TRUE(r.success) << r.failure;
 	EXPECT_GT(r.navigation_pairs, r.image_searches);  // acquisitions grab pairs too
 	EXPECT_GT(r.image_searches, 20);
 	EXPECT_GE(r.image_matches, r.measurements);  // a measurement needs a match in both images
 	EXPECT_GT(r.measurements, static_cast<int>(0.8 * r.image_searches));
-	// The map holds the features acquired in the images, none of the world's landmarks.
+	// The map holds the plan's known features and those acquired in the images.
 	ASSERT_FALSE(r.map.empty());
-	for (const auto& f : r.map) EXPECT_EQ(o.world.findLandmark(f.label), nullptr) << f.label;
-	EXPECT_LT(r.final_estimate_error_m, 0.1);
+	size_t known = 0;
+	for (const auto& f : r.map) known += f.known;
+	EXPECT_EQ(known, run.o.plan.known_features.size());
+	EXPECT_GT(r.map.size(), known);
+	EXPECT_LT(run.report["final_estimate_error_m"].get<double>(), 0.1);
 	// Rendering is the simulator's time, kept out of the robot's compute.
 	EXPECT_GT(r.timeline.renderSeconds(), 0);
 	EXPECT_TRUE(r.shots.empty());
@@ -35,7 +37,6 @@ TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
 TEST(MissionImages, AmbiguityMarginReplacesTheVisionFilesValue)
 {
 	auto cfg = mission::test::defaultMissionConfig();
-	cfg.write("navigation", "measurement_source", "images");
 	cfg.write("navigation", "image_nssd_ambiguity_margin", "0.25");
 	EXPECT_DOUBLE_EQ(mission::test::optionsFrom(cfg).vision.nssd_ambiguity_margin, 0.25);
 	cfg.write("navigation", "image_nssd_ambiguity_margin", "-1");

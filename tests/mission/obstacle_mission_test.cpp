@@ -40,12 +40,13 @@ double distanceToBox(const world::Obstacle& b, const Eigen::Vector2d& p_zx)
 }
 
 /** Smallest distance of the true path (between samples every centimetre) to the box. */
-double clearance(const std::vector<mission::PathSample>& path, const world::Obstacle& b)
+double clearance(const mission::test::Run& run, const world::Obstacle& b)
 {
+	const auto path = mission::test::truePath(run);
 	double best = 1e9;
 	for (size_t i = 1; i < path.size(); ++i)
 	{
-		const Eigen::Vector2d a = path[i - 1].truth.head<2>(), c = path[i].truth.head<2>();
+		const Eigen::Vector2d a = path[i - 1].head<2>(), c = path[i].head<2>();
 		const int n = std::max(1, static_cast<int>((c - a).norm() / 0.01));
 		for (int k = 0; k <= n; ++k)
 			best = std::min(best, distanceToBox(b, a + (c - a) * (double(k) / n)));
@@ -53,9 +54,10 @@ double clearance(const std::vector<mission::PathSample>& path, const world::Obst
 	return best;
 }
 
-const world::Obstacle& box(const mission::MissionOptions& o)
+world::Obstacle box()
 {
-	for (const auto& b : o.world.obstacles)
+	const auto w = world::World::load(std::string(MROLR_SOURCE_DIR) + "/maps/lab_obstacle/world.ini");
+	for (const auto& b : w.obstacles)
 		if (b.name == "box") return b;
 	throw std::runtime_error("maps/lab_obstacle has no [obstacle.box]");
 }
@@ -63,29 +65,37 @@ const world::Obstacle& box(const mission::MissionOptions& o)
 
 TEST(ObstacleMission, TheRobotGoesRoundTheBoxToTheTableAndBackHome)
 {
-	const auto o = mission::test::optionsFrom(obstacleMission());
+	const auto run = mission::test::runMission(obstacleMission());
+	const auto& o = run.o;
+	const auto& r = run.r;
 	ASSERT_TRUE(o.obstacle_mode);
-	const auto r = mission::Mission(o).run();
 	EXPECT_TRUE(r.found) << r.failure;
 	EXPECT_TRUE(r.retrieved) << r.failure;
 	EXPECT_TRUE(r.returned_home) << r.failure;
+	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
 	// seen on the way out and again on the way back, and never touched
 	EXPECT_GE(r.obstacle.events.size(), 2u);
 	EXPECT_EQ(r.obstacle.failed_looks, 0);
-	EXPECT_GT(clearance(r.path, box(o)), robotHalfWidth(o));
+	EXPECT_GT(clearance(run, box()), robotHalfWidth(o));
 	// the first sighting, from the start 1.0 m before the box: near edge and width measured
 	ASSERT_FALSE(r.obstacle.events.empty());
 	const auto& s = r.obstacle.events.front().sighting;
 	EXPECT_NEAR(s.near_m, 1.0, 0.1);
-	EXPECT_NEAR(s.left_m - s.right_m, box(o).size_m.x(), 0.15);
+	EXPECT_NEAR(s.left_m - s.right_m, box().size_m.x(), 0.15);
 }
 
-TEST(ObstacleMission, WithoutObstacleModeTheRouteRunsThroughTheBox)
+TEST(ObstacleMission, WithoutObstacleModeTheRobotRunsIntoTheBoxAndSaysSo)
 {
 	auto cfg = obstacleMission();
 	cfg.write("mission", "obstacle_mode", "false");
-	const auto o = mission::test::optionsFrom(cfg);
-	const auto r = mission::Mission(o).run();
+	const auto run = mission::test::runMission(cfg);
+	const auto& r = run.r;
 	EXPECT_TRUE(r.obstacle.events.empty());
-	EXPECT_LT(clearance(r.path, box(o)), robotHalfWidth(o));
+	EXPECT_TRUE(r.collided);
+	EXPECT_TRUE(r.stopped);
+	EXPECT_FALSE(r.success);
+	EXPECT_NE(r.failure.find("bumper"), std::string::npos) << r.failure;
+	ASSERT_FALSE(run.report["eval"]["collision"].is_null());
+	EXPECT_EQ(run.report["eval"]["collision"]["what"], "obstacle.box");
+	EXPECT_FALSE(run.report["success"].get<bool>());
 }

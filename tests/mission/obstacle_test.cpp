@@ -126,7 +126,8 @@ struct RenderedLab
 {
 	mission::MissionOptions o =
 	    mission::MissionOptions::load(mission::test::configDir() + "/mission_obstacle.ini");
-	sim::LabScene lab = sim::buildLabScene(o.world);
+	sim::LabScene lab = sim::buildLabScene(
+	    world::World::load(std::string(MROLR_SOURCE_DIR) + "/maps/lab_obstacle/world.ini"));
 	geometry::BiSightHead head{o.bisight};
 	sim::StereoRenderer renderer{head, sim::RenderOptions()};
 	Eigen::Vector3d xv = Eigen::Vector3d::Zero();
@@ -188,6 +189,6 @@ TEST(ObstacleFromStereo, TheMapsTablesAreNoObstacles)
 	const Eigen::Vector3d goal(lab.xv.x() + std::cos(1.19), lab.xv.y() + std::sin(1.19), 1.19);
 	auto a = lab.avoidance();
 	EXPECT_FALSE(a.check(lab.xv, goal).empty());  // unknown: a table is in the way
-	a.setKnownTables(lab.o.world.tables, lab.o.obstacle.table_margin_m);
+	a.setKnownTables(lab.o.plan.tables, lab.o.obstacle.table_margin_m);
 	EXPECT_TRUE(a.check(lab.xv, goal).empty());  // from the map: known, not avoided
 }

@@ -1,10 +1,10 @@
-// Whole simulated missions: target present (through the app, with its outputs), target absent,
-// object out of the arm's reach, and a bad configuration that stops before anything moves.
+// Whole simulated missions: the default one through the app (the lap, from images, with its
+// outputs), an absent target, lost features, an object out of the arm's reach, wheel slip, and a
+// bad configuration that stops before anything moves.
 #include "MissionTestConfig.h"
 
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/io/Rawlog.h>
-#include <mrolr/mission/Mission.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
@@ -47,14 +47,15 @@ std::string worldWithout(const std::string& name)
 	return path;
 }
 
-/** Where the target (placed under its model's name in the lab) stands at the start. */
-Eigen::Vector3d targetStart(const mission::MissionOptions& o)
+const eval::ObjectTruth& objectNamed(const eval::MissionTruth& t, const std::string& name)
 {
-	return mission::placedObjects(o.world).at(o.target).T_OinW.translation();
+	for (const auto& o : t.objects)
+		if (o.name == name) return o;
+	throw std::runtime_error("no object " + name);
 }
 }  // namespace
 
-TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
+TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 {
 	const auto dir = tempDir("present");
 	apps::MissionApp app;
@@ -63,41 +64,49 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 	std::ostringstream out, progress;
 	EXPECT_EQ(app.run(out, progress), 0) << out.str();
 	const auto& r = app.result;
+	const auto& j = app.report;
+	// what the robot believes ...
+	EXPECT_EQ(r.navigation_source, "images");
+	EXPECT_GT(app.options.plan.route.size(), 3u);  // the lap, not a straight line
 	EXPECT_TRUE(r.found);
-	EXPECT_EQ(r.found_instance, app.options.target);
 	EXPECT_TRUE(r.retrieved);
+	EXPECT_GT(r.held_width_mm, app.options.retrieval.min_held_width_mm);
 	EXPECT_TRUE(r.returned_home);
-	EXPECT_LT(r.final_position_error_m, app.options.home_tolerance_m);
-	EXPECT_LT(r.search.translation_error_mm, 15.0);
-	EXPECT_LT(r.search.rotation_error_deg, 5.0);
 	EXPECT_TRUE(r.retrieval.verified);
-	// The target came home on the base: now within 0.6 m of home, not on the table.
-	const Eigen::Vector3d p = r.final_objects.at(app.options.target).T_OinW.translation();
-	EXPECT_LT(std::hypot(p.z() - r.home.x(), p.x() - r.home.y()), 0.6);
-	EXPECT_GT((p - targetStart(app.options)).norm(), 0.5);
-	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
+	// ... and what eval found
+	EXPECT_TRUE(j["eval"]["confirms"].get<bool>());
+	EXPECT_EQ(j["found_instance"], app.options.target);
+	EXPECT_LT(j["final_position_error_m"].get<double>(), app.options.home_tolerance_m);
+	EXPECT_LT(j["object_translation_error_mm"].get<double>(), 15.0);
+	EXPECT_TRUE(j["eval"]["object_held"].get<bool>());
+	EXPECT_EQ(j["eval"]["held_instance"], app.options.target);
+	EXPECT_GT(j["nis"]["count"].get<int>(), 100);
+	const auto written = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	for (const char* key :
 	     {"success", "target", "found", "retrieved", "returned_home", "final_position_error_m",
 	      "object_rotation_error_deg", "object_translation_error_mm", "grasp_correction_mm",
-	      "stages", "compute_seconds", "simulated_seconds", "T_OinA", "timeline"})
-		EXPECT_TRUE(j.contains(key)) << key;
-	EXPECT_TRUE(j["success"].get<bool>());
+	      "stages", "compute_seconds", "simulated_seconds", "T_OinA", "timeline", "robot", "eval",
+	      "nis", "navigation_source", "navigation_pairs"})
+		EXPECT_TRUE(written.contains(key)) << key;
+	EXPECT_TRUE(written["success"].get<bool>());
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
 		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
-	// One stereo pair per sweep view and one for the visual verification's re-observation (the
-	// default mission reconstructs each view from its pair), stored as external images.
-	ASSERT_EQ(app.options.search.scene_source, "reconstructed");
+	// One stereo pair per sweep view and one for the visual verification's re-observation,
+	// stored as external images.
 	ASSERT_EQ(r.shots.size(), static_cast<size_t>(r.search.views) + 1);
 	size_t images = 0;
 	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
 		images += e.path().extension() == ".png";
 	EXPECT_EQ(images, 2 * r.shots.size());
-	// The rawlog reads back: one record per motion step and per stereo pair.
+	// The rawlog reads back: one record per motion step and per stereo pair, the truth on the
+	// steps only (the world side's).
 	const auto records = io::readRawlog(dir + "/mission.rawlog");
 	EXPECT_EQ(records.size(), r.path.size() + r.shots.size());
-	size_t stereo = 0;
-	for (const auto& rec : records) stereo += rec.has_stereo && rec.left.getWidth() == 640;
+	size_t stereo = 0, truth = 0;
+	for (const auto& rec : records)
+		stereo += rec.has_stereo && rec.left.getWidth() == 640, truth += rec.true_zxphi.has_value();
 	EXPECT_EQ(stereo, r.shots.size());
+	EXPECT_EQ(truth, r.path.size());
 	mrpt::opengl::COpenGLScene scene;
 	ASSERT_TRUE(scene.loadFromFile(dir + "/mission.3Dscene"));
 	EXPECT_TRUE(scene.getByName("path.true"));
@@ -108,16 +117,18 @@ TEST(MissionRun, TargetPresentIsFoundRetrievedAndBroughtHome)
 TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 {
 	auto cfg = mission::test::defaultMissionConfig();
-	cfg.write("mission", "world_file", worldWithout(mission::test::optionsFrom(cfg).target));
-	const auto o = mission::test::optionsFrom(cfg);
-	mission::Mission m(o);
-	const auto r = m.run();
+	const auto plan = mission::test::planWith(
+	    {{"plan", "route", "W0"}, {"waypoints", "S2", "2.45 0.0 180"}, {"plan", "stations", "W5 S2"}});
+	const auto run = mission::test::runMission(
+	    cfg, plan, worldWithout(mission::test::optionsFrom(cfg).target));
+	const auto& r = run.r;
 	EXPECT_FALSE(r.found);
 	EXPECT_FALSE(r.retrieved);
 	EXPECT_FALSE(r.success);
-	EXPECT_EQ(r.stations_searched, static_cast<int>(o.stations.size()));
+	EXPECT_EQ(r.stations_searched, 2);
 	EXPECT_FALSE(r.retrieval.attempted);
 	EXPECT_TRUE(r.returned_home);
+	EXPECT_TRUE(run.report["eval"]["returned_home"].get<bool>());
 	EXPECT_NE(r.failure.find("not found"), std::string::npos) << r.failure;
 	EXPECT_EQ(r.shots.size(), 10u);  // five views at each of the two stations
 }
@@ -125,34 +136,34 @@ TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 TEST(MissionRun, LostFeaturesAreDeletedReplacedAndTheRobotStillGetsHome)
 {
 	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("navigation", "landmark_sensor", "ideal_sim");
 	cfg.write("navigation", "lost_feature_probability", "0.5");
-	const auto o = mission::test::optionsFrom(cfg);
-	const auto r = mission::Mission(o).run();
+	const auto run = mission::test::runMission(cfg, mission::test::shortRoute());
+	const auto& r = run.r;
 	// more than half of a feature's last ten searches fail: the 5.7 rule deletes it
 	EXPECT_GT(r.measurements_lost, 20);
 	EXPECT_GT(r.features_deleted, 0);
 	EXPECT_GT(r.measurements, 0);
 	EXPECT_TRUE(r.found);
 	EXPECT_TRUE(r.returned_home);
-	EXPECT_LT(r.final_position_error_m, o.home_tolerance_m);
-	EXPECT_LT(r.final_estimate_error_m, o.home_tolerance_m);
+	EXPECT_LT(run.report["final_position_error_m"].get<double>(), run.o.home_tolerance_m);
+	EXPECT_LT(run.report["final_estimate_error_m"].get<double>(), run.o.home_tolerance_m);
 }
 
 TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 {
 	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("arm_mount", "T_C0inA", "0 0 1 -1500    1 0 0 1200    0 1 0 711");
-	cfg.write("mission", "search_stations", "W5");
-	const auto o = mission::test::optionsFrom(cfg);
-	mission::Mission m(o);
-	const auto r = m.run();
+	const auto run = mission::test::runMission(cfg, mission::test::shortRoute());
+	const auto& r = run.r;
 	EXPECT_TRUE(r.found);
 	EXPECT_FALSE(r.retrieval.feasible);
 	EXPECT_FALSE(r.retrieval.attempted);
 	EXPECT_FALSE(r.retrieved);
 	ASSERT_FALSE(r.retrieval.reasons.empty());
 	EXPECT_NE(r.failure.find("not feasible"), std::string::npos) << r.failure;
-	EXPECT_LT((r.final_objects.at(o.target).T_OinW.translation() - targetStart(o)).norm(), 1e-12);
+	const auto& cube = objectNamed(run.truth, run.o.target);
+	EXPECT_LT((cube.T_OinW.translation() - cube.T_OinW_start.translation()).norm(), 1e-12);
 	EXPECT_TRUE(r.returned_home);
 }
 
@@ -172,29 +183,32 @@ TEST(MissionRun, MalformedConfigStopsBeforeAnythingMoves)
 namespace
 {
 /** Mean distance (m) from the truth over a run's path of the estimate or the odometry. */
-double meanError(const mission::MissionResult& r, Eigen::Vector3d mission::PathSample::*pose)
+double meanError(const mission::test::Run& run, Eigen::Vector3d mission::PathSample::*pose)
 {
+	const auto truth = mission::test::truePath(run);
 	double sum = 0;
-	for (const auto& s : r.path) sum += ((s.*pose).head<2>() - s.truth.head<2>()).norm();
-	return sum / static_cast<double>(r.path.size());
+	for (size_t i = 0; i < run.r.path.size(); ++i)
+		sum += ((run.r.path[i].*pose).head<2>() - truth[i].head<2>()).norm();
+	return sum / static_cast<double>(run.r.path.size());
 }
 }  // namespace
 
-TEST(MissionRun, SlamOutlivesWheelSlipBurstsThatDeadReckoningDoesNot)
+TEST(MissionRun, SlamFromImagesOutlivesWheelSlipBurstsThatDeadReckoningDoesNot)
 {
 	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("sim_base", "slip_probability", "0.15");
-	cfg.write("mission", "route", "world");  // the whole lap round the lab first
-	cfg.write("mission", "search_stations", "W5");
-	const auto slam = mission::Mission(mission::test::optionsFrom(cfg)).run();
-	EXPECT_GT(slam.map.size(), 3u);
+	cfg.write("search", "scene_sensor", "exact_sim");  // navigation is under test here
+	cfg.write("search", "render_stereo", "false");
+	const auto slam = mission::test::runMission(cfg);
+	EXPECT_GT(slam.r.map.size(), 3u);
 	// Same run, same truth: the filter's estimate against the odometry it was given.
 	const double e_slam = meanError(slam, &mission::PathSample::estimate);
 	const double e_odo = meanError(slam, &mission::PathSample::odometry);
 	EXPECT_LT(e_slam, 0.5 * e_odo) << e_slam << " vs " << e_odo;
-	EXPECT_LT(slam.final_estimate_error_m, slam.dead_reckoning_error_m);
+	EXPECT_LT(slam.report["final_estimate_error_m"].get<double>(),
+	          slam.report["dead_reckoning_error_m"].get<double>());
 	cfg.write("mission", "mode", "dead_reckoning");
-	const auto dr = mission::Mission(mission::test::optionsFrom(cfg)).run();
-	EXPECT_TRUE(dr.map.empty());
-	for (const auto& s : dr.path) EXPECT_EQ(s.estimate, s.odometry);
+	const auto dr = mission::test::runMission(cfg, mission::test::shortRoute());
+	EXPECT_TRUE(dr.r.map.empty());
+	for (const auto& s : dr.r.path) EXPECT_EQ(s.estimate, s.odometry);
 }

@@ -1,13 +1,14 @@
 // The whole mission through real serial I/O: the simulated lab's base, head and arm are served on
-// pseudo-terminals (SerialEmulation), the mission drives them with the serial drivers
-// (driver = serial), with faults injected; and devices that stop answering or send garbage.
+// pseudo-terminals (apps::SerialEmulation), the mission drives them with the serial drivers
+// (driver = serial), with faults injected; and devices that stop answering, refuse or send garbage.
 #include "MissionTestConfig.h"
 
 #include <mrolr/apps/MissionApp.h>
+#include <mrolr/apps/SerialEmulation.h>
+#include <mrolr/eval/MissionOutputs.h>
 #include <mrolr/io/Rawlog.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionOutputs.h>
-#include <mrolr/mission/SerialEmulation.h>
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
@@ -33,27 +34,35 @@ hw::LinkOptions quickLinks()
 	return l;
 }
 
-/** A mission on the simulated lab served on ptys; faults can be set before run(). */
+/** A mission (the short route) on a simulated lab served on ptys; faults can be set before
+ * run(). The camera is the lab's own (in process). */
 struct SerialRig
 {
-	MissionOptions o;
-	std::shared_ptr<SimulatedLab> lab;
-	std::unique_ptr<SerialEmulation> emulation;
+	mrpt::config::CConfigFileMemory cfg = test::defaultMissionConfig();
+	MissionOptions o = test::optionsFrom(cfg, test::shortRoute());
+	std::unique_ptr<sim::Lab> lab;
+	std::unique_ptr<apps::SerialEmulation> emulation;
+	std::unique_ptr<MissionDevices> devices;
 	std::unique_ptr<Mission> mission;
-	explicit SerialRig(const MissionOptions& options, const hw::FaultOptions& faults = {},
-	                   const hw::LinkOptions& links = quickLinks())
-	    : o(options), lab(std::make_shared<SimulatedLab>(o))
+	explicit SerialRig(const hw::FaultOptions& faults = {},
+	                   const hw::LinkOptions& links = quickLinks(),
+	                   const std::function<void(sim::LabOptions&)>& world = {})
 	{
-		emulation = std::make_unique<SerialEmulation>(*lab, faults);
+		auto lo = sim::LabOptions::load(cfg, test::configDir());
+		if (world) world(lo);
+		lab = std::make_unique<sim::Lab>(lo);
+		emulation = std::make_unique<apps::SerialEmulation>(*lab, faults);
 		emulation->useIn(o, links);
-		mission = std::make_unique<Mission>(o, lab);  // connects: ID? on every port
+		devices = std::make_unique<MissionDevices>(o.devices, SimDevices{nullptr, &lab->head(), nullptr});
+		mission = std::make_unique<Mission>(o, devices->devices());  // connected: ID? on every port
+	}
+	nlohmann::json report(const MissionResult& r) const
+	{
+		auto j = reportJson(r, o);
+		eval::evaluateMission(j, eval::truthOf(*lab));
+		return j;
 	}
 };
-
-MissionOptions defaults()
-{
-	return test::optionsFrom(test::defaultMissionConfig());
-}
 
 std::string tempDir(const std::string& name)
 {
@@ -74,7 +83,6 @@ void expectSamePaths(const MissionResult& a, const MissionResult& b)
 	ASSERT_EQ(a.path.size(), b.path.size());
 	for (size_t i = 0; i < a.path.size(); ++i)
 	{
-		EXPECT_EQ(a.path[i].truth, b.path[i].truth) << i;
 		EXPECT_EQ(a.path[i].odometry, b.path[i].odometry) << i;
 		EXPECT_EQ(a.path[i].estimate, b.path[i].estimate) << i;
 	}
@@ -83,7 +91,7 @@ void expectSamePaths(const MissionResult& a, const MissionResult& b)
 
 TEST(SerialMission, ThroughPtysWithDelaysAndLostBytesItIsTheSimulatedMission)
 {
-	const auto sim = Mission(defaults()).run();
+	const auto sim = test::runMission(test::defaultMissionConfig(), test::shortRoute());
 	hw::FaultOptions faults;
 	faults.reply_delay_ms = 1;
 	faults.drop_byte_probability = 0.002;
@@ -94,71 +102,42 @@ TEST(SerialMission, ThroughPtysWithDelaysAndLostBytesItIsTheSimulatedMission)
 	// in a row ~ 1e-3). With 4 retries that is ~ 2e-5 per command.
 	auto links = quickLinks();
 	links.retries = 4;
-	SerialRig rig(defaults(), faults, links);
+	SerialRig rig(faults, links);
 	const auto serial = rig.mission->run();
 	EXPECT_TRUE(serial.success) << serial.failure;
-	EXPECT_EQ(serial.success, sim.success);
-	EXPECT_EQ(serial.found_instance, sim.found_instance);
-	EXPECT_EQ(serial.retrieved, sim.retrieved);
+	EXPECT_EQ(serial.success, sim.r.success);
+	EXPECT_EQ(serial.retrieved, sim.r.retrieved);
 	// Numbers cross the line exactly (shortest round-trip text), and a resent STEP or MOVE is
 	// answered from the device's cache, not executed twice: the very same run.
-	expectSamePaths(serial, sim);
-	EXPECT_EQ(serial.final_position_error_m, sim.final_position_error_m);
-	EXPECT_EQ(serial.search.translation_error_mm, sim.search.translation_error_mm);
-	EXPECT_EQ(serial.retrieval.joints.toMmDeg(), sim.retrieval.joints.toMmDeg());
-	EXPECT_EQ(serial.shots.size(), sim.shots.size());
+	expectSamePaths(serial, sim.r);
+	EXPECT_EQ(rig.lab->truePose(), sim.truth.final_zxphi);
+	EXPECT_EQ(serial.search.T_OinC0.matrix(), sim.r.search.T_OinC0.matrix());
+	EXPECT_EQ(serial.retrieval.joints.toMmDeg(), sim.r.retrieval.joints.toMmDeg());
+	EXPECT_EQ(serial.shots.size(), sim.r.shots.size());
 	ASSERT_EQ(serial.links.size(), 3u);
-	EXPECT_TRUE(serial.links[2].lab_behind_port);
 	EXPECT_GT(totalResends(serial), 0);  // the lost bytes were noticed and resent
-	EXPECT_TRUE(sim.links.empty());
+	EXPECT_TRUE(sim.r.links.empty());
 	EXPECT_GT(rig.emulation->base().emulator().executed(), serial.path.size());
-	EXPECT_GE(rig.emulation->head().emulator().executed(), static_cast<size_t>(sim.search.views));
+	EXPECT_GE(rig.emulation->head().emulator().executed(), static_cast<size_t>(sim.r.search.views));
 	EXPECT_TRUE(rig.lab->arm().gripperClosed());
-}
-
-TEST(SerialMission, DevicesNotServedByTheMissionsLabAreShadowedByIt)
-{
-	// The emulators serve a lab of their own, as `mrolr-serial emulate` in another process does.
-	const auto o_external = defaults();
-	SimulatedLab external(o_external);
-	SerialEmulation emulation(external);
-	auto o = defaults();
-	emulation.useIn(o, quickLinks());
-	for (auto* d : {&o.devices.base, &o.devices.head, &o.devices.arm}) d->lab_behind_port = false;
-	auto lab = std::make_shared<SimulatedLab>(o);
-	const auto r = Mission(o, lab).run();
-	EXPECT_TRUE(r.success) << r.failure;
-	// Same seeds: the devices behind the ports and the mission's shadow lab moved alike.
-	EXPECT_EQ(external.truePose(), lab->truePose());
-	EXPECT_EQ(external.arm().joints(), lab->arm().joints());
-	EXPECT_EQ(external.head().angles().pan, lab->head().angles().pan);
-	ASSERT_EQ(r.links.size(), 3u);
-	EXPECT_FALSE(r.links[0].lab_behind_port);
-	EXPECT_GT(emulation.base().emulator().executed(), r.path.size());
+	EXPECT_TRUE(rig.report(serial)["eval"]["object_held"].get<bool>());
 }
 
 TEST(SerialMission, AnArmThatRefusesAJointLimitStopsTheMission)
 {
-	auto o_external = defaults();
-	o_external.sim_arm.max[0] = 1;  // d1: the arm behind the port allows less than planned
-	SimulatedLab external(o_external);
-	SerialEmulation emulation(external);
-	auto o = defaults();
-	emulation.useIn(o, quickLinks());
-	for (auto* d : {&o.devices.base, &o.devices.head, &o.devices.arm}) d->lab_behind_port = false;
-	const auto r = Mission(o, std::make_shared<SimulatedLab>(o)).run();
+	// d1: the arm behind the port allows less than planned
+	SerialRig rig({}, quickLinks(), [](sim::LabOptions& lo) { lo.arm.max[0] = 1; });
+	const auto r = rig.mission->run();
 	EXPECT_TRUE(r.stopped);
 	EXPECT_FALSE(r.retrieved);
 	EXPECT_NE(r.failure.find("refused a command"), std::string::npos) << r.failure;
 	EXPECT_NE(r.failure.find("d1"), std::string::npos) << r.failure;
-	EXPECT_FALSE(external.arm().gripperClosed());
+	EXPECT_FALSE(rig.lab->arm().gripperClosed());
 }
 
 TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 {
-	auto o = defaults();
-	o.search.render_stereo = true;
-	SerialRig rig(o);
+	SerialRig rig;
 	hw::FaultOptions hang;
 	hang.silent_after_replies = 2;  // GRIP 0 and the pre-grasp MOVE, then nothing
 	rig.emulation->arm().emulator().setFaults(hang);
@@ -176,11 +155,11 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 	EXPECT_FALSE(rig.lab->arm().gripperClosed());
 	// The base stood still from the last recorded step on, and did not go home.
 	ASSERT_FALSE(r.path.empty());
-	EXPECT_EQ(r.path.back().truth, rig.lab->truePose());
+	EXPECT_EQ(r.path.back().device_time_s, rig.lab->simBase().odometry().time_s);
 	EXPECT_FALSE(r.returned_home);
 	// Everything recorded so far is written and reads back.
 	const auto dir = tempDir("arm_hangs");
-	writeOutputs(r, rig.o, dir);
+	eval::writeMissionOutputs(r, rig.o, nullptr, dir);
 	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	EXPECT_FALSE(j["success"].get<bool>());
 	EXPECT_TRUE(j["stopped"].get<bool>());
@@ -196,7 +175,7 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 
 TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
 {
-	SerialRig rig(defaults());
+	SerialRig rig;
 	hw::FaultOptions garbage;
 	garbage.garbage_replies = 1000;
 	rig.emulation->head().emulator().setFaults(garbage);
@@ -209,7 +188,7 @@ TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
 	    << r.failure;
 	EXPECT_EQ(r.stations_searched, 1);
 	ASSERT_FALSE(r.path.empty());
-	EXPECT_EQ(r.path.back().truth, rig.lab->truePose());
+	EXPECT_EQ(r.path.back().device_time_s, rig.lab->simBase().odometry().time_s);
 	bool stopped_note = false;
 	for (const auto& e : r.timeline.events()) stopped_note |= e.text == "base stopped";
 	EXPECT_TRUE(stopped_note);
@@ -217,7 +196,7 @@ TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
 
 TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 {
-	SerialRig rig(defaults());
+	SerialRig rig;
 	hw::FaultOptions hang;
 	hang.silent = true;
 	rig.emulation->base().emulator().setFaults(hang);
@@ -232,7 +211,7 @@ TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 		could_not_stop |= e.text.find("could not command the base to stop") == 0;
 	EXPECT_TRUE(could_not_stop);
 	const auto dir = tempDir("base_hangs");
-	EXPECT_NO_THROW(writeOutputs(r, rig.o, dir));
+	EXPECT_NO_THROW(eval::writeMissionOutputs(r, rig.o, nullptr, dir));
 	EXPECT_TRUE(io::readRawlog(dir + "/mission.rawlog").empty());
 }
 
@@ -262,18 +241,18 @@ TEST(SerialMission, TheAppRunsTheMissionOnEmulatedDevices)
 {
 	const auto dir = tempDir("app");
 	apps::MissionApp app;
-	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_hw.ini", "--out",
+	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_sim.ini", "--out",
 	                dir, "--quiet", "--serial-emulation", "--emulate-delay-ms", "1", "--set",
-	                "search.render_stereo=false"});
+	                "plan.route=W0", "--set", "search.image_verification=false"});
 	std::ostringstream out, progress;
 	EXPECT_EQ(app.run(out, progress), 0) << out.str();
-	EXPECT_FALSE(app.options.search.render_stereo);
+	EXPECT_FALSE(app.options.search.image_verification);
 	ASSERT_EQ(app.result.links.size(), 3u);
 	EXPECT_EQ(app.result.links[0].port.rfind("/dev/pts/", 0), 0u) << app.result.links[0].port;
 	EXPECT_NE(out.str().find("serial device.arm on /dev/pts/"), std::string::npos) << out.str();
 	// --set changes the run, never the file.
-	std::ifstream f(test::configDir() + "/mission_hw.ini");
-	EXPECT_NE(std::string(std::istreambuf_iterator<char>(f), {}).find("render_stereo = true"),
+	std::ifstream f(test::configDir() + "/mission_sim.ini");
+	EXPECT_NE(std::string(std::istreambuf_iterator<char>(f), {}).find("image_verification = true"),
 	          std::string::npos);
 }
 

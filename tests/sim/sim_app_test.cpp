@@ -115,7 +115,8 @@ TEST(SimApp, ShortRecordingReadsBack)
 	runApp({"--world", kLab, "--out", path, "--max-steps", "3", "--json"}, app);
 	const auto recs = mrolr::io::readRawlog(path);
 	ASSERT_EQ(recs.size(), 4u);                   // the start plus 3 steps
-	EXPECT_LT(recs[0].true_zxphi.norm(), 1e-12);  // starts at W0
+	ASSERT_TRUE(recs[0].true_zxphi.has_value());
+	EXPECT_LT(recs[0].true_zxphi->norm(), 1e-12);  // starts at W0
 	EXPECT_EQ(app.frames_written, 4);
 	EXPECT_TRUE(recs.back().has_stereo);
 	EXPECT_GT(recs.back().odometry_zxphi.norm() + std::abs(double(recs.back().ticks_left)), 0);

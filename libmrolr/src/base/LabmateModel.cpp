@@ -24,6 +24,8 @@ void LabmateOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg
 	requireInRange(cfg, section, "translation_speed_mps", translation_speed_mps, 1e-6, 10);
 	rotation_wheel_speed_mps = readDouble(cfg, section, "rotation_wheel_speed_mps");
 	requireInRange(cfg, section, "rotation_wheel_speed_mps", rotation_wheel_speed_mps, 1e-6, 10);
+	encoder_ticks_per_m = readDouble(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m);
+	requireInRange(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m, 1, 1e8);
 }
 
 void LabmateOptions::dumpToTextStream(std::ostream& out) const
@@ -31,7 +33,8 @@ void LabmateOptions::dumpToTextStream(std::ostream& out) const
 	out << "[labmate]\nwheel_half_separation_m  = " << wheel_half_separation_m
 	    << "\nvelocity_noise_fraction  = " << velocity_noise_fraction
 	    << "\ntranslation_speed_mps    = " << translation_speed_mps
-	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps << "\n";
+	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps
+	    << "\nencoder_ticks_per_m      = " << encoder_ticks_per_m << "\n";
 }
 
 LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)

@@ -53,14 +53,14 @@ RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& pat
 	const auto odo = sf.getObservationByClass<mrpt::obs::CObservationOdometry>();
 	const auto head = sf.getObservationByClass<mrpt::obs::CObservationRawDAQ>();
 	const auto gt = sf.getObservationByClass<mrpt::obs::CObservationRobotPose>();
-	if (!odo || !head || !gt) fail(path, i, "missing ODOMETRY, HEAD_ANGLES or GROUND_TRUTH");
+	if (!odo || !head) fail(path, i, "missing ODOMETRY or HEAD_ANGLES");
 	if (head->AIN_double.size() != 4) fail(path, i, "HEAD_ANGLES must hold 4 values");
 	r.time_s = mrpt::Clock::toDouble(odo->timestamp) - 1.7e9;
 	r.odometry_zxphi = geometry::vehicleFromMrpt(odo->odometry);
 	r.ticks_right = odo->encoderRightTicks;
 	r.ticks_left = odo->encoderLeftTicks;
 	r.head_rad = Eigen::Vector4d(head->AIN_double.data());
-	r.true_zxphi = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(gt->pose.mean));
+	if (gt) r.true_zxphi = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(gt->pose.mean));
 	if (const auto s = sf.getObservationByClass<mrpt::obs::CObservationStereoImages>())
 		readStereo(*s, r);
 	return r;

@@ -89,11 +89,14 @@ mrpt::obs::CSensoryFrame frameOf(const RawlogRecord& r, const std::string& dir, 
 	head->AIN_double = {r.head_rad[0], r.head_rad[1], r.head_rad[2], r.head_rad[3]};
 	head->AIN_channel_count = 4;
 	sf.insert(head);
-	auto gt = mrpt::obs::CObservationRobotPose::Create();
-	gt->sensorLabel = "GROUND_TRUTH";
-	gt->timestamp = stamp(r.time_s);
-	gt->pose.mean = mrpt::poses::CPose3D(geometry::vehicleToMrpt(r.true_zxphi));
-	sf.insert(gt);
+	if (r.true_zxphi)
+	{
+		auto gt = mrpt::obs::CObservationRobotPose::Create();
+		gt->sensorLabel = "GROUND_TRUTH";
+		gt->timestamp = stamp(r.time_s);
+		gt->pose.mean = mrpt::poses::CPose3D(geometry::vehicleToMrpt(*r.true_zxphi));
+		sf.insert(gt);
+	}
 	if (r.has_stereo) sf.insert(stereoObs(r, dir, index));
 	return sf;
 }

@@ -25,11 +25,40 @@ void DeviceChoice::dump(std::ostream& out) const
 	if (serial) link.dump(out);
 }
 
+void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
+{
+	const std::string s = "device.camera";
+	key = util::describeKey(cfg, s, "driver");
+	if (!util::hasKey(cfg, s, "driver")) return;
+	const auto d = util::readString(cfg, s, "driver");
+	if (d == "sim")
+		driver = Driver::Sim;
+	else if (d == "socket")
+		driver = Driver::Socket;
+	else if (d == "camera_sensor")
+		driver = Driver::CameraSensor;
+	else
+		throw util::ConfigError(key + ": '" + d + "' is not one of sim, socket, camera_sensor");
+	if (driver != Driver::Socket) return;
+	address = util::readString(cfg, s, "address");
+	timeout_ms = static_cast<int>(util::readInt(cfg, s, "timeout_ms", timeout_ms));
+	util::requireInRange(cfg, s, "timeout_ms", timeout_ms, 10, 600000);
+}
+
+void CameraChoice::dump(std::ostream& out) const
+{
+	const char* names[] = {"sim", "socket", "camera_sensor"};
+	out << "[device.camera]\ndriver = " << names[static_cast<int>(driver)] << "\n";
+	if (driver == Driver::Socket)
+		out << "address = " << address << "\ntimeout_ms = " << timeout_ms << "\n";
+}
+
 void DeviceOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 {
 	base.loadFromConfigFile(cfg, "device.base");
 	head.loadFromConfigFile(cfg, "device.head");
 	arm.loadFromConfigFile(cfg, "device.arm");
+	camera.loadFromConfigFile(cfg);
 }
 
 void DeviceOptions::dump(std::ostream& out) const
@@ -39,6 +68,7 @@ void DeviceOptions::dump(std::ostream& out) const
 		d->dump(out);
 		out << "\n";
 	}
+	camera.dump(out);
 }
 
 }  // namespace mrolr::mission

@@ -1,4 +1,4 @@
-// The mission's device factory: sim devices or serial drivers per [device.*] section.
+// The robot's device factory: the simulator's devices or serial drivers per [device.*] section.
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/MissionDevices.h>
 #include <mrolr/util/Config.h>
@@ -21,126 +21,67 @@ auto connect(const DeviceChoice& d, Make make)
 	}
 }
 
-/** A serial device and the lab's device that shadows it (gets the same commands). */
 template <typename Device>
-struct Pair
+Device* simOrFail(Device* sim, const DeviceChoice& d)
 {
-	std::unique_ptr<Device> serial;
-	Device& lab;
-};
-
-/** A serial base whose steps also go to the lab's base (its truth then follows). */
-class ShadowedBase : public hw::BaseDevice
-{
- public:
-	explicit ShadowedBase(Pair<hw::BaseDevice> d) : d_(std::move(d)) {}
-	void step(const base::WheelControl& u) override
-	{
-		d_.serial->step(u);
-		d_.lab.step(u);
-	}
-	hw::Odometry odometry() const override { return d_.serial->odometry(); }
-
- private:
-	Pair<hw::BaseDevice> d_;
-};
-
-class ShadowedHead : public hw::HeadDevice
-{
- public:
-	explicit ShadowedHead(Pair<hw::HeadDevice> d) : d_(std::move(d)) {}
-	double moveTo(const geometry::HeadAngles& target) override
-	{
-		const double settle_s = d_.serial->moveTo(target);
-		d_.lab.moveTo(target);
-		return settle_s;
-	}
-	geometry::HeadAngles angles() const override { return d_.serial->angles(); }
-	hw::StereoImages grab() override { return d_.serial->grab(); }
-
- private:
-	Pair<hw::HeadDevice> d_;
-};
-
-class ShadowedArm : public hw::ArmDevice
-{
- public:
-	explicit ShadowedArm(Pair<hw::ArmDevice> d) : d_(std::move(d)) {}
-	void moveTo(const hw::ArmJoints& joints) override
-	{
-		d_.serial->moveTo(joints);
-		d_.lab.moveTo(joints);
-	}
-	hw::ArmJoints joints() const override { return d_.serial->joints(); }
-	void setGripper(bool closed) override
-	{
-		d_.serial->setGripper(closed);
-		d_.lab.setGripper(closed);
-	}
-	bool gripperClosed() const override { return d_.serial->gripperClosed(); }
-	double gripperWidthMm() const override { return d_.serial->gripperWidthMm(); }
-
- private:
-	Pair<hw::ArmDevice> d_;
-};
-
-/** The serial driver itself when the lab's device is behind its port, else a shadowed one. */
-template <typename Shadowed, typename Device>
-std::unique_ptr<Device> shadowUnlessBehind(const DeviceChoice& d, std::unique_ptr<Device> serial,
-                                           Device& lab)
-{
-	if (d.lab_behind_port) return serial;
-	return std::make_unique<Shadowed>(Pair<Device>{std::move(serial), lab});
+	if (!sim)
+		throw util::ConfigError("[" + d.section +
+		                        "] driver = sim: there is no simulator (give the world with "
+		                        "--world or [simulator] world_file, or use driver = serial)");
+	return sim;
 }
 }  // namespace
 
 std::unique_ptr<hw::SerialClient> MissionDevices::open(const DeviceChoice& d)
 {
 	auto client = hw::openSerialClient(d.link);
-	links_.push_back({d.section, d.link.port, client.get(), d.lab_behind_port});
+	links_.push_back({d.section, d.link.port, client.get()});
 	return client;
 }
 
-void MissionDevices::makeBase(const DeviceChoice& d, SimulatedLab& lab)
+hw::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices& sim)
 {
-	std::unique_ptr<hw::BaseDevice> serial =
-	    connect(d, [&] { return std::make_unique<hw::SerialBase>(open(d)); });
-	own_base_ = shadowUnlessBehind<ShadowedBase, hw::BaseDevice>(d, std::move(serial), lab.base());
-	base_ = own_base_.get();
+	using Driver = CameraChoice::Driver;
+	if (o.camera.driver == Driver::Sim)
+	{
+		if (!sim.head)
+			throw util::ConfigError(o.camera.key +
+			                        " = sim: there is no simulator to render the stereo pairs");
+		return [head = sim.head] { return head->grab(); };
+	}
+	throw util::ConfigError(o.camera.key + ": this camera driver is not available yet");
 }
 
-void MissionDevices::makeHead(const DeviceChoice& d, SimulatedLab& lab)
+MissionDevices::MissionDevices(const DeviceOptions& o, const SimDevices& sim)
 {
-	auto images = [&lab] { return lab.head().grab(); };
-	std::unique_ptr<hw::HeadDevice> serial =
-	    connect(d, [&] { return std::make_unique<hw::SerialHead>(open(d), images); });
-	own_head_ = shadowUnlessBehind<ShadowedHead, hw::HeadDevice>(d, std::move(serial), lab.head());
-	head_ = own_head_.get();
-}
-
-void MissionDevices::makeArm(const DeviceChoice& d, SimulatedLab& lab)
-{
-	std::unique_ptr<hw::ArmDevice> serial =
-	    connect(d, [&] { return std::make_unique<hw::SerialArm>(open(d)); });
-	own_arm_ = shadowUnlessBehind<ShadowedArm, hw::ArmDevice>(d, std::move(serial), lab.arm());
-	arm_ = own_arm_.get();
-}
-
-MissionDevices::MissionDevices(const DeviceOptions& o, SimulatedLab& lab)
-{
-	base_ = &lab.base(), head_ = &lab.head(), arm_ = &lab.arm();
-	if (o.base.serial) makeBase(o.base, lab);
-	if (o.head.serial) makeHead(o.head, lab);
-	if (o.arm.serial) makeArm(o.arm, lab);
+	if (o.base.serial)
+		own_base_ = connect(o.base,
+		                    [&] { return std::make_unique<hw::SerialBase>(open(o.base)); });
+	if (o.head.serial)
+	{
+		auto images = camera(o, sim);
+		own_head_ = connect(
+		    o.head, [&] { return std::make_unique<hw::SerialHead>(open(o.head), images); });
+	}
+	if (o.arm.serial)
+		own_arm_ =
+		    connect(o.arm, [&] { return std::make_unique<hw::SerialArm>(open(o.arm)); });
+	base_ = own_base_ ? own_base_.get() : simOrFail(sim.base, o.base);
+	head_ = own_head_ ? own_head_.get() : simOrFail(sim.head, o.head);
+	arm_ = own_arm_ ? own_arm_.get() : simOrFail(sim.arm, o.arm);
 }
 
 MissionDevices::~MissionDevices() = default;
 
+RobotDevices MissionDevices::devices()
+{
+	return {base_, head_, arm_, [this] { return links(); }};
+}
+
 std::vector<LinkReport> MissionDevices::links() const
 {
 	std::vector<LinkReport> out;
-	for (const auto& l : links_)
-		out.push_back({l.section, l.port, l.client->resends(), l.lab_behind_port});
+	for (const auto& l : links_) out.push_back({l.section, l.port, l.client->resends()});
 	return out;
 }
 

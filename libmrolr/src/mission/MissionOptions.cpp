@@ -1,7 +1,6 @@
 // Loading and checking the mission configuration (docs/mission.md "Configuration").
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/util/Config.h>
-#include <mrolr/world/World.h>
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -34,65 +33,20 @@ mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::strin
 	return mrpt::config::CConfigFile(path);
 }
 
-std::string trimmed(const std::string& s)
+/** Keys that moved out of the mission file: a clear error instead of a silent no-op. */
+void rejectMovedKeys(const CConfigFileBase& cfg)
 {
-	const auto a = s.find_first_not_of(" \t");
-	if (a == std::string::npos) return "";
-	return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
-std::vector<std::string> splitOn(const std::string& text, char sep)
-{
-	std::vector<std::string> out;
-	size_t start = 0;
-	while (start <= text.size())
-	{
-		const auto end = std::min(text.find(sep, start), text.size());
-		if (auto t = trimmed(text.substr(start, end - start)); !t.empty()) out.push_back(t);
-		start = end + 1;
-	}
-	return out;
-}
-
-NamedPose waypointPose(const world::Waypoint& w)
-{
-	return {w.name, {w.z_m, w.x_m, w.phi_rad}};
-}
-
-NamedPose parseStation(const CConfigFileBase& cfg, const std::string& key, const std::string& text,
-                       const world::World& w, size_t index)
-{
-	const auto fields = util::splitFields(text);
-	if (fields.size() == 1)
-	{
-		const auto* wp = w.findWaypoint(fields[0]);
-		if (!wp)
-			throw util::ConfigError(util::describeKey(cfg, "mission", key) + ": no waypoint '" +
-			                        fields[0] + "' in " + w.path);
-		return waypointPose(*wp);
-	}
-	double v[3];
-	if (fields.size() != 3 || !util::parseDouble(fields[0], v[0]) ||
-	    !util::parseDouble(fields[1], v[1]) || !util::parseDouble(fields[2], v[2]))
-		throw util::ConfigError(util::describeKey(cfg, "mission", key) + ": station '" + text +
-		                        "' is neither a waypoint name nor 'z x phi_deg'");
-	return {"S" + std::to_string(index + 1), {v[0], v[1], v[2] * M_PI / 180.0}};
-}
-
-std::vector<std::string> readRoute(const CConfigFileBase& cfg, const world::World& w)
-{
-	const auto names = util::splitFields(util::readString(cfg, "mission", "route"));
-	if (names.size() == 1 && names[0] == "world")
-	{
-		std::vector<std::string> all;
-		for (const auto& wp : w.waypoints) all.push_back(wp.name);
-		return all;
-	}
-	for (const auto& n : names)
-		if (!w.findWaypoint(n))
-			throw util::ConfigError(util::describeKey(cfg, "mission", "route") + ": no waypoint '" +
-			                        n + "' in " + w.path);
-	return names;
+	const char* moved[][3] = {
+	    {"mission", "world_file", "the world is the simulator's: [simulator] world_file or --world"},
+	    {"mission", "route", "the route is in the plan ([mission] plan, [plan] route)"},
+	    {"mission", "search_stations", "the stations are in the plan ([plan] stations)"},
+	    {"mission", "home_waypoint", "home is in the plan ([plan] home)"},
+	    {"navigation", "measurement_source", "renamed landmark_sensor (images | ideal_sim)"},
+	    {"search", "scene_source", "renamed scene_sensor (reconstructed | exact_sim)"}};
+	for (const auto& m : moved)
+		if (util::hasKey(cfg, m[0], m[1]))
+			throw util::ConfigError(util::describeKey(cfg, m[0], m[1]) + ": no longer read: " +
+			                        m[2]);
 }
 
 NavigationMode readMode(const CConfigFileBase& cfg)
@@ -104,45 +58,36 @@ NavigationMode readMode(const CConfigFileBase& cfg)
 	                        "' is not slam or dead_reckoning");
 }
 
-void readTarget(const CConfigFileBase& cfg, MissionOptions& o)
+/** The target is a model of the robot's model database, never a world's object. */
+void readTarget(const CConfigFileBase& cfg, const std::string& dir, MissionOptions& o)
 {
-	o.target = util::hasKey(cfg, "mission", "target") ? util::readString(cfg, "mission", "target")
-	                                                  : o.world.mission.target;
-	if (const auto* placed = o.world.findObject(o.target)) o.target = placed->model;
-	if (o.target.empty())
-		throw util::ConfigError(util::describeKey(cfg, "mission", "target") +
-		                        ": no target and the world has no [mission] target");
-	const auto file = resolve(o.world.objects_dir, o.target + ".ini");
+	o.models_dir = resolve(dir, util::readString(cfg, "files", "models_dir"));
+	if (!fs::is_directory(o.models_dir))
+		throw util::ConfigError(util::describeKey(cfg, "files", "models_dir") + ": '" +
+		                        o.models_dir + "' is not a folder");
+	o.target = util::readString(cfg, "mission", "target");
+	const auto file = resolve(o.models_dir, o.target + ".wf");
 	if (!std::ifstream(file).good())
 		throw util::ConfigError(util::describeKey(cfg, "mission", "target") + ": no model '" +
-		                        o.target + "' (" + file + " cannot be opened)");
-	o.target_model_file = file;
+		                        o.target + "' in the model database (" + file +
+		                        " cannot be opened)");
 }
 
-void readHomeAndStations(const CConfigFileBase& cfg, MissionOptions& o)
+void readPlan(const CConfigFileBase& cfg, const std::string& dir,
+              const MissionOptions::PlanChoice& choice, MissionOptions& o)
 {
-	o.home_waypoint = util::hasKey(cfg, "mission", "home_waypoint")
-	                      ? util::readString(cfg, "mission", "home_waypoint")
-	                      : o.world.mission.home_waypoint;
-	if (!o.world.findWaypoint(o.home_waypoint))
-		throw util::ConfigError(util::describeKey(cfg, "mission", "home_waypoint") +
-		                        ": no waypoint '" + o.home_waypoint + "' in " + o.world.path);
-	const auto items = splitOn(util::readString(cfg, "mission", "search_stations"), ';');
-	if (items.empty())
-		throw util::ConfigError(util::describeKey(cfg, "mission", "search_stations") +
-		                        ": at least one station is needed");
-	for (size_t i = 0; i < items.size(); ++i)
-		o.stations.push_back(parseStation(cfg, "search_stations", items[i], o.world, i));
+	o.plan_file = choice.file.empty() ? resolve(dir, util::readString(cfg, "mission", "plan"))
+	                                  : choice.file;
+	o.plan = Plan::load(o.plan_file, choice.overrides);
 }
 
-void readMissionSection(const CConfigFileBase& cfg, const std::string& dir, MissionOptions& o)
+void readMissionSection(const CConfigFileBase& cfg, const std::string& dir,
+                        const MissionOptions::PlanChoice& plan, MissionOptions& o)
 {
+	rejectMovedKeys(cfg);
 	o.name = util::readString(cfg, "mission", "name");
-	o.world_file = resolve(dir, util::readString(cfg, "mission", "world_file"));
-	o.world = world::World::load(o.world_file);
-	readTarget(cfg, o);
-	o.route = readRoute(cfg, o.world);
-	readHomeAndStations(cfg, o);
+	readPlan(cfg, dir, plan, o);
+	readTarget(cfg, dir, o);
 	o.mode = readMode(cfg);
 	o.obstacle_mode = util::readBool(cfg, "mission", "obstacle_mode", false);
 	if (o.obstacle_mode) o.obstacle.loadFromConfigFile(cfg, "obstacle");
@@ -179,51 +124,45 @@ void readVisionFile(const CConfigFileBase& cfg, const std::string& dir, MissionO
 }
 }  // namespace
 
-MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std::string& base_dir)
+MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std::string& base_dir,
+                                          const PlanChoice& plan)
 {
 	MissionOptions o;
 	o.devices.loadFromConfigFile(cfg);
-	readMissionSection(cfg, base_dir, o);
+	readMissionSection(cfg, base_dir, plan, o);
 	readModelFiles(cfg, base_dir, o);
 	o.dock.loadFromConfigFile(cfg, "arm_mount");
-	o.sim_base.loadFromConfigFile(cfg, "sim_base");
-	o.sim_arm.loadFromConfigFile(cfg, "sim_arm");
 	o.navigation.loadFromConfigFile(cfg, "navigation");
 	if (o.navigation.max_rotation_step_deg > 0)
 		o.trajectory.max_rotation_step_deg = o.navigation.max_rotation_step_deg;
 	o.search.loadFromConfigFile(cfg, "search");
-	if (o.navigation.measurement_source == "images") readVisionFile(cfg, base_dir, o);
-	if (o.search.scene_source == "reconstructed")
+	if (o.navigation.landmark_source == LandmarkSource::Images) readVisionFile(cfg, base_dir, o);
+	const bool reconstructed = o.search.scene_source == SceneSource::Reconstructed;
+	if (reconstructed)
 		o.scene.loadFromConfigFile(openNamed(cfg, "files", "scene_file", base_dir), "scene");
-	if (o.search.scene_source == "reconstructed" && o.search.image_verification)
+	if (reconstructed && o.search.image_verification)
 		o.image_verification.loadFromConfigFile(
 		    openNamed(cfg, "files", "recognition_file", base_dir), "image_verification");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
 	return o;
 }
 
-MissionOptions MissionOptions::load(const std::string& path)
+MissionOptions MissionOptions::load(const std::string& path, const PlanChoice& plan)
 {
 	if (!std::ifstream(path).good())
 		throw util::ConfigError("cannot open mission configuration '" + path + "'");
 	mrpt::config::CConfigFile cfg(path);
-	auto o = fromConfig(cfg, fs::path(path).parent_path().string());
+	auto o = fromConfig(cfg, fs::path(path).parent_path().string(), plan);
 	o.config_path = path;
 	return o;
 }
 
 void MissionOptions::dump(std::ostream& out) const
 {
-	out << "[mission]\nname = " << name << "\nworld_file = " << world_file
-	    << "\ntarget = " << target << "\nhome_waypoint = " << home_waypoint
+	out << "[mission]\nname = " << name << "\nplan = " << plan_file << "\ntarget = " << target
 	    << "\nmode = " << (mode == NavigationMode::Slam ? "slam" : "dead_reckoning")
-	    << "\nseed = " << seed << "\nhome_tolerance_m = " << home_tolerance_m << "\nroute =";
-	for (const auto& r : route) out << " " << r;
-	out << "\nsearch_stations =";
-	for (size_t i = 0; i < stations.size(); ++i)
-		out << (i ? "; " : " ") << stations[i].xv_zxphi.x() << " " << stations[i].xv_zxphi.y()
-		    << " " << stations[i].xv_zxphi.z() * 180 / M_PI;
-	out << "\n\n[navigation]\n";
+	    << "\nseed = " << seed << "\nhome_tolerance_m = " << home_tolerance_m
+	    << "\n\n[files]\nmodels_dir = " << models_dir << "\n\n[navigation]\n";
 	navigation.dump(out);
 	out << "\n[search]\n";
 	search.dump(out);

@@ -2,40 +2,65 @@
 #include <mrolr/mission/Navigator.h>
 #include <mrolr/slam/FeatureSelection.h>
 #include <mrolr/slam/FeatureVisibility.h>
-#include <mrolr/slam/HeadMeasurement.h>
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <sstream>
 
 namespace mrolr::mission
 {
 namespace
 {
-const world::Patch* patchOf(const world::World& w, const std::string& name)
+Eigen::Matrix3d covarianceOf(const PlanFeature& k)
 {
-	for (const auto& p : w.patches)
-		if (p.name == name) return &p;
-	return nullptr;
+	return k.sigma_m.cwiseAbs2().asDiagonal();
+}
+
+std::string where(const Eigen::Vector3d& e)
+{
+	std::ostringstream s;
+	s.precision(2);
+	s << std::fixed << "(z " << e.x() << ", x " << e.y() << ") m";
+	return s.str();
 }
 }  // namespace
 
-Navigator::Navigator(const MissionOptions& o, hw::BaseDevice& base,
-                     std::function<Eigen::Vector3d()> truth, Timeline& timeline)
+Navigator::Navigator(const MissionOptions& o, hw::BaseDevice& base, Timeline& timeline)
     : o_(o),
       base_(base),
-      truth_(std::move(truth)),
       timeline_(timeline),
       model_(o.labmate),
       filter_(o.slam, model_),
       rng_(o.seed + 101)
 {
-	filter_.reset(base_.odometry().xv_zxphi);
-	// With images every feature needs a saved patch (VisualSlam): no world landmarks then.
-	if (o_.navigation.measurement_source != "images")
-		for (const auto& l : o_.world.landmarks)
-			if (l.known) filter_.addKnownFeature(l.name, l.p_LinW);
-	record();
+	last_odometry_ = base_.odometry();
+	filter_.reset(o.plan.start().xv_zxphi);
+	record(last_odometry_);
+}
+
+void Navigator::useImages(vision::StereoHeadDevice& head,
+                          const std::function<double()>& grab_seconds)
+{
+	vslam_ = std::make_unique<vision::VisualSlam>(filter_, geometry::BiSightHead(o_.bisight),
+	                                              o_.vision, model_);
+	images_head_ = &head;
+	grab_seconds_ = grab_seconds;
+	addPlanFeatures();
+}
+
+void Navigator::useSensor(hw::LandmarkSensor& sensor)
+{
+	sensor_ = &sensor;
+	addPlanFeatures();
+}
+
+void Navigator::addPlanFeatures()
+{
+	for (const auto& k : o_.plan.known_features)
+		if (vslam_)
+			vslam_->addKnownFeature(k.id, k.p_FinW, covarianceOf(k), k.patch);
+		else
+			filter_.addKnownFeature(k.id, k.p_FinW, covarianceOf(k));
 }
 
 Eigen::Vector3d Navigator::estimate()
@@ -43,12 +68,17 @@ Eigen::Vector3d Navigator::estimate()
 	return o_.mode == NavigationMode::Slam ? filter_.vehicle() : base_.odometry().xv_zxphi;
 }
 
+Eigen::Matrix3d Navigator::estimateCovariance()
+{
+	return o_.mode == NavigationMode::Slam ? filter_.vehicleCovariance() : Eigen::Matrix3d::Zero();
+}
+
 void Navigator::driveTo(const NamedPose& goal)
 {
 	const Eigen::Vector3d now = estimate();
 	const auto via =
-	    detourAroundTables(o_.world, {now.x(), now.y()}, {goal.xv_zxphi.x(), goal.xv_zxphi.y()},
-	                       o_.navigation.table_clearance_m);
+	    detourAroundTables(o_.plan.tables, {now.x(), now.y()},
+	                       {goal.xv_zxphi.x(), goal.xv_zxphi.y()}, o_.navigation.table_clearance_m);
 	driveThrough(via, {now.x(), now.y()}, o_.navigation.max_correction_legs);
 	driveStraightTo(goal.xv_zxphi, o_.navigation.max_correction_legs);
 	timeline_.note("reached " + goal.name);
@@ -106,138 +136,57 @@ bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eig
 	return true;
 }
 
+base::WheelControl Navigator::encoderControl(const hw::Odometry& before,
+                                             const hw::Odometry& after) const
+{
+	const double dt = after.time_s - before.time_s;
+	if (!(dt > 0)) return {0, 0, 0};
+	const double per_m = o_.labmate.encoder_ticks_per_m;
+	return {double(after.ticks_right - before.ticks_right) / per_m / dt,
+	        double(after.ticks_left - before.ticks_left) / per_m / dt, dt};
+}
+
 void Navigator::execute(const base::PlannedStep& step)
 {
+	if (stop_requested && stop_requested()) throw StopRequested();
 	base_.step(step.u);
 	timeline_.advance(step.u.dt_s);
+	const hw::Odometry odo = base_.odometry();
+	const base::WheelControl u = encoderControl(last_odometry_, odo);
+	last_odometry_ = odo;
 	if (o_.mode == NavigationMode::Slam && vslam_)
-		measureInImages(step.u);
+		measureInImages(u);
 	else if (o_.mode == NavigationMode::Slam)
 	{
 		{
 			ComputeTimer t(timeline_);
-			filter_.predict(step.u);
+			filter_.predict(u);
 		}
-		measure();
+		if (sensor_) measureWithSensor();
 	}
-	record();
+	record(odo);
+	if (odo.bumper)
+		throw BumperPressed("collision: the bumper was pressed at the estimated " +
+		                        where(estimate()),
+		                    estimate());
 }
 
-bool Navigator::canSee(const Eigen::Vector3d& xv, const world::Landmark& l) const
+void Navigator::noteNis(const std::string& label, double nis, bool accepted)
 {
-	const auto c0 = slam::headCentreInW(xv, o_.slam.head.constants);
-	if ((l.p_LinW - c0).norm() > o_.navigation.max_range_m) return false;
-	if (const auto* p = patchOf(o_.world, l.name); p && p->normal.dot(c0 - p->centre_m) <= 0)
-		return false;  // a patch is seen only from its front
-	return slam::headCanFixate(xv, l.p_LinW, o_.slam.head) == slam::Visibility::Visible;
+	nis_.push_back({timeline_.simulatedSeconds(), label, nis, accepted});
 }
 
-Eigen::Vector3d Navigator::noisyMeasurement(const Eigen::Vector3d& xv, const Eigen::Vector3d& p)
-{
-	std::normal_distribution<double> n(0, 1);
-	const auto& nav = o_.navigation;
-	return slam::predictMeasurement(xv, p, o_.slam.head.constants) +
-	       Eigen::Vector3d(nav.true_std_pan_rad * n(rng_), nav.true_std_elevation_rad * n(rng_),
-	                       nav.true_std_vergence_rad * n(rng_));
-}
-
-std::vector<size_t> Navigator::visibleMapped(const Eigen::Vector3d& xv_true)
-{
-	std::vector<size_t> out;
-	for (size_t i = 0; i < filter_.numFeatures(); ++i)
-	{
-		const auto* l = o_.world.findLandmark(filter_.info(i).label);
-		const bool predicted = slam::assessVisibility(filter_.vehicle(), filter_.feature(i),
-		                                              filter_.info(i).p_C0atInitInW,
-		                                              o_.slam) == slam::Visibility::Visible;
-		if (l && predicted && canSee(xv_true, *l)) out.push_back(i);
-	}
-	return out;
-}
-
-void Navigator::initialiseNewFeature(const Eigen::Vector3d& xv_true)
-{
-	const world::Landmark* best = nullptr;
-	double best_pan = 1e9;
-	for (const auto& l : o_.world.landmarks)
-	{
-		bool mapped = false;
-		for (size_t i = 0; i < filter_.numFeatures() && !mapped; ++i)
-			mapped = filter_.info(i).label == l.name;
-		if (mapped || !canSee(xv_true, l)) continue;
-		const double pan =
-		    std::abs(slam::predictMeasurement(xv_true, l.p_LinW, o_.slam.head.constants)(0));
-		if (pan < best_pan) best = &l, best_pan = pan;
-	}
-	if (!best) return;
-	const auto h = noisyMeasurement(xv_true, best->p_LinW);
-	ComputeTimer t(timeline_);
-	filter_.initialiseFeature(best->name, h);
-}
-
-void Navigator::measure()
-{
-	const Eigen::Vector3d xv_true = truth_();
-	auto visible = visibleMapped(xv_true);
-	if (static_cast<int>(visible.size()) < o_.navigation.min_mapped_visible)
-		initialiseNewFeature(xv_true);
-	std::vector<slam::Observation> obs;
-	for (int k = 0; k < o_.navigation.measurements_per_step && !visible.empty(); ++k)
-	{
-		std::optional<size_t> pick;
-		{
-			ComputeTimer t(timeline_);
-			pick =
-			    slam::largestVolume(filter_.stateVector(), filter_.covariance(), visible, o_.slam);
-		}
-		if (!pick) break;
-		const size_t i = visible[*pick];
-		visible.erase(visible.begin() + static_cast<long>(*pick));
-		timeline_.advance(o_.navigation.measurement_time_s);
-		if (lostThisTime(i)) continue;
-		obs.push_back(
-		    {i, noisyMeasurement(xv_true, o_.world.findLandmark(filter_.info(i).label)->p_LinW)});
-	}
-	ComputeTimer t(timeline_);
-	if (!obs.empty())
-	{
-		const auto report = filter_.update(obs);
-		measurements += static_cast<int>(report.accepted.size());
-		rejected += static_cast<int>(report.rejected.size());
-		for (size_t i : report.accepted) filter_.recordAttempt(i, true);
-		for (size_t i : report.rejected) filter_.recordAttempt(i, false);
-	}
-	deleteFailingFeatures();
-}
-
-bool Navigator::lostThisTime(size_t i)
-{
-	const double p = o_.navigation.lost_feature_probability;
-	if (p <= 0 || std::uniform_real_distribution<double>(0, 1)(rng_) >= p) return false;
-	filter_.recordAttempt(i, false);
-	++lost;
-	return true;
-}
-
-void Navigator::deleteFailingFeatures()
-{
-	for (size_t i = filter_.numFeatures(); i-- > 0;)
-		if (!filter_.info(i).known && filter_.shouldDelete(i))
-		{
-			filter_.deleteFeature(i);
-			++deleted_features;
-		}
-}
-
-void Navigator::record()
+void Navigator::record(const hw::Odometry& odo)
 {
 	PathSample s;
 	s.time_s = timeline_.simulatedSeconds();
-	s.truth = truth_();
-	const auto odo = base_.odometry();
+	s.device_time_s = odo.time_s;
 	s.odometry = odo.xv_zxphi;
 	s.ticks_right = odo.ticks_right, s.ticks_left = odo.ticks_left;
+	s.bumper = odo.bumper;
 	s.estimate = estimate();
+	s.compute_s = timeline_.computeSeconds() - last_compute_s_;
+	last_compute_s_ = timeline_.computeSeconds();
 	if (o_.mode == NavigationMode::Slam)
 	{
 		s.P_vv = filter_.vehicleCovariance();
@@ -252,7 +201,8 @@ std::vector<MappedLandmark> Navigator::map()
 	std::vector<MappedLandmark> out;
 	if (o_.mode != NavigationMode::Slam) return out;
 	for (size_t i = 0; i < filter_.numFeatures(); ++i)
-		out.push_back({filter_.info(i).label, filter_.feature(i), filter_.featureCovariance(i)});
+		out.push_back({filter_.info(i).label, filter_.feature(i), filter_.featureCovariance(i),
+		               filter_.info(i).known});
 	return out;
 }
 

@@ -7,15 +7,6 @@
 
 namespace mrolr::mission
 {
-void Navigator::useImages(vision::StereoHeadDevice& head,
-                          const std::function<double()>& grab_seconds)
-{
-	vslam_ = std::make_unique<vision::VisualSlam>(filter_, geometry::BiSightHead(o_.bisight),
-	                                              o_.vision, model_);
-	images_head_ = &head;
-	grab_seconds_ = grab_seconds;
-}
-
 void Navigator::measureInImages(const base::WheelControl& u)
 {
 	for (int k = 0; k < std::max(1, o_.navigation.measurements_per_step); ++k)

@@ -60,7 +60,7 @@ void ObstacleAvoidance::lookAround(ObstacleEvent& e, std::vector<Eigen::Vector3d
 	e.detour = planDetour(e.sighting, points, o_);
 }
 
-void ObstacleAvoidance::setKnownTables(const std::vector<world::Table>& tables, double margin_m)
+void ObstacleAvoidance::setKnownTables(const std::vector<PlanTable>& tables, double margin_m)
 {
 	tables_ = tables;
 	table_margin_m_ = margin_m;

@@ -1,6 +1,7 @@
-// report.json and report.md of a mission.
+// report.json (the robot's part) and report.md of a mission.
 #include <mrolr/arm/GripperPose.h>
 #include <mrolr/mission/MissionOutputs.h>
+#include <mrolr/slam/Chi2.h>
 
 #include <cmath>
 #include <iomanip>
@@ -12,21 +13,16 @@ namespace
 {
 using nlohmann::json;
 
-json matrix34(const Eigen::Isometry3d& T)
+json vec(const Eigen::VectorXd& v)
+{
+	return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+json mat3(const Eigen::Matrix3d& M)
 {
 	json rows = json::array();
-	for (int i = 0; i < 3; ++i) rows.push_back({T(i, 0), T(i, 1), T(i, 2), T(i, 3)});
+	for (int i = 0; i < 3; ++i) rows.push_back({M(i, 0), M(i, 1), M(i, 2)});
 	return rows;
-}
-
-json orNull(bool available, double v)
-{
-	return available ? json(v) : json(nullptr);
-}
-
-json finiteOrNull(double v)
-{
-	return orNull(std::isfinite(v), v);
 }
 
 json graspJson(const RetrievalResult& g)
@@ -37,6 +33,8 @@ json graspJson(const RetrievalResult& g)
 	          {"arm_moved", g.attempted},
 	          {"T_OinA_mm", matrix34(g.T_OinA)},
 	          {"T_GinA_mm", matrix34(g.T_GinA)},
+	          {"T_GinO_mm", matrix34(g.T_GinO)},
+	          {"grasp_turn_deg", g.grasp_turn_deg},
 	          {"grasp_pose",
 	           {{"p_mm", {p.p_mm.x(), p.p_mm.y(), p.p_mm.z()}},
 	            {"yaw_deg", p.yaw_deg},
@@ -47,10 +45,14 @@ json graspJson(const RetrievalResult& g)
 	          {"correction_deg", g.correction_deg},
 	          {"correction_applied", g.correction_applied},
 	          {"correction_refused", g.correction_refused},
-	          {"object_error_before_mm", finiteOrNull(g.object_error_before_mm)},
-	          {"object_error_after_mm", finiteOrNull(g.object_error_after_mm)},
-	          {"grasp_error_mm", finiteOrNull(g.grasp_error_mm)},
-	          {"grasped", g.grasped}};
+	          {"T_OinC0_first_mm", matrix34(g.T_OinC0_first)},
+	          {"T_OinC0_verified_mm", matrix34(g.T_OinC0_verified)},
+	          {"width_closed_mm", g.width_closed_mm},
+	          {"width_lifted_mm", g.width_lifted_mm},
+	          {"held", g.retrieved},
+	          {"object_error_before_mm", nullptr},
+	          {"object_error_after_mm", nullptr},
+	          {"grasp_error_mm", nullptr}};
 	if (g.attempted)
 	{
 		const auto jj = g.joints.toMmDeg();
@@ -71,37 +73,123 @@ json linksJson(const std::vector<LinkReport>& links)
 {
 	json out = json::array();
 	for (const auto& l : links)
-		out.push_back({{"device", l.section},
-		               {"port", l.port},
-		               {"resends", l.resends},
-		               {"emulated_lab_device", l.lab_behind_port}});
+		out.push_back({{"device", l.section}, {"port", l.port}, {"resends", l.resends}});
 	return out;
+}
+
+json pathJson(const std::vector<PathSample>& path)
+{
+	json out = json::array();
+	for (const auto& s : path)
+		out.push_back({{"t_s", s.time_s},
+		               {"device_t_s", s.device_time_s},
+		               {"estimate", vec(s.estimate)},
+		               {"P_vv", mat3(s.P_vv)},
+		               {"odometry", vec(s.odometry)},
+		               {"features", s.features},
+		               {"bumper", s.bumper}});
+	return out;
+}
+
+json mapJson(const std::vector<MappedLandmark>& map)
+{
+	json out = json::array();
+	for (const auto& m : map)
+		out.push_back(
+		    {{"label", m.label}, {"p_FinW", vec(m.p_FinW)}, {"P", mat3(m.P)}, {"known", m.known}});
+	return out;
+}
+
+/** Every update's NIS and the fraction inside the two-sided 95 % bounds of χ²₃. */
+json nisJson(const std::vector<NisRecord>& nis)
+{
+	const double lo = slam::chi2Quantile(0.025, 3), hi = slam::chi2Quantile(0.975, 3);
+	json values = json::array();
+	int inside = 0;
+	for (const auto& n : nis)
+	{
+		values.push_back({{"t_s", n.time_s}, {"feature", n.feature}, {"nis", n.nis},
+		                  {"accepted", n.accepted}});
+		inside += n.nis >= lo && n.nis <= hi;
+	}
+	return {{"count", nis.size()},
+	        {"bounds_95", {lo, hi}},
+	        {"fraction_inside_95", nis.empty() ? json(nullptr) : json(double(inside) / nis.size())},
+	        {"values", values}};
+}
+
+json robotJson(const MissionResult& r, const MissionOptions& o)
+{
+	const PathSample last = r.path.empty() ? PathSample{} : r.path.back();
+	json j = {{"success", r.success},
+	          {"home", {{"name", r.home.name}, {"zxphi", vec(r.home.xv_zxphi)}}},
+	          {"home_estimate_error_m", r.home_estimate_error_m},
+	          {"home_tolerance_m", o.home_tolerance_m},
+	          {"final_estimate_zxphi", vec(last.estimate)},
+	          {"final_estimate_P_vv", mat3(last.P_vv)},
+	          {"final_odometry_zxphi", vec(last.odometry)},
+	          {"held_width_mm", r.held_width_mm},
+	          {"collided", r.collided},
+	          {"collision_estimate_zxphi", vec(r.collision_estimate)},
+	          {"dock_T_C0inA_mm", matrix34(o.dock.T_C0inA)},
+	          {"head_height_m", o.bisight.head_height_m},
+	          {"path", pathJson(r.path)},
+	          {"map", mapJson(r.map)}};
+	if (r.found)
+		j["recognition"] = {{"T_OinC0_mm", matrix34(r.search.T_OinC0)},
+		                    {"frame", r.search.frame ? json(*r.search.frame) : json(nullptr)},
+		                    {"search_estimate_zxphi", vec(r.search_xv_estimate)}};
+	return j;
 }
 }  // namespace
 
+json matrix34(const Eigen::Isometry3d& T)
+{
+	json rows = json::array();
+	for (int i = 0; i < 3; ++i) rows.push_back({T(i, 0), T(i, 1), T(i, 2), T(i, 3)});
+	return rows;
+}
+
+Eigen::Isometry3d isometryFrom(const json& rows)
+{
+	if (!rows.is_array() || rows.size() != 3)
+		throw std::invalid_argument("a transform must be 3 rows of [R | t]");
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	for (int i = 0; i < 3; ++i)
+	{
+		if (!rows[i].is_array() || rows[i].size() != 4)
+			throw std::invalid_argument("a transform row must have 4 numbers");
+		for (int k = 0; k < 4; ++k) T.matrix()(i, k) = rows[i][k].get<double>();
+	}
+	return T;
+}
+
 json reportJson(const MissionResult& r, const MissionOptions& o)
 {
-	const bool f = r.found && !r.search.instance.empty();
 	json j = {{"mission", o.name},
 	          {"success", r.success},
 	          {"failure", r.failure},
 	          {"stopped", r.stopped},
+	          {"interrupted", r.interrupted},
 	          {"serial_links", linksJson(r.links)},
 	          {"target", r.target},
+	          {"plan", o.plan_file},
+	          {"seed", o.seed},
 	          {"found", r.found},
-	          {"found_instance", r.found_instance},
+	          {"found_instance", nullptr},
 	          {"found_at_station", r.found_at_station},
 	          {"stations_searched", r.stations_searched},
 	          {"retrieved", r.retrieved},
 	          {"returned_home", r.returned_home},
 	          {"mode", o.mode == NavigationMode::Slam ? "slam" : "dead_reckoning"},
-	          {"final_position_error_m", r.final_position_error_m},
-	          {"final_heading_error_deg", r.final_heading_error_deg},
-	          {"final_estimate_error_m", r.final_estimate_error_m},
-	          {"dead_reckoning_error_m", r.dead_reckoning_error_m},
-	          {"object_rotation_error_deg", orNull(f, r.search.rotation_error_deg)},
-	          {"object_translation_error_mm", orNull(f, r.search.translation_error_mm)},
-	          {"grasp_correction_mm", orNull(r.retrieval.verified, r.retrieval.correction_mm)},
+	          {"final_position_error_m", nullptr},
+	          {"final_heading_error_deg", nullptr},
+	          {"final_estimate_error_m", nullptr},
+	          {"dead_reckoning_error_m", nullptr},
+	          {"object_rotation_error_deg", nullptr},
+	          {"object_translation_error_mm", nullptr},
+	          {"grasp_correction_mm", r.retrieval.verified ? json(r.retrieval.correction_mm)
+	                                                       : json(nullptr)},
 	          {"stages", r.timeline.stageSeconds()},
 	          {"stage_compute_seconds", r.timeline.stageComputeSeconds()},
 	          {"compute_seconds", r.timeline.computeSeconds()},
@@ -113,11 +201,14 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"measurements_rejected", r.measurements_rejected},
 	          {"measurements_lost", r.measurements_lost},
 	          {"features_deleted", r.features_deleted},
-	          {"measurement_source", o.navigation.measurement_source},
+	          {"navigation_source", r.navigation_source},
 	          {"navigation_pairs", r.navigation_pairs},
 	          {"image_searches", r.image_searches},
 	          {"image_matches", r.image_matches},
 	          {"features", r.map.size()},
+	          {"nis", nisJson(r.nis)},
+	          {"robot", robotJson(r, o)},
+	          {"eval", nullptr},
 	          {"timeline", timelineJson(r.timeline)}};
 	if (o.obstacle_mode) j["obstacle"] = obstacleJson(r.obstacle);
 	if (r.found)
@@ -126,62 +217,10 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"level", r.search.recognition.level},
 		                    {"views", r.search.views},
 		                    {"T_OinC0_mm", matrix34(r.search.T_OinC0)},
-		                    {"T_OinC0_true_mm", matrix34(r.search.T_OinC0_true)}};
+		                    {"T_OinC0_true_mm", nullptr}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);
 	return j;
-}
-
-std::string reportMarkdown(const MissionResult& r, const MissionOptions& o)
-{
-	std::ostringstream s;
-	s << std::fixed << std::setprecision(3);
-	s << "# Mission " << o.name << ": " << (r.success ? "SUCCESS" : "FAILED") << "\n\n";
-	if (!r.failure.empty()) s << "Reason: " << r.failure << "\n\n";
-	s << "| item | value |\n|---|---|\n"
-	  << "| target | " << r.target << " |\n| found | " << (r.found ? "yes" : "no")
-	  << (r.found ? " (" + r.found_instance + " at " + r.found_at_station + ")" : "") << " |\n"
-	  << "| stations searched | " << r.stations_searched << " |\n"
-	  << "| retrieved | " << (r.retrieved ? "yes" : "no") << " |\n"
-	  << "| returned home | " << (r.returned_home ? "yes" : "no") << " |\n"
-	  << "| final position error (m) | " << r.final_position_error_m << " |\n"
-	  << "| estimate error at home (m) | " << r.final_estimate_error_m << " |\n"
-	  << "| dead-reckoning error at home (m) | " << r.dead_reckoning_error_m << " |\n";
-	if (r.found)
-		s << "| object pose error | " << r.search.translation_error_mm << " mm, "
-		  << r.search.rotation_error_deg << " deg |\n| recognition confidence | "
-		  << r.search.recognition.confidence << " (level " << r.search.recognition.level
-		  << ") |\n| grasp correction (mm) | " << r.retrieval.correction_mm << " ("
-		  << r.retrieval.correction_deg << " deg, "
-		  << (r.retrieval.correction_applied   ? "applied"
-		      : r.retrieval.correction_refused ? "refused"
-		                                       : "not applied")
-		  << ") |\n";
-	s << "| simulated time (s) | " << r.timeline.simulatedSeconds() << " |\n"
-	  << "| robot compute (s) | " << r.timeline.computeSeconds() << " |\n"
-	  << "| simulator rendering (s) | " << r.timeline.renderSeconds() << " |\n";
-	if (o.obstacle_mode)
-		s << "| obstacle mode | " << r.obstacle.checks << " checks, " << r.obstacle.events.size()
-		  << " obstacles avoided, " << r.obstacle.failed_looks << " failed looks |\n";
-	for (const auto& l : r.links)
-		s << "| serial " << l.section << " | " << l.port << ", " << l.resends << " resends |\n";
-	s << "\n## Stages\n\n"
-	  << "| stage | simulated s | compute s |\n|---|---|---|\n";
-	for (const auto& [name, sec] : r.timeline.stageSeconds())
-	{
-		const auto& c = r.timeline.stageComputeSeconds();
-		s << "| " << name << " | " << sec << " | " << (c.count(name) ? c.at(name) : 0.0) << " |\n";
-	}
-	s << "\n## Timeline\n\n";
-	for (const auto& e : r.timeline.events())
-		s << "- " << std::setprecision(1) << e.time_s << " s [" << e.stage << "] " << e.text
-		  << "\n";
-	if (r.found && !r.retrieval.reasons.empty())
-	{
-		s << "\n## Grasp problems\n\n";
-		for (const auto& why : r.retrieval.reasons) s << "- " << why << "\n";
-	}
-	return s.str();
 }
 
 }  // namespace mrolr::mission

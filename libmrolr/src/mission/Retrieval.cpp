@@ -75,6 +75,7 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 		if (turn == 0) r.reasons = c.reasons, r.T_GinA = T_GinA;
 		if (!c.feasible()) continue;
 		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = c.solutions.front().joints;
+		r.T_GinO = graspInObject(turn);
 		r.reasons.clear();
 		return true;
 	}
@@ -108,7 +109,6 @@ Eigen::Isometry3d Retrieval::graspAt(const Eigen::Isometry3d& T_OinC0_mm, double
 
 RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
                                hw::ArmDevice& arm, const Reobserve& reobserve,
-                               const std::function<std::string()>& grasped,
                                Timeline& timeline) const
 {
 	RetrievalResult r;
@@ -126,16 +126,30 @@ RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table
 	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
 	r.attempted = true;
 	if (!reachAndVerify(r, arm, reobserve, timeline)) return r;
+	closeAndLift(r, arm, timeline);
+	return r;
+}
+
+void Retrieval::closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& timeline) const
+{
 	arm.setGripper(true);
-	timeline.note("gripper closed");
+	r.width_closed_mm = arm.gripperWidthMm();
+	timeline.note("gripper closed, jaws " + mm(r.width_closed_mm) + " apart");
+	if (r.width_closed_mm < o_.retrieval.min_held_width_mm)
+	{
+		r.reasons.push_back("the gripper closed on nothing (jaws " + mm(r.width_closed_mm) +
+		                    " apart)");
+		return;
+	}
 	if (const auto lift = solve(shifted(r.T_GinA, {0, 0, o_.retrieval.lift_mm})))
 		moveTo(arm, *lift, timeline);
 	else
 		r.reasons.push_back("no IK solution for the lift pose");
-	r.grasped = grasped();
-	r.retrieved = !r.grasped.empty();
-	if (!r.retrieved) r.reasons.push_back("the gripper closed on nothing");
-	return r;
+	r.width_lifted_mm = arm.gripperWidthMm();
+	r.retrieved = r.width_lifted_mm >= o_.retrieval.min_held_width_mm;
+	if (!r.retrieved)
+		r.reasons.push_back("the object slipped out during the lift (jaws " +
+		                    mm(r.width_lifted_mm) + " apart)");
 }
 
 bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reobserve& reobserve,
@@ -203,6 +217,7 @@ void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
 		return;
 	}
 	r.T_GinA = T_GinA, r.joints = *j, r.grasp_turn_deg = turn, r.correction_applied = true;
+	r.T_GinO = graspInObject(turn);
 }
 
 }  // namespace mrolr::mission

@@ -13,21 +13,19 @@ void NavigationOptions::loadFromConfigFile(const CConfigFileBase& c, const std::
 {
 	measurements_per_step = static_cast<int>(util::readInt(c, s, "measurements_per_step"));
 	min_mapped_visible = static_cast<int>(util::readInt(c, s, "min_mapped_visible"));
-	max_range_m = readDouble(c, s, "max_range_m");
-	true_std_pan_rad = readDouble(c, s, "true_std_pan_rad");
-	true_std_elevation_rad = readDouble(c, s, "true_std_elevation_rad");
-	true_std_vergence_rad = readDouble(c, s, "true_std_vergence_rad");
 	measurement_time_s = readDouble(c, s, "measurement_time_s");
 	waypoint_tolerance_m = readDouble(c, s, "waypoint_tolerance_m");
 	max_correction_legs = static_cast<int>(util::readInt(c, s, "max_correction_legs"));
 	table_clearance_m = readDouble(c, s, "table_clearance_m");
 	max_rotation_step_deg = readDouble(c, s, "max_rotation_step_deg", max_rotation_step_deg);
 	reverse_max_m = readDouble(c, s, "reverse_max_m", reverse_max_m);
-	if (util::hasKey(c, s, "measurement_source"))
-		measurement_source = util::readString(c, s, "measurement_source");
-	if (measurement_source != "ideal" && measurement_source != "images")
-		throw util::ConfigError(util::describeKey(c, s, "measurement_source") + ": '" +
-		                        measurement_source + "' is not one of ideal, images");
+	if (util::hasKey(c, s, "landmark_sensor"))
+		landmark_sensor = util::readString(c, s, "landmark_sensor");
+	if (landmark_sensor.empty())
+		throw util::ConfigError(util::describeKey(c, s, "landmark_sensor") +
+		                        ": empty (images, or a simulated sensor such as ideal_sim)");
+	landmark_source =
+	    landmark_sensor == "images" ? LandmarkSource::Images : LandmarkSource::Simulated;
 	image_nssd_ambiguity_margin =
 	    readDouble(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin);
 	util::requireInRange(c, s, "image_nssd_ambiguity_margin", image_nssd_ambiguity_margin, -1, 4);
@@ -44,16 +42,13 @@ void NavigationOptions::loadFromConfigFile(const CConfigFileBase& c, const std::
 void NavigationOptions::dump(std::ostream& out) const
 {
 	out << "measurements_per_step = " << measurements_per_step
-	    << "\nmin_mapped_visible = " << min_mapped_visible << "\nmax_range_m = " << max_range_m
-	    << "\ntrue_std_pan_rad = " << true_std_pan_rad
-	    << "\ntrue_std_elevation_rad = " << true_std_elevation_rad
-	    << "\ntrue_std_vergence_rad = " << true_std_vergence_rad
+	    << "\nmin_mapped_visible = " << min_mapped_visible
 	    << "\nmeasurement_time_s = " << measurement_time_s
 	    << "\nwaypoint_tolerance_m = " << waypoint_tolerance_m
 	    << "\nmax_correction_legs = " << max_correction_legs
 	    << "\ntable_clearance_m = " << table_clearance_m
 	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
-	    << "\nreverse_max_m = " << reverse_max_m << "\nmeasurement_source = " << measurement_source
+	    << "\nreverse_max_m = " << reverse_max_m << "\nlandmark_sensor = " << landmark_sensor
 	    << "\nimage_nssd_ambiguity_margin = " << image_nssd_ambiguity_margin
 	    << "\nlost_feature_probability = " << lost_feature_probability << "\n";
 }
@@ -65,34 +60,24 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	pan_to_deg = readDouble(c, s, "pan_to_deg");
 	pan_step_deg = readDouble(c, s, "pan_step_deg");
 	head_move_time_s = readDouble(c, s, "head_move_time_s");
-	endpoint_sigma_mm = readDouble(c, s, "endpoint_sigma_mm");
-	missing_fraction = readDouble(c, s, "missing_fraction");
-	fragment_probability = readDouble(c, s, "fragment_probability");
-	hide_back_side = util::readBool(c, s, "hide_back_side", hide_back_side);
-	max_object_range_m = readDouble(c, s, "max_object_range_m");
 	render_stereo = util::readBool(c, s, "render_stereo", render_stereo);
-	if (util::hasKey(c, s, "scene_source")) scene_source = util::readString(c, s, "scene_source");
+	if (util::hasKey(c, s, "scene_sensor")) scene_sensor = util::readString(c, s, "scene_sensor");
+	if (scene_sensor.empty())
+		throw util::ConfigError(util::describeKey(c, s, "scene_sensor") +
+		                        ": empty (reconstructed, or a simulated sensor such as exact_sim)");
+	scene_source =
+	    scene_sensor == "reconstructed" ? SceneSource::Reconstructed : SceneSource::Simulated;
 	image_verification = util::readBool(c, s, "image_verification", image_verification);
-	if (scene_source != "simulated" && scene_source != "reconstructed")
-		throw util::ConfigError(util::describeKey(c, s, "scene_source") + ": '" + scene_source +
-		                        "' is not one of simulated, reconstructed");
 	util::requireInRange(c, s, "pan_step_deg", pan_step_deg, 0.1, 90);
 	util::requireInRange(c, s, "pan_to_deg", pan_to_deg, pan_from_deg, 90);
-	util::requireInRange(c, s, "missing_fraction", missing_fraction, 0, 0.9);
 }
 
 void SearchOptions::dump(std::ostream& out) const
 {
 	out << "gaze_tilt_deg = " << gaze_tilt_deg << "\npan_from_deg = " << pan_from_deg
 	    << "\npan_to_deg = " << pan_to_deg << "\npan_step_deg = " << pan_step_deg
-	    << "\nhead_move_time_s = " << head_move_time_s
-	    << "\nendpoint_sigma_mm = " << endpoint_sigma_mm
-	    << "\nmissing_fraction = " << missing_fraction
-	    << "\nfragment_probability = " << fragment_probability
-	    << "\nhide_back_side = " << (hide_back_side ? "true" : "false")
-	    << "\nmax_object_range_m = " << max_object_range_m
+	    << "\nhead_move_time_s = " << head_move_time_s << "\nscene_sensor = " << scene_sensor
 	    << "\nrender_stereo = " << (render_stereo ? "true" : "false")
-	    << "\nscene_source = " << scene_source
 	    << "\nimage_verification = " << (image_verification ? "true" : "false") << "\n";
 }
 
@@ -108,6 +93,8 @@ void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::s
 	util::requireInRange(c, s, "max_grasp_correction_mm", max_grasp_correction_mm, 0, 1000);
 	inject_pose_error_mm = readDouble(c, s, "inject_pose_error_mm", inject_pose_error_mm);
 	util::requireInRange(c, s, "inject_pose_error_mm", inject_pose_error_mm, -500, 500);
+	min_held_width_mm = readDouble(c, s, "min_held_width_mm", min_held_width_mm);
+	util::requireInRange(c, s, "min_held_width_mm", min_held_width_mm, 0, 1000);
 }
 
 void RetrievalOptions::dump(std::ostream& out) const
@@ -117,7 +104,8 @@ void RetrievalOptions::dump(std::ostream& out) const
 	    << "\nvisual_verification = " << (visual_verification ? "true" : "false")
 	    << "\ngrasp_yaw_search_deg = " << grasp_yaw_search_deg
 	    << "\nmax_grasp_correction_mm = " << max_grasp_correction_mm
-	    << "\ninject_pose_error_mm = " << inject_pose_error_mm << "\n";
+	    << "\ninject_pose_error_mm = " << inject_pose_error_mm
+	    << "\nmin_held_width_mm = " << min_held_width_mm << "\n";
 }
 
 }  // namespace mrolr::mission

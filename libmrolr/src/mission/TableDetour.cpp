@@ -31,7 +31,7 @@ struct Footprint
 	}
 };
 
-Footprint footprintOf(const world::Table& t, double clearance_m)
+Footprint footprintOf(const PlanTable& t, double clearance_m)
 {
 	const double yaw = t.yaw_deg * M_PI / 180.0;
 	Footprint f;
@@ -86,10 +86,11 @@ bool clear(const Footprint& f, const Eigen::Vector2d& a, const std::vector<Eigen
 }
 }  // namespace
 
-std::vector<Eigen::Vector2d> detourAroundTables(const world::World& w, const Eigen::Vector2d& from,
+std::vector<Eigen::Vector2d> detourAroundTables(const std::vector<PlanTable>& tables,
+                                                const Eigen::Vector2d& from,
                                                 const Eigen::Vector2d& to, double clearance_m)
 {
-	for (const auto& t : w.tables)
+	for (const auto& t : tables)
 	{
 		const auto f = footprintOf(t, clearance_m);
 		if (f.inside(from) || f.inside(to) || !crosses(f, from, to)) continue;

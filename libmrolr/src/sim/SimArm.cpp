@@ -15,8 +15,11 @@ const char* kJointNames[7] = {"d1_mm", "q1_deg", "q2_deg", "q3_deg", "q4_deg", "
 void SimArmOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	const auto lo = util::readDoubles(cfg, section, "joint_min", 7);
-	const auto hi = util::readDoubles(cfg, section, "joint_max", 7);
+	const bool given = util::hasKey(cfg, section, "joint_min") || util::hasKey(cfg, section, "joint_max");
+	const auto lo = given ? util::readDoubles(cfg, section, "joint_min", 7)
+	                      : std::vector<double>(min.begin(), min.end());
+	const auto hi = given ? util::readDoubles(cfg, section, "joint_max", 7)
+	                      : std::vector<double>(max.begin(), max.end());
 	for (int i = 0; i < 7; ++i)
 	{
 		min[i] = lo[i], max[i] = hi[i];
@@ -65,19 +68,17 @@ void SimArm::moveTo(const hw::ArmJoints& joints)
 void SimArm::setGripper(bool closed)
 {
 	closed_ = closed;
-	if (!closed)
-	{
-		grasped_.clear();
-		return;
-	}
+	grasped_.clear();
+	if (!closed) return;
 	const Eigen::Isometry3d T_GinW = T_GinW_(joints_);
+	double nearest = options_.grasp_radius_m;
 	for (const auto& [name, T_OinW] : objects_)
-		if ((T_OinW.translation() - T_GinW.translation()).norm() < options_.grasp_radius_m)
-		{
-			grasped_ = name;
-			T_OinG_ = T_GinW.inverse() * T_OinW;
-			return;
-		}
+	{
+		const double d = (T_OinW.translation() - T_GinW.translation()).norm();
+		const Eigen::Isometry3d T_OinG = T_GinW.inverse() * T_OinW;
+		if (d >= nearest || (jaw_width_ && jaw_width_(name, T_OinG) <= 0)) continue;
+		nearest = d, grasped_ = name, T_OinG_ = T_OinG;
+	}
 }
 
 double SimArm::gripperWidthMm() const

@@ -69,13 +69,21 @@ void ActiveSlamFilter::appendFeature(const Eigen::Vector3d& y, const Eigen::Matr
 
 size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW)
 {
+	return addKnownFeature(label, p_FinW, Eigen::Matrix3d::Zero());
+}
+
+size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
+                                         const Eigen::Matrix3d& P_FF)
+{
 	synchronise();
 	FeatureInfo info;
 	info.label = label;
 	info.known = true;
 	info.p_FinW_first = p_FinW;
 	info.p_C0atInitInW = headCentreInW(vehicleRaw(), m_options.head.constants);
-	appendFeature(p_FinW, Eigen::MatrixXd::Zero(3, m_xkk.size() + 3), std::move(info));
+	Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, m_xkk.size() + 3);
+	rows.rightCols(3) = 0.5 * (P_FF + P_FF.transpose());
+	appendFeature(p_FinW, rows, std::move(info));
 	return m_info.size() - 1;
 }
 

@@ -1,5 +1,6 @@
 #include <mrolr/util/IniDocument.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -97,10 +98,24 @@ const IniSection* IniDocument::find(const std::string& name) const
 	return nullptr;
 }
 
+void IniDocument::set(const std::string& section, const std::string& key, const std::string& value)
+{
+	auto s = std::find_if(sections.begin(), sections.end(),
+	                      [&](const IniSection& x) { return x.name == section; });
+	if (s == sections.end()) s = sections.insert(sections.end(), IniSection{section, 0, {}});
+	for (auto& e : s->entries)
+		if (e.key == key)
+		{
+			e.value = value, e.line = 0;
+			return;
+		}
+	s->entries.push_back(IniEntry{key, value, 0});
+}
+
 std::string IniDocument::describe(const IniSection& s, const IniEntry& e) const
 {
-	return path + ":" + std::to_string(e.line) + " [" + s.name + "] " + e.key + " = '" + e.value +
-	       "'";
+	const std::string where = e.line > 0 ? path + ":" + std::to_string(e.line) : path + " (--set)";
+	return where + " [" + s.name + "] " + e.key + " = '" + e.value + "'";
 }
 
 void IniDocument::fail(const IniSection& s, const IniEntry& e, const std::string& why) const

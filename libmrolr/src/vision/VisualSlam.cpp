@@ -35,7 +35,13 @@ VisualSlam::VisualSlam(slam::ActiveSlamFilter& filter, const geometry::BiSightHe
 void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
                                  const cv::Mat& patch)
 {
-	filter_.addKnownFeature(label, p_FinW);
+	addKnownFeature(label, p_FinW, Eigen::Matrix3d::Zero(), patch);
+}
+
+void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
+                                 const Eigen::Matrix3d& P_FF, const cv::Mat& patch)
+{
+	filter_.addKnownFeature(label, p_FinW, P_FF);
 	patches_.push_back(patch.clone());
 }
 

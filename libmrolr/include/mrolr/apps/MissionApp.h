@@ -1,22 +1,26 @@
 #pragma once
-/** `mrolr-mission`: runs the fetch mission of a mission file (issue 9, docs/mission.md):
+/** `mrolr-mission`: runs the fetch mission of a mission file (docs/mission.md):
  *
- *     mrolr-mission [--config config/mission_sim.ini] [--out DIR] [--json] [--quiet]
- *                   [--set SECTION.KEY=VALUE]... [--serial-emulation [--emulate-delay-ms N]
- *                   [--emulate-drop-probability P]]
+ *     mrolr-mission [--config config/mission_sim.ini] [--plan P.ini] [--world W.ini] [--out DIR]
+ *                   [--json] [--quiet] [--set SECTION.KEY=VALUE]... [--set plan.[SECTION.]KEY=V]
+ *                   [--serial-emulation [--emulate-delay-ms N] [--emulate-drop-probability P]]
  *
- * `--set` overrides a key of the mission file (e.g. `--set device.base.port=/dev/pts/4`);
- * `--serial-emulation` serves the simulated lab's devices on pseudo-terminals and drives them
- * through the serial drivers (every device `driver = serial`), with optional reply delays and
- * byte loss.
+ * The robot side reads the mission file, its calibration, its model database and its plan. When
+ * a device is `driver = sim` (or a simulated sensor is named) the app also builds the simulated
+ * lab of `--world` (default `[simulator] world_file`) — only the app reads the world — and after
+ * the run eval checks the robot's report against the lab's truth. `--serial-emulation` serves the
+ * lab's devices on pseudo-terminals and drives them through the serial drivers.
  *
  * Writes report.json, report.md, trajectory.png, mission.3Dscene and mission.rawlog into DIR
  * (default out/<name>-<UTC timestamp>), prints a progress line while running and a summary (or the
- * report as JSON) at the end. Exit code 0 when the mission succeeded, 3 when it ran but failed
- * (not found, unreachable, not home; the outputs are written), 1 for an error such as a malformed
- * configuration (nothing moves), 2 for bad arguments. */
+ * report as JSON) at the end. SIGINT or SIGTERM stop the base and the arm safely and every output
+ * is still written. Exit code 0 when the mission succeeded, 3 when it ran but failed, 130 / 143
+ * when SIGINT / SIGTERM stopped it, 1 for an error such as a malformed configuration (nothing
+ * moves), 2 for bad arguments. */
 #include <mrolr/hw_serial/DeviceEmulator.h>
 #include <mrolr/mission/Mission.h>
+
+#include <nlohmann/json.hpp>
 
 #include <iosfwd>
 #include <string>
@@ -35,14 +39,18 @@ class MissionApp
 	mission::MissionOptions loadOptions() const;
 
 	std::string config_path = "config/mission_sim.ini";
-	std::string out_dir;  ///< empty: out/<name>-<timestamp>
+	std::string plan_path;   ///< --plan (empty: [mission] plan)
+	std::string world_path;  ///< --world (empty: [simulator] world_file)
+	std::string out_dir;     ///< empty: out/<name>-<timestamp>
 	bool json = false, quiet = false, help_shown = false;
-	std::vector<std::string> overrides;  ///< "section.key=value"
+	std::vector<std::string> overrides;  ///< "section.key=value" ("plan." ones go to the plan)
 	bool serial_emulation = false;
 	hw::FaultOptions emulation_faults;  ///< reply_delay_ms, drop_byte_probability
 	mission::MissionOptions options;
 	mission::MissionResult result;
+	nlohmann::json report;           ///< report.json as written
 	std::vector<std::string> files;  ///< outputs written
+	int stop_signal = 0;             ///< SIGINT / SIGTERM that stopped the run, 0 if none
 };
 
 }  // namespace mrolr::apps

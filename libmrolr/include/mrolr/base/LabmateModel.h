@@ -37,6 +37,8 @@ struct LabmateOptions
 	double velocity_noise_fraction = 0.14;   ///< σ_i = fraction · |v_i| (eq 5.13)
 	double translation_speed_mps = 0.10;     ///< wheel speed for straight moves (5.6.3)
 	double rotation_wheel_speed_mps = 0.05;  ///< |v1| = |v2| for rotations in place
+	/** Optional: wheel-encoder counts per metre of wheel travel (the odometry's calibration). */
+	double encoder_ticks_per_m = 20000;
 
 	/** Reads every key above; errors name file, section and key (mrolr::util::ConfigError). */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

@@ -10,6 +10,7 @@
 #include <mrpt/img/CImage.h>
 
 #include <array>
+#include <cstdint>
 
 namespace mrolr::hw
 {
@@ -42,6 +43,7 @@ struct StereoImages
 	mrpt::img::CImage left, right;
 	geometry::HeadAngles angles;
 	double time_s = 0;
+	uint64_t frame = 0;  ///< the camera's frame counter: 0, 1, 2, … per grab
 };
 
 /** The BiSight head (thesis 4.2.2): joint moves with speed limits and settling, stereo grabs. */

@@ -10,7 +10,8 @@
  *    (x right, y down, z forward) on the vehicle (MRPT axes, origin on the ground under C0),
  *    rightCameraPose = right camera relative to the left;
  *  - CObservationRawDAQ ("HEAD_ANGLES"): AIN_double = {pan, tilt, verg_left, verg_right} in rad;
- *  - CObservationRobotPose ("GROUND_TRUTH"): the true vehicle pose (x = z, y = x, yaw = φ).
+ *  - CObservationRobotPose ("GROUND_TRUTH"): the true vehicle pose (x = z, y = x, yaw = φ), only
+ *    in records that carry it (written by the world side; a robot alone has no truth).
  * Every observation carries the timestamp 1.7e9 s + time_s (MRPT rejects timestamp 0). */
 
 #include <mrpt/img/CImage.h>
@@ -20,6 +21,7 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +33,7 @@ struct RawlogRecord
 	double time_s = 0;
 	Eigen::Vector3d odometry_zxphi = Eigen::Vector3d::Zero();
 	long ticks_right = 0, ticks_left = 0;
-	Eigen::Vector3d true_zxphi = Eigen::Vector3d::Zero();
+	std::optional<Eigen::Vector3d> true_zxphi;  ///< the world side's truth, when it is known
 	Eigen::Vector4d head_rad = Eigen::Vector4d::Zero();  ///< pan, tilt, verg_left, verg_right
 	bool has_stereo = false;
 	mrpt::img::CImage left, right;  ///< 8-bit greyscale

@@ -1,8 +1,10 @@
 #pragma once
-/** Everything a mission reads from its configuration (config/mission_sim.ini, docs/mission.md):
- * the world, the target, the route, the navigation mode, the search stations, the devices and the
- * files of the robot's models. Relative file names are resolved against the mission file's
- * folder. Every key is checked before anything moves; errors name file, section and key. */
+/** Everything the robot side reads from its configuration (config/mission_sim.ini,
+ * docs/mission.md): its plan (route, stations, home, known features, tables; mission/Plan.h), the
+ * target model and the model database, the navigation mode, the devices and its calibration files.
+ * Never a world file: that belongs to the simulator (sim::LabOptions). Relative file names are
+ * resolved against the mission file's folder. Every key is checked before anything moves; errors
+ * name file, section and key. */
 #include <mrolr/arm/GraspChain.h>
 #include <mrolr/arm/GraspFeasibility.h>
 #include <mrolr/arm/RtxOptions.h>
@@ -11,14 +13,12 @@
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/mission/DeviceOptions.h>
 #include <mrolr/mission/ObstacleOptions.h>
+#include <mrolr/mission/Plan.h>
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/RecognitionOptions.h>
-#include <mrolr/sim/SimArm.h>
-#include <mrolr/sim/SimBase.h>
 #include <mrolr/slam/SlamOptions.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 #include <mrolr/vision/VisionOptions.h>
-#include <mrolr/world/World.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -35,22 +35,19 @@ enum class NavigationMode
 	DeadReckoning  ///< wheel odometry only
 };
 
-/** A named vehicle pose (z, x in m, φ in rad) in W: a waypoint or a search station. */
-struct NamedPose
+/** Where the robot's landmark measurements come from (`[navigation] landmark_sensor`). */
+enum class LandmarkSource
 {
-	std::string name;
-	Eigen::Vector3d xv_zxphi = Eigen::Vector3d::Zero();
+	Images,    ///< `images`: features acquired and found in the head's stereo pairs (vision area)
+	Simulated  ///< a simulated sensor named in landmark_sensor (hw::LandmarkSensor; tests only)
 };
 
-/** Section [navigation]: the simulated head's landmark measurements (ideal-head angles of eq
- * 5.40 plus Gaussian noise) and the waypoint tolerances. */
+/** Section [navigation]: where the landmark measurements come from and the waypoint tolerances. */
 struct NavigationOptions
 {
 	int measurements_per_step = 2;  ///< features measured after each motion step
 	int min_mapped_visible = 3;     ///< a new feature is initialised while fewer are visible
-	double max_range_m = 8;
-	double true_std_pan_rad = 0.002, true_std_elevation_rad = 0.01, true_std_vergence_rad = 0.002;
-	double measurement_time_s = 1.0;     ///< simulated time per measurement (saccade + search)
+	double measurement_time_s = 1.0;     ///< robot time per measurement (saccade + search)
 	double waypoint_tolerance_m = 0.03;  ///< correction legs until the estimate is this close
 	int max_correction_legs = 3;
 	double table_clearance_m = 0.45;  ///< distance kept from a table edge when going round it
@@ -61,45 +58,47 @@ struct NavigationOptions
 	/** Optional: a goal behind the robot closer than this (m) is reached by driving backwards
 	 * (the head keeps facing the features it mapped) instead of turning round; 0: never. */
 	double reverse_max_m = 0;
-	/** Optional: where the landmark measurements come from. `ideal` (default): the ideal-head
-	 * angles (eq 5.40) of the true pose plus Gaussian noise (true_std_*). `images`: the vision
-	 * area's cycle (vision::VisualSlam) on the head's stereo pairs: features acquired and fixated
-	 * in the images, saved patches sought by NSSD in their innovation ellipses, triangulated
-	 * (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's filter). */
-	std::string measurement_source = "ideal";
+	/** Optional: `images` (default): the vision area's cycle (vision::VisualSlam) on the head's
+	 * stereo pairs (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's
+	 * filter); any other name is a simulated sensor the app must provide (`ideal_sim`: the
+	 * ideal-head angles of the world's landmarks, for tests). */
+	LandmarkSource landmark_source = LandmarkSource::Images;
+	std::string landmark_sensor = "images";  ///< the name as configured
 	/** Optional, images only: replaces the vision file's [vision] nssd_ambiguity_margin (a match
 	 * with a rival within this NSSD elsewhere in its search ellipse is refused); < 0 (default):
 	 * the vision file's value. */
 	double image_nssd_ambiguity_margin = -1;
-	/** Optional, ideal only (reliability check): probability that a chosen feature is lost
-	 * (occluded, moved, not found where predicted); the failed attempt counts towards the
-	 * deletion rule of 5.7 (more than half of the last ten failed: deleted, known features
-	 * kept) and new features are initialised as usual. 0 (default): features are never lost. */
+	/** Optional, simulated sensors only (reliability check): probability that a chosen feature is
+	 * lost (occluded, moved, not found where predicted); the failed attempt counts towards the
+	 * deletion rule of 5.7 (more than half of the last ten failed: deleted, known features kept)
+	 * and new features are initialised as usual. 0 (default): features are never lost. */
 	double lost_feature_probability = 0;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
 
-/** Section [search]: the pan sweep at a station (thesis 7.2.2) and the simulated scene
- * wire-frame sensor's imperfections (mm). */
+/** Where a view's scene wire-frame comes from (`[search] scene_sensor`). */
+enum class SceneSource
+{
+	Reconstructed,  ///< `reconstructed`: stereo::reconstructScene on the view's stereo pair
+	Simulated       ///< a simulated sensor named in scene_sensor (hw::SceneSensor; tests only)
+};
+
+/** Section [search]: the pan sweep at a station (thesis 7.2.2). */
 struct SearchOptions
 {
 	double gaze_tilt_deg = -20;  ///< tilt while searching (negative: down)
 	double pan_from_deg = -20, pan_to_deg = 20, pan_step_deg = 10;
-	double head_move_time_s = 1.0;  ///< simulated time per sweep position (move + grab)
-	double endpoint_sigma_mm = 1.0;
-	double missing_fraction = 0.15;
-	double fragment_probability = 0.1;
-	bool hide_back_side = true;
-	double max_object_range_m = 2.0;  ///< objects further from C0 are not reconstructed
-	/** Render each view's stereo pair into the rawlog (sim::StereoRenderer). */
+	double head_move_time_s = 1.0;  ///< robot time per sweep position (move + grab)
+	/** Optional: `reconstructed` (default): each view's stereo pair is reconstructed ([scene] of
+	 * `[files] scene_file`); any other name is a simulated sensor the app must provide
+	 * (`exact_sim`: the objects' exact wire-frames, corrupted; for tests). */
+	SceneSource scene_source = SceneSource::Reconstructed;
+	std::string scene_sensor = "reconstructed";  ///< the name as configured
+	/** Optional, simulated scenes only: grab each view's stereo pair for the record anyway. */
 	bool render_stereo = true;
-	/** Where a view's scene wire-frame comes from (optional key, default simulated): `simulated`
-	 * (exact object wire-frames, corrupted) or `reconstructed` (stereo::reconstructScene on the
-	 * view's rendered pair, options [scene] of `[files] scene_file`). */
-	std::string scene_source = "simulated";
-	/** Optional, used with scene_source = reconstructed: the recogniser also verifies in the
-	 * view's stereo images (recog::ImageVerifier, [image_verification] of recognition_file). */
+	/** Optional, reconstructed only: the recogniser also verifies in the view's stereo images
+	 * (recog::ImageVerifier, [image_verification] of recognition_file). */
 	bool image_verification = true;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -121,27 +120,26 @@ struct RetrievalOptions
 	/** Optional, for tests: the first recognised pose is moved this far along C0's x (left)
 	 * before the grasp is planned, so the verification has a known error to correct. */
 	double inject_pose_error_mm = 0;
+	/** Optional: after closing (and after the lift) the robot holds the object when its jaws
+	 * stay at least this far apart (the gripper's encoder; closed on nothing they meet). */
+	double min_held_width_mm = 5;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
 
-/** The whole mission configuration. */
+/** The whole mission configuration (robot side). */
 struct MissionOptions
 {
 	std::string config_path;       ///< the mission file itself
 	std::string name = "mission";  ///< [mission] name: used in the output folder name
-	std::string world_file;        ///< resolved path of maps/<world>/world.ini
-	world::World world;            ///< as loaded from world_file
-	std::string target;  ///< model to fetch, datasets/objects/<target>.ini (default: the model of
-	                     ///< the world's mission target)
-	std::string target_model_file;    ///< resolved object definition of the target
-	std::vector<std::string> route;   ///< waypoint names driven before searching ("world" = all)
-	std::string home_waypoint;        ///< default: the world's home waypoint
-	std::vector<NamedPose> stations;  ///< search stations in order (names or "z x phi_deg")
+	std::string plan_file;         ///< [mission] plan (or --plan), resolved
+	Plan plan;                     ///< as loaded from plan_file, overrides applied
+	std::string target;            ///< [mission] target: a model of the model database
+	std::string models_dir;        ///< [files] models_dir: the model database, <name>.wf files
 	NavigationMode mode = NavigationMode::Slam;
 	bool obstacle_mode = false;  ///< look for obstacles before each step (thesis 5.8.1.2)
-	unsigned seed = 1;
-	double home_tolerance_m = 0.10;  ///< returned_home when the true pose is this close
+	unsigned seed = 1;           ///< every random draw of the robot side follows it
+	double home_tolerance_m = 0.10;  ///< the robot believes it is home this close (its estimate)
 
 	base::LabmateOptions labmate;
 	base::TrajectoryOptions trajectory;
@@ -150,28 +148,33 @@ struct MissionOptions
 	recog::RecognitionOptions recognition = recog::RecognitionOptions::defaults();
 	arm::RtxOptions rtx;
 	arm::GraspFeasibilityOptions grasp;
-	arm::ArmMount dock;     ///< known T_C0inA of the simulated docking (section [arm_mount])
-	DeviceOptions devices;  ///< [device.base|head|arm]: sim or serial (and the serial links)
-	sim::SimBaseOptions sim_base;
-	sim::SimArmOptions sim_arm;
+	arm::ArmMount dock;     ///< calibrated T_C0inA of the docked arm (section [arm_mount])
+	DeviceOptions devices;  ///< [device.base|head|arm|camera]
 	NavigationOptions navigation;
 	SearchOptions search;
 	RetrievalOptions retrieval;
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
-	/** [image_verification] of [files] recognition_file, read for scene_source = reconstructed
-	 * with search.image_verification. */
+	/** [image_verification] of [files] recognition_file, read for reconstructed scenes with
+	 * search.image_verification. */
 	recog::ImageVerificationOptions image_verification;
-	/** [vision] of [files] vision_file, read for measurement_source = images. */
+	/** [vision] of [files] vision_file, read for landmark_sensor = images. */
 	vision::VisionOptions vision;
-	/** [scene] of [files] scene_file, read for scene_source = reconstructed. */
+	/** [scene] of [files] scene_file, read for reconstructed scenes. */
 	stereo::SceneOptions scene;
 
-	/** Reads @p path and every file it names; throws util::ConfigError (file, section, key). */
-	static MissionOptions load(const std::string& path);
+	/** Where the plan comes from and what is overridden in it (`--plan`, `--set plan.…`). */
+	struct PlanChoice
+	{
+		std::string file;  ///< empty: [mission] plan
+		std::vector<PlanOverride> overrides;
+	};
+	/** Reads @p path and every file it names; throws util::ConfigError (file, section, key) or
+	 * util::IniError (the plan's file, line, section, key). */
+	static MissionOptions load(const std::string& path, const PlanChoice& plan = {});
 	/** As load(), from an already open configuration (for tests that override keys); relative
 	 * file names are resolved against @p base_dir. */
 	static MissionOptions fromConfig(const mrpt::config::CConfigFileBase& cfg,
-	                                 const std::string& base_dir);
+	                                 const std::string& base_dir, const PlanChoice& plan = {});
 	void dump(std::ostream& out) const;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-/** The mission's outputs in out/<mission>-<timestamp>/ (docs/mission.md "Outputs"): report.json,
- * report.md, trajectory.png, mission.3Dscene and mission.rawlog. */
+/** The robot's report of a run (docs/mission.md "Outputs"): what it did and what it believes, in
+ * report.json's form. eval adds the truth checks to the same document (eval/MissionEval.h); the
+ * pictures and the recording are eval::writeMissionOutputs. */
 #include <mrolr/mission/Mission.h>
 
 #include <nlohmann/json.hpp>
@@ -9,24 +10,17 @@
 
 namespace mrolr::mission
 {
-/** report.json's content: success, target, found, retrieved, returned_home,
- * final_position_error_m, object_rotation_error_deg, object_translation_error_mm,
- * grasp_correction_mm, stages (name → simulated seconds), compute_seconds, simulated_seconds,
- * T_OinA, grasp pose, joint solution, timeline and more. Unavailable numbers are null. */
+/** report.json's robot content: success (the robot's claim), failure, target, found, retrieved,
+ * returned_home (its estimate), the robot's beliefs under `robot` (final estimate and its
+ * covariance, home, jaw width, recognised pose, grasp, the path with covariances, the map),
+ * navigation and recognition figures, per-stage times, the NIS of every update and the timeline.
+ * The truth fields (final_position_error_m, object_*_error_*) are null until eval fills them. */
 nlohmann::json reportJson(const MissionResult& r, const MissionOptions& o);
-/** A human-readable report.md of the same content. */
-std::string reportMarkdown(const MissionResult& r, const MissionOptions& o);
-/** Top view of the room: table, landmarks (true and mapped), true / estimated / dead-reckoned
- * paths; written as PNG. */
-void writeTrajectoryPng(const MissionResult& r, const MissionOptions& o, const std::string& path);
-/** The room with the true and estimated paths, the map with 95 % ellipsoids, the recognised model
- * placed where it was recognised, and the arm at its grasp pose (mrpt::opengl .3Dscene). */
-void writeScene3D(const MissionResult& r, const MissionOptions& o, const std::string& path);
-/** The run as an MRPT rawlog through io::RawlogWriter: odometry and ground truth per step, and the
- * sweeps' stereo pairs (images in <name>_Images/) in time order. */
-void writeRawlog(const MissionResult& r, const MissionOptions& o, const std::string& path);
-/** Writes every output into @p dir (created); returns the files written. */
-std::vector<std::string> writeOutputs(const MissionResult& r, const MissionOptions& o,
-                                      const std::string& dir);
+/** A human-readable report.md of a report.json (robot and, when present, eval fields). */
+std::string reportMarkdown(const nlohmann::json& report);
+/** Rows of [R | t] of a transform, as report.json writes them; and back (throws
+ * std::invalid_argument for a malformed value). */
+nlohmann::json matrix34(const Eigen::Isometry3d& T);
+Eigen::Isometry3d isometryFrom(const nlohmann::json& rows);
 
 }  // namespace mrolr::mission

@@ -1,12 +1,13 @@
 #pragma once
 /** Waypoint navigation of the mission (thesis 5.6.3, 7.2.1): rotate–translate–rotate legs in 20 cm
- * steps on the base device, localised either by active-vision EKF-SLAM on the world's landmarks or
- * by dead reckoning. The head measures either the ideal-head angles (eq 5.40) of the world's
- * visible landmarks with Gaussian noise (`ideal`), or features it acquires and finds again in its
- * stereo pairs through the vision area (`images`, useImages()); legs are repeated from the new
- * estimate until it is within waypoint_tolerance_m. Straight legs that would cross a table go round
- * it. */
+ * steps on the base device, localised by active-vision EKF-SLAM or by dead reckoning. The filter
+ * predicts from the base's wheel encoders (thesis 4.2.6). The head measures features it acquires
+ * and finds again in its stereo pairs through the vision area (`images`, useImages()), or, in
+ * tests, a simulated landmark sensor (useSensor()). The plan's known features (5.6.2) start in
+ * the map. Legs are repeated from the new estimate until it is within waypoint_tolerance_m;
+ * straight legs that would cross one of the plan's tables go round it. The bumper stops it. */
 #include <mrolr/hw/Devices.h>
+#include <mrolr/hw/SimulatedSensors.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/slam/ActiveSlamFilter.h>
@@ -15,17 +16,21 @@
 #include <functional>
 #include <memory>
 #include <random>
+#include <stdexcept>
 
 namespace mrolr::mission
 {
 /** One sample of the path after a motion step: poses (z, x, φ) in W. */
 struct PathSample
 {
-	double time_s = 0;
-	Eigen::Vector3d truth, estimate, odometry;
+	double time_s = 0;         ///< the mission's clock
+	double device_time_s = 0;  ///< the base's own clock (hw::Odometry::time_s)
+	Eigen::Vector3d estimate = Eigen::Vector3d::Zero(), odometry = Eigen::Vector3d::Zero();
 	Eigen::Matrix3d P_vv = Eigen::Matrix3d::Zero();
 	int features = 0;
 	long ticks_right = 0, ticks_left = 0;
+	bool bumper = false;
+	double compute_s = 0;  ///< robot compute since the previous sample (wall s, not rendering)
 };
 
 /** A mapped landmark at the end: label, position in W (m) and covariance (m²). */
@@ -34,24 +39,55 @@ struct MappedLandmark
 	std::string label;
 	Eigen::Vector3d p_FinW;
 	Eigen::Matrix3d P;
+	bool known = false;
+};
+
+/** One measurement's consistency: its normalised innovation squared against χ²₃. */
+struct NisRecord
+{
+	double time_s = 0;
+	std::string feature;
+	double nis = 0;
+	bool accepted = false;
+};
+
+/** The base pressed its bumper: the navigation stops where it is. */
+class BumperPressed : public std::runtime_error
+{
+ public:
+	BumperPressed(const std::string& what, const Eigen::Vector3d& estimate)
+	    : std::runtime_error(what), estimate_zxphi(estimate)
+	{
+	}
+	Eigen::Vector3d estimate_zxphi;  ///< the robot's estimate when it was pressed
+};
+
+/** A stop was requested (SIGINT or SIGTERM): the navigation ends before the next step. */
+class StopRequested : public std::runtime_error
+{
+ public:
+	StopRequested() : std::runtime_error("stop requested (SIGINT or SIGTERM)") {}
 };
 
 class Navigator
 {
  public:
-	/** @p truth: the true vehicle pose (for the simulated head's measurements only). */
-	Navigator(const MissionOptions& o, hw::BaseDevice& base, std::function<Eigen::Vector3d()> truth,
-	          Timeline& timeline);
-	/** measurement_source = images: from now on every step's measurements are made by
-	 * vision::VisualSlam on the pairs of @p head (features of its own, no world landmarks; the
-	 * grabbing time goes to the timeline's render time, the rest to compute). */
+	Navigator(const MissionOptions& o, hw::BaseDevice& base, Timeline& timeline);
+	/** landmark_sensor = images: every step's measurements are made by vision::VisualSlam on the
+	 * pairs of @p head (the plan's known features with their patches, then features of its own;
+	 * the grabbing time goes to the timeline's render time, the rest to compute). */
 	void useImages(vision::StereoHeadDevice& head, const std::function<double()>& grab_seconds);
-	/** Drives to @p goal (z, x, φ in W), going round tables in the way. */
+	/** A simulated landmark sensor (tests): measurements of named landmarks; the plan's known
+	 * features are measured by their ids. */
+	void useSensor(hw::LandmarkSensor& sensor);
+	/** Drives to @p goal (z, x, φ in W), going round tables in the way. Throws BumperPressed. */
 	void driveTo(const NamedPose& goal);
 	/** The current estimate (SLAM or odometry). */
 	Eigen::Vector3d estimate();
+	Eigen::Matrix3d estimateCovariance();
 	const std::vector<PathSample>& path() const { return path_; }
 	std::vector<MappedLandmark> map();
+	const std::vector<NisRecord>& nis() const { return nis_; }
 	/** Called after every step with the sample just recorded (progress, rawlog). */
 	std::function<void(const PathSample&)> on_step;
 	/** Obstacle mode (thesis 5.8.1.2, ObstacleAvoidance.h): called before every translation step
@@ -60,13 +96,16 @@ class Navigator
 	std::function<std::vector<Eigen::Vector2d>(const Eigen::Vector3d& estimate,
 	                                           const Eigen::Vector3d& goal)>
 	    before_translation;
+	/** Checked before every step: true stops the navigation (throws StopRequested). */
+	std::function<bool()> stop_requested;
 	int max_detours_per_leg = 3;  ///< detours on one leg before the rest is driven unchecked
 	int measurements = 0, rejected = 0;
-	/** ideal: measurements lost (lost_feature_probability), features deleted by the 5.7 rule. */
+	/** Simulated sensors: measurements lost (lost_feature_probability); features deleted by 5.7. */
 	int lost = 0, deleted_features = 0;
 	int image_cycles = 0, image_matched = 0;  ///< images: cycles that searched, matches found
 
  private:
+	void addPlanFeatures();
 	/** Drives through @p via (z, x in W), arriving at each in the direction of travel. */
 	void driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from,
 	                  int correction_legs);
@@ -76,31 +115,35 @@ class Navigator
 	bool executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
 	                int& detours);
 	void execute(const base::PlannedStep& step);
-	void measure();
+	/** The wheel control the encoders measured over the last step (thesis 4.2.6). */
+	base::WheelControl encoderControl(const hw::Odometry& before, const hw::Odometry& after) const;
+	void measureWithSensor();
 	/** True (and the failed attempt recorded) when feature @p i is lost this time. */
 	bool lostThisTime(size_t i);
 	/** Deletes the features failing the 5.7 rule (known features are kept). */
 	void deleteFailingFeatures();
 	/** measurements_per_step cycles of the vision area (the first one predicts with @p u). */
 	void measureInImages(const base::WheelControl& u);
-	std::vector<size_t> visibleMapped(const Eigen::Vector3d& xv_true);
-	void initialiseNewFeature(const Eigen::Vector3d& xv_true);
-	bool canSee(const Eigen::Vector3d& xv_true, const world::Landmark& l) const;
-	Eigen::Vector3d noisyMeasurement(const Eigen::Vector3d& xv_true, const Eigen::Vector3d& p);
-	void record();
+	std::vector<size_t> visibleMapped(const std::vector<hw::LandmarkSensor::Sighting>& seen);
+	void initialiseNewFeature(const std::vector<hw::LandmarkSensor::Sighting>& seen);
+	void noteNis(const std::string& label, double nis, bool accepted);
+	void record(const hw::Odometry& odo);
 
 	const MissionOptions& o_;
 	hw::BaseDevice& base_;
-	std::function<Eigen::Vector3d()> truth_;
 	Timeline& timeline_;
 	base::LabmateModel model_;
 	slam::ActiveSlamFilter filter_;
 	std::mt19937 rng_;
 	std::vector<PathSample> path_;
+	std::vector<NisRecord> nis_;
+	hw::Odometry last_odometry_;
+	double last_compute_s_ = 0;  ///< the timeline's compute at the previous sample
 	int detour_depth_ = 0;                       ///< detours being driven inside detours
 	std::unique_ptr<vision::VisualSlam> vslam_;  ///< images: the vision area's cycle
 	vision::StereoHeadDevice* images_head_ = nullptr;
 	std::function<double()> grab_seconds_;
+	hw::LandmarkSensor* sensor_ = nullptr;
 };
 
 /** Rotate–translate–rotate from @p from to @p to (z, x, φ in W) as base::planLeg, except that a
@@ -114,9 +157,10 @@ std::vector<base::PlannedStep> planMissionLeg(const Eigen::Vector3d& from,
                                               double reverse_max_m);
 
 /** Via points that take the straight path from @p from to @p to (z, x in W) round every table of
- * @p w it would cross, keeping @p clearance_m from the table's edges; empty when the path is
+ * @p tables it would cross, keeping @p clearance_m from the table's edges; empty when the path is
  * clear. */
-std::vector<Eigen::Vector2d> detourAroundTables(const world::World& w, const Eigen::Vector2d& from,
+std::vector<Eigen::Vector2d> detourAroundTables(const std::vector<PlanTable>& tables,
+                                                const Eigen::Vector2d& from,
                                                 const Eigen::Vector2d& to, double clearance_m);
 
 }  // namespace mrolr::mission

@@ -9,7 +9,7 @@
 #include <mrolr/mission/ObstacleDetour.h>
 #include <mrolr/mission/ObstacleStereo.h>
 #include <mrolr/mission/Timeline.h>
-#include <mrolr/world/Scenery.h>
+#include <mrolr/mission/Plan.h>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -59,7 +59,7 @@ class ObstacleAvoidance
 
 	/** Tables of the map (W): points within @p margin_m of their footprints are no obstacles (the
 	 * route planning goes round them already, TableDetour.cpp). Placed from the estimate. */
-	void setKnownTables(const std::vector<world::Table>& tables, double margin_m);
+	void setKnownTables(const std::vector<PlanTable>& tables, double margin_m);
 
  private:
 	std::vector<Eigen::Vector3d> look(double pan_deg);
@@ -73,7 +73,7 @@ class ObstacleAvoidance
 	Timeline& timeline_;
 	ObstacleStereo stereo_;
 	ObstacleReport report_;
-	std::vector<world::Table> tables_;
+	std::vector<PlanTable> tables_;
 	double table_margin_m_ = 0;
 	Eigen::Vector3d xv_ = Eigen::Vector3d::Zero();  ///< estimate at the current check
 	bool onKnownTable(const Eigen::Vector3d& p_inB) const;

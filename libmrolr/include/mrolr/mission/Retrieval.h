@@ -7,8 +7,10 @@
  * the grasp when that is out of reach), the head fixates the object's estimated centre and
  * recognises it again in a new stereo pair, the grasp is recomputed from that pose (visual
  * verification, beyond the thesis's open loop; a correction above max_grasp_correction_mm is
- * refused and reported), then the gripper closes and the arm lifts. An unreachable or infeasible
- * grasp is reported with its reasons and the arm never moves.
+ * refused and reported), then the gripper closes and the arm lifts. The robot judges the grasp by
+ * its gripper's encoder: it holds the object while the jaws stay apart by at least
+ * min_held_width_mm after closing and after the lift. An unreachable or infeasible grasp is
+ * reported with its reasons and the arm never moves.
  */
 #include <mrolr/arm/AnalyticIk.h>
 #include <mrolr/hw/Devices.h>
@@ -28,6 +30,7 @@ struct RetrievalResult
 	Eigen::Isometry3d T_OinA = Eigen::Isometry3d::Identity();  ///< mm, from the first recognition
 	Eigen::Isometry3d T_GinA = Eigen::Isometry3d::Identity();  ///< grasp actually used, mm
 	double grasp_turn_deg = 0;  ///< turn of the model's grasp about O's vertical axis
+	Eigen::Isometry3d T_GinO = Eigen::Isometry3d::Identity();  ///< that grasp in O, mm
 	arm::RtxJoints joints;      ///< joint solution of the grasp
 	bool verified = false;      ///< the re-observation recognised the object
 	double correction_mm = 0;   ///< |t(T_GinA corrected) − t(T_GinA first)|
@@ -38,13 +41,9 @@ struct RetrievalResult
 	 * error) and the one the verification recognised. */
 	Eigen::Isometry3d T_OinC0_first = Eigen::Isometry3d::Identity();
 	Eigen::Isometry3d T_OinC0_verified = Eigen::Isometry3d::Identity();
-	/** Filled by the mission from the simulator's truth (NaN when unknown): translation error
-	 * (mm) of the first and the verified object pose, and of the grasp used against the grasp at
-	 * the true pose. */
-	double object_error_before_mm = std::nan(""), object_error_after_mm = std::nan("");
-	double grasp_error_mm = std::nan("");
-	bool retrieved = false;  ///< the gripper holds the target
-	std::string grasped;     ///< the instance in the gripper
+	double width_closed_mm = 0;  ///< jaw distance right after closing
+	double width_lifted_mm = 0;  ///< jaw distance after the lift
+	bool retrieved = false;      ///< the robot believes it holds the object (jaw width)
 };
 
 class Retrieval
@@ -54,10 +53,8 @@ class Retrieval
 	 * to look at; returns the recognised T_OinC0 (mm), or nothing when not recognised. */
 	using Reobserve = std::function<std::optional<Eigen::Isometry3d>(const Eigen::Isometry3d&)>;
 	Retrieval(const MissionOptions& o, const model::WireFrame& target);
-	/** @p grasped: the instance the gripper holds ("" if none). */
 	RetrievalResult run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
-	                    hw::ArmDevice& arm, const Reobserve& reobserve,
-	                    const std::function<std::string()>& grasped, Timeline& timeline) const;
+	                    hw::ArmDevice& arm, const Reobserve& reobserve, Timeline& timeline) const;
 	/** The grasp (A, mm) of the model's grasp line turned by @p turn_deg, object at
 	 * @p T_OinC0_mm (eq 6.7.1). */
 	Eigen::Isometry3d graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const;
@@ -83,6 +80,8 @@ class Retrieval
 	std::optional<arm::RtxJoints> solve(const Eigen::Isometry3d& T_GinA) const;
 	void moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const;
 	const MissionOptions& o_;
+	/** Closes the gripper, lifts, and judges from the jaw width whether it holds the object. */
+	void closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& timeline) const;
 	const model::WireFrame& target_;
 	arm::AnalyticIk ik_;
 };

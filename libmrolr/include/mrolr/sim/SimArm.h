@@ -23,8 +23,9 @@ struct SimArmOptions
 {
 	hw::ArmJoints min{0, -180, -90, -160, -110, -90, -180};
 	hw::ArmJoints max{915, 180, 90, 160, 110, 90, 180};
-	double grasp_radius_m =
-	    0.05;  ///< an object whose origin is this close to the gripper is caught
+	/** Closing the gripper catches the nearest object whose origin is this close to the grasp
+	 * point and that the jaws touch (JawWidth callback > 0). */
+	double grasp_radius_m = 0.05;
 	double open_width_mm = 90;  ///< jaw distance of the open gripper (the RTX's 90 mm)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
@@ -52,6 +53,8 @@ class SimArm : public hw::ArmDevice
 	double gripperWidthMm() const override;
 	/** Name of the object in the gripper, or "". */
 	const std::string& grasped() const { return grasped_; }
+	/** The arm's base moved (it is mounted on the robot): the grasped object follows the gripper. */
+	void baseMoved() { carry(); }
 
  private:
 	void carry();

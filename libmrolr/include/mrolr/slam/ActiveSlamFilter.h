@@ -66,6 +66,10 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	 * @{ */
 	/** A known feature at p_FinW with zero covariance and cross-covariances (5.6.2). */
 	size_t addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW);
+	/** A known feature from a saved map (5.6.2): at p_FinW with covariance @p P_FF (m²), not
+	 * correlated with the vehicle or the other features; never deleted by the 5.7 rule. */
+	size_t addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
+	                       const Eigen::Matrix3d& P_FF);
 	/** A new feature from its first measurement h (eqs 5.46–5.48). Returns its index. */
 	size_t initialiseFeature(const std::string& label, const Eigen::Vector3d& h);
 	/** Removes feature @p i from x and P (eq 5.49); later indices shift down by one. */

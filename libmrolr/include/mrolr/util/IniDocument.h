@@ -49,6 +49,9 @@ struct IniDocument
 	static IniDocument parse(const std::string& text, const std::string& path);
 	/** The section with this name, or nullptr. */
 	const IniSection* find(const std::string& name) const;
+	/** Replaces the value of @p key in @p section, or appends the key (and the section) when
+	 * absent: a command-line override (`--set`); its line number is 0 and messages say so. */
+	void set(const std::string& section, const std::string& key, const std::string& value);
 	/** "FILE:LINE [SECTION] KEY = 'VALUE'" for error messages. */
 	std::string describe(const IniSection& s, const IniEntry& e) const;
 	/** Throws IniError "FILE:LINE [SECTION] KEY = 'VALUE': why". */

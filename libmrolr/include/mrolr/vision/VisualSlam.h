@@ -66,6 +66,9 @@ class VisualSlam
 	/** A known feature (5.6.2) at @p p_FinW (W, metres) with its saved patch. */
 	void addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
 	                     const cv::Mat& patch);
+	/** The same with the covariance @p P_FF (m²) of a saved map's feature. */
+	void addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
+	                     const Eigen::Matrix3d& P_FF, const cv::Mat& patch);
 
 	/** One cycle after the base moved by @p u (dt_s = 0: no motion, measure only). @p upcoming:
 	 * the next planned controls, for the saccade decision (selection = saccade). */

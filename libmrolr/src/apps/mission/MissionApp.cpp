@@ -1,7 +1,10 @@
 #include <mrolr/apps/MissionApp.h>
+#include <mrolr/apps/SerialEmulation.h>
+#include <mrolr/apps/SimulatedWorld.h>
+#include <mrolr/apps/StopSignals.h>
 #include <mrolr/apps/TclapSupport.h>
-#include <mrolr/mission/MissionOutputs.h>
-#include <mrolr/mission/SerialEmulation.h>
+#include <mrolr/eval/MissionOutputs.h>
+#include <mrolr/mission/MissionDevices.h>
 #include <mrolr/util/Config.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -18,6 +21,8 @@ namespace mrolr::apps
 {
 namespace
 {
+using nlohmann::json;
+
 std::string utcStamp()
 {
 	const std::time_t now = std::time(nullptr);
@@ -28,24 +33,40 @@ std::string utcStamp()
 	return s.str();
 }
 
-void printSummary(std::ostream& out, const mission::MissionResult& r, const std::string& dir)
+std::string num(const json& v, int precision = 3)
 {
-	out << std::fixed << std::setprecision(3) << "mission " << (r.success ? "SUCCEEDED" : "FAILED")
-	    << (r.failure.empty() ? "" : ": " + r.failure) << "\n  target " << r.target
-	    << (r.found ? " found (" + r.found_instance + " at " + r.found_at_station + ")"
-	                : " not found")
-	    << ", retrieved " << (r.retrieved ? "yes" : "no") << ", home "
-	    << (r.returned_home ? "yes" : "no") << " (error " << r.final_position_error_m << " m)\n";
-	if (r.found)
-		out << "  object pose error " << r.search.translation_error_mm << " mm, "
-		    << r.search.rotation_error_deg << " deg; grasp correction " << r.retrieval.correction_mm
-		    << " mm\n";
-	for (const auto& l : r.links)
-		out << "  serial " << l.section << " on " << l.port << ": " << l.resends << " resends\n";
-	out << "  simulated " << std::setprecision(1) << r.timeline.simulatedSeconds()
-	    << " s, robot compute " << std::setprecision(3) << r.timeline.computeSeconds()
-	    << " s\n  outputs in " << dir << "\n";
+	if (!v.is_number()) return "n/a";
+	std::ostringstream s;
+	s << std::fixed << std::setprecision(precision) << v.get<double>();
+	return s.str();
 }
+
+void printSummary(std::ostream& out, const json& r, const std::string& dir)
+{
+	const json& e = r["eval"];
+	out << "mission " << (r["success"].get<bool>() ? "SUCCEEDED" : "FAILED")
+	    << (r["failure"].get<std::string>().empty() ? "" : ": " + r["failure"].get<std::string>())
+	    << "\n  robot: target " << r["target"].get<std::string>()
+	    << (r["found"].get<bool>() ? " found at " + r["found_at_station"].get<std::string>()
+	                               : " not found")
+	    << ", holds it " << (r["retrieved"].get<bool>() ? "yes" : "no") << ", home "
+	    << (r["returned_home"].get<bool>() ? "yes" : "no") << " (its estimate "
+	    << num(r["robot"]["home_estimate_error_m"]) << " m from home)\n";
+	if (!e.is_null())
+		out << "  eval: home error " << num(r["final_position_error_m"]) << " m, object held "
+		    << (e["object_held"].get<bool>() ? "yes" : "no") << ", object pose error "
+		    << num(r["object_translation_error_mm"]) << " mm, "
+		    << num(r["object_rotation_error_deg"]) << " deg\n";
+	out << "  navigation from " << r["navigation_source"].get<std::string>() << ": "
+	    << r["navigation_pairs"] << " stereo pairs, NIS inside 95 % bounds "
+	    << num(r["nis"]["fraction_inside_95"], 2) << "\n";
+	for (const auto& l : r["serial_links"])
+		out << "  serial " << l["device"].get<std::string>() << " on "
+		    << l["port"].get<std::string>() << ": " << l["resends"] << " resends\n";
+	out << "  simulated " << num(r["simulated_seconds"], 1) << " s, robot compute "
+	    << num(r["compute_seconds"]) << " s\n  outputs in " << dir << "\n";
+}
+
 /** "section.key=value" → (section, key, value); the key is after the last '.' before '='. */
 std::array<std::string, 3> splitOverride(const std::string& text)
 {
@@ -55,22 +76,46 @@ std::array<std::string, 3> splitOverride(const std::string& text)
 		throw util::UsageError("--set '" + text + "': expected SECTION.KEY=VALUE");
 	return {text.substr(0, dot), text.substr(dot + 1, eq - dot - 1), text.substr(eq + 1)};
 }
+
+bool isPlanOverride(const std::string& text)
+{
+	return text.rfind("plan.", 0) == 0;
+}
+
+/** "plan.KEY=V" → ([plan], KEY, V); "plan.SECTION.KEY=V" → (SECTION, KEY, V). */
+mission::PlanOverride planOverride(const std::string& text)
+{
+	const std::string rest = text.substr(5);
+	if (rest.find('.') == std::string::npos || rest.find('.') > rest.find('='))
+	{
+		const auto eq = rest.find('=');
+		if (eq == std::string::npos || eq == 0)
+			throw util::UsageError("--set '" + text + "': expected plan.[SECTION.]KEY=VALUE");
+		return {"plan", rest.substr(0, eq), rest.substr(eq + 1)};
+	}
+	return splitOverride(rest);
+}
 }  // namespace
 
 void MissionApp::initialize(const std::vector<std::string>& args)
 {
 	TCLAP::CmdLine cmd(
-	    "mrolr-mission: navigate, map, search, recognise, retrieve and return home "
-	    "(docs/mission.md)",
+	    "mrolr-mission: navigate, search, recognise, retrieve and return home (docs/mission.md)",
 	    ' ', "1");
 	TCLAP::ValueArg<std::string> cfg("", "config", "mission .ini (default config/mission_sim.ini)",
 	                                 false, config_path, "FILE", cmd);
+	TCLAP::ValueArg<std::string> plan("", "plan", "the robot's plan (default [mission] plan)",
+	                                  false, "", "FILE", cmd);
+	TCLAP::ValueArg<std::string> world(
+	    "", "world", "the simulated world (default [simulator] world_file); read by the simulator only",
+	    false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "output folder (default out/<name>-<timestamp>)",
 	                                 false, "", "DIR", cmd);
 	TCLAP::SwitchArg js("", "json", "print report.json instead of the summary", cmd);
 	TCLAP::SwitchArg q("", "quiet", "no progress line", cmd);
-	TCLAP::MultiArg<std::string> set("", "set", "override a key of the mission file", false,
-	                                 "SECTION.KEY=VALUE", cmd);
+	TCLAP::MultiArg<std::string> set(
+	    "", "set", "override a key of the mission file, or of the plan with plan.[SECTION.]KEY", false,
+	    "SECTION.KEY=VALUE", cmd);
 	TCLAP::SwitchArg emu("", "serial-emulation",
 	                     "serve the simulated devices on pseudo-terminals and drive them through "
 	                     "the serial drivers",
@@ -86,11 +131,13 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 		return;
 	}
 	config_path = cfg.getValue();
+	plan_path = plan.getValue();
+	world_path = world.getValue();
 	out_dir = out.getValue();
 	json = js.getValue();
 	quiet = q.getValue();
 	overrides = set.getValue();
-	for (const auto& o : overrides) splitOverride(o);
+	for (const auto& o : overrides) isPlanOverride(o) ? (void)planOverride(o) : (void)splitOverride(o);
 	serial_emulation = emu.getValue();
 	emulation_faults.reply_delay_ms = delay.getValue();
 	emulation_faults.drop_byte_probability = drop.getValue();
@@ -102,20 +149,34 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 		throw util::UsageError("--emulate-* options need --serial-emulation");
 }
 
+namespace
+{
+/** The mission file in memory with the non-plan overrides written in. */
+mrpt::config::CConfigFile openWithOverrides(const std::string& path,
+                                            const std::vector<std::string>& overrides)
+{
+	if (!std::ifstream(path).good())
+		throw util::ConfigError("cannot open mission configuration '" + path + "'");
+	mrpt::config::CConfigFile cfg(path);
+	for (const auto& o : overrides)
+		if (!isPlanOverride(o))
+		{
+			const auto [section, key, value] = splitOverride(o);
+			cfg.write(section, key, value);
+		}
+	cfg.discardSavingChanges();  // never write the overrides back into the file
+	return cfg;
+}
+}  // namespace
+
 mission::MissionOptions MissionApp::loadOptions() const
 {
-	if (overrides.empty()) return mission::MissionOptions::load(config_path);
-	if (!std::ifstream(config_path).good())
-		throw util::ConfigError("cannot open mission configuration '" + config_path + "'");
-	mrpt::config::CConfigFile cfg(config_path);
+	const auto cfg = openWithOverrides(config_path, overrides);
+	mission::MissionOptions::PlanChoice plan{plan_path, {}};
 	for (const auto& o : overrides)
-	{
-		const auto [section, key, value] = splitOverride(o);
-		cfg.write(section, key, value);
-	}
-	cfg.discardSavingChanges();  // never write the overrides back into the file
+		if (isPlanOverride(o)) plan.overrides.push_back(planOverride(o));
 	auto loaded = mission::MissionOptions::fromConfig(
-	    cfg, std::filesystem::path(config_path).parent_path().string());
+	    cfg, std::filesystem::path(config_path).parent_path().string(), plan);
 	loaded.config_path = config_path;
 	return loaded;
 }
@@ -124,16 +185,22 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 {
 	if (help_shown) return 0;
 	options = loadOptions();
-	std::shared_ptr<mission::SimulatedLab> lab;
-	std::unique_ptr<mission::SerialEmulation> emulation;
+	const auto cfg = openWithOverrides(config_path, overrides);
+	const auto dir = std::filesystem::path(config_path).parent_path().string();
+	std::unique_ptr<SimulatedWorld> world;
+	if (SimulatedWorld::needed(options) || serial_emulation || !world_path.empty())
+		world = std::make_unique<SimulatedWorld>(cfg, dir, options, world_path);
+	std::unique_ptr<SerialEmulation> emulation;
 	if (serial_emulation)
 	{
-		lab = std::make_shared<mission::SimulatedLab>(options);
-		emulation = std::make_unique<mission::SerialEmulation>(*lab, emulation_faults);
+		emulation = std::make_unique<SerialEmulation>(world->lab(), emulation_faults);
 		emulation->useIn(options);
 	}
+	mission::MissionDevices devices(options.devices,
+	                                world ? world->devices() : mission::SimDevices{});
 	if (out_dir.empty()) out_dir = "out/" + options.name + "-" + utcStamp();
-	mission::Mission m(options, lab);
+	mission::Mission m(options, devices.devices(),
+	                   world ? world->sensors() : mission::SimulatedSensors{});
 	if (!quiet)
 		m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
 		{
@@ -143,14 +210,20 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 			         << " x=" << s.estimate.y() << " features=" << s.features << "   "
 			         << std::flush;
 		};
+	StopSignals signals;
+	m.stop_flag = &signals.flag();
 	result = m.run();
+	stop_signal = signals.received();
 	if (!quiet) progress << "\n";
-	files = mission::writeOutputs(result, options, out_dir);
+	const auto truth = world ? std::optional(eval::truthOf(world->lab())) : std::nullopt;
+	auto written = eval::writeMissionOutputs(result, options, truth ? &*truth : nullptr, out_dir);
+	files = written.files, report = written.report;
 	if (json)
-		out << mission::reportJson(result, options).dump(2) << "\n";
+		out << report.dump(2) << "\n";
 	else
-		printSummary(out, result, out_dir);
-	return result.success ? 0 : 3;
+		printSummary(out, report, out_dir);
+	if (stop_signal) return 128 + stop_signal;
+	return report["success"].get<bool>() ? 0 : 3;
 }
 
 }  // namespace mrolr::apps

@@ -75,7 +75,10 @@ void SlamApp::runReplay()
 		if (r.has_stereo) requireSameCamera(r, head, rawlog_path, k);
 		const vision::StereoImages images = r.has_stereo ? imagesOf(r) : vision::StereoImages{};
 		auto recs = vslam.replayFrame(u, r.has_stereo ? &images : nullptr);
-		steps.push_back({r.true_zxphi, filter.vehicle(), r.odometry_zxphi,
+		if (!r.true_zxphi)
+			throw std::runtime_error(rawlog_path + ": record " + std::to_string(k) +
+			                         ": no GROUND_TRUTH (needed for the replay's errors)");
+		steps.push_back({*r.true_zxphi, filter.vehicle(), r.odometry_zxphi,
 		                 filter.vehicleCovariance().diagonal(), std::move(recs)});
 	}
 	recordMap(filter, vslam);

@@ -1,26 +1,26 @@
 #pragma once
 /** The simulated lab's devices served on pseudo-terminals (hw::PtyEmulator around hw::BaseHandler,
  * HeadHandler, ArmHandler), so that a mission with `driver = serial` runs through real serial I/O
- * (`mrolr-mission --serial-emulation`, docs/mission.md "Hardware path"). Faults can be injected
- * per device, also while the mission runs. */
+ * (`mrolr-mission --serial-emulation`, `mrolr-serial emulate`; docs/mission.md "Hardware path").
+ * Faults can be injected per device, also while the mission runs. */
 #include <mrolr/hw_serial/DeviceEmulator.h>
 #include <mrolr/mission/MissionOptions.h>
-#include <mrolr/mission/SimulatedLab.h>
+#include <mrolr/sim/Lab.h>
 
 #include <memory>
 
-namespace mrolr::mission
+namespace mrolr::apps
 {
 class SerialEmulation
 {
  public:
 	/** Starts serving @p lab's base, head and arm (it must outlive this object), each with
 	 * @p faults. */
-	explicit SerialEmulation(SimulatedLab& lab, const hw::FaultOptions& faults = {});
+	explicit SerialEmulation(sim::Lab& lab, const hw::FaultOptions& faults = {});
 	~SerialEmulation();
 	/** Switches every device of @p o to `driver = serial` on its pseudo-terminal; link timeouts
 	 * and retries already configured for serial are kept, otherwise @p defaults are used. */
-	void useIn(MissionOptions& o, const hw::LinkOptions& defaults = {}) const;
+	void useIn(mission::MissionOptions& o, const hw::LinkOptions& defaults = {}) const;
 	hw::PtyEmulator& base() { return *base_; }
 	hw::PtyEmulator& head() { return *head_; }
 	hw::PtyEmulator& arm() { return *arm_; }
@@ -32,4 +32,4 @@ class SerialEmulation
 	std::unique_ptr<hw::PtyEmulator> base_, head_, arm_;
 };
 
-}  // namespace mrolr::mission
+}  // namespace mrolr::apps

@@ -1,11 +1,11 @@
 // The simulated lab's devices on pseudo-terminals for the serial end-to-end mission.
-#include <mrolr/mission/SerialEmulation.h>
+#include <mrolr/apps/SerialEmulation.h>
 
-namespace mrolr::mission
+namespace mrolr::apps
 {
 namespace
 {
-void useSerial(DeviceChoice& d, const std::string& port, const hw::LinkOptions& defaults)
+void useSerial(mission::DeviceChoice& d, const std::string& port, const hw::LinkOptions& defaults)
 {
 	if (!d.serial)
 	{
@@ -13,14 +13,13 @@ void useSerial(DeviceChoice& d, const std::string& port, const hw::LinkOptions& 
 		d.link.link = defaults;
 	}
 	d.serial = true;
-	d.lab_behind_port = true;
 	d.link.port = port;
 	d.link.link.device = d.section;
 	d.port_key = "[" + d.section + "] port (serial emulation)";
 }
 }  // namespace
 
-SerialEmulation::SerialEmulation(SimulatedLab& lab, const hw::FaultOptions& faults)
+SerialEmulation::SerialEmulation(sim::Lab& lab, const hw::FaultOptions& faults)
     : base_handler_(lab.base()), head_handler_(lab.head()), arm_handler_(lab.arm())
 {
 	base_ = std::make_unique<hw::PtyEmulator>(base_handler_, faults);
@@ -30,11 +29,11 @@ SerialEmulation::SerialEmulation(SimulatedLab& lab, const hw::FaultOptions& faul
 
 SerialEmulation::~SerialEmulation() = default;
 
-void SerialEmulation::useIn(MissionOptions& o, const hw::LinkOptions& defaults) const
+void SerialEmulation::useIn(mission::MissionOptions& o, const hw::LinkOptions& defaults) const
 {
 	useSerial(o.devices.base, base_->slavePath(), defaults);
 	useSerial(o.devices.head, head_->slavePath(), defaults);
 	useSerial(o.devices.arm, arm_->slavePath(), defaults);
 }
 
-}  // namespace mrolr::mission
+}  // namespace mrolr::apps

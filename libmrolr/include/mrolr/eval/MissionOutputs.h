@@ -1,0 +1,41 @@
+#pragma once
+/** A run's outputs in out/<mission>-<timestamp>/ (docs/mission.md "Outputs"): report.json,
+ * report.md, trajectory.png, mission.3Dscene and mission.rawlog. The robot's part comes from
+ * mission::reportJson; with the world's truth (in-process runs) eval adds its checks, the true
+ * path, the room and the objects to the pictures, and GROUND_TRUTH records to the rawlog. Without
+ * it (the robot in its own process) the pictures show what the robot knew. */
+#include <mrolr/eval/MissionTruth.h>
+#include <mrolr/mission/Mission.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace mrolr::eval
+{
+struct WrittenOutputs
+{
+	std::vector<std::string> files;
+	nlohmann::json report;  ///< report.json as written
+};
+
+/** Top view: the plan's tables, the mapped landmarks, the estimated and dead-reckoned paths, a
+ * collision; with @p truth also the room, obstacles, true landmarks, the true path and the
+ * objects. */
+void writeTrajectoryPng(const mission::MissionResult& r, const mission::MissionOptions& o,
+                        const MissionTruth* truth, const std::string& path);
+/** The room (with truth) or the plan's tables, the paths, the map with 95 % ellipsoids, the
+ * recognised model where the robot believed it was, and the arm at its grasp (.3Dscene). */
+void writeScene3D(const mission::MissionResult& r, const mission::MissionOptions& o,
+                  const MissionTruth* truth, const std::string& path);
+/** The run as an MRPT rawlog (io::RawlogWriter): odometry per step, the stereo pairs in time
+ * order, and GROUND_TRUTH where @p truth knows the step. */
+void writeRawlog(const mission::MissionResult& r, const mission::MissionOptions& o,
+                 const MissionTruth* truth, const std::string& path);
+/** Writes everything into @p dir (created); evaluates the report when @p truth is given. */
+WrittenOutputs writeMissionOutputs(const mission::MissionResult& r,
+                                   const mission::MissionOptions& o, const MissionTruth* truth,
+                                   const std::string& dir);
+
+}  // namespace mrolr::eval

@@ -1,0 +1,103 @@
+// The world's truth after a run: from the lab, to and from T.json.
+#include <mrolr/eval/MissionTruth.h>
+#include <mrolr/mission/MissionOutputs.h>
+
+#include <cmath>
+
+namespace mrolr::eval
+{
+namespace
+{
+using nlohmann::json;
+
+const json& field(const json& j, const char* key, const std::string& source)
+{
+	if (!j.is_object() || !j.contains(key))
+		throw std::runtime_error(source + ": missing field '" + key + "'");
+	return j.at(key);
+}
+
+double number(const json& j, const char* key, const std::string& source)
+{
+	const json& v = field(j, key, source);
+	if (!v.is_number()) throw std::runtime_error(source + ": field '" + key + "' is not a number");
+	return v.get<double>();
+}
+
+Eigen::Isometry3d transform(const json& j, const char* key, const std::string& source)
+{
+	try
+	{
+		return mission::isometryFrom(field(j, key, source));
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error(source + ": field '" + key + "': " + e.what());
+	}
+}
+}  // namespace
+
+MissionTruth truthOf(const sim::Lab& lab)
+{
+	MissionTruth t;
+	t.final_zxphi = lab.truePose();
+	const auto start = sim::placedObjectPoses(lab.options().world);
+	for (const auto& [name, T] : lab.objectPoses())
+		t.objects.push_back({name, lab.modelOf(name), start.at(name), T});
+	t.held = lab.held();
+	t.steps = lab.truth().steps;
+	t.frames = lab.truth().frames;
+	t.world = std::make_shared<world::World>(lab.options().world);
+	t.T_C0inA_mm = lab.options().mount.T_C0inA;
+	return t;
+}
+
+json truthJson(const MissionTruth& t)
+{
+	json objects = json::array();
+	for (const auto& o : t.objects)
+		objects.push_back({{"name", o.name},
+		                   {"model", o.model},
+		                   {"T_OinW", mission::matrix34(o.T_OinW)},
+		                   {"T_OinW_start", mission::matrix34(o.T_OinW_start)}});
+	json contact = nullptr;
+	if (t.contact)
+		contact = {{"what", t.contact->what}, {"z_m", t.contact->p_zx.x()}, {"x_m", t.contact->p_zx.y()}};
+	return {{"vehicle",
+	         {{"z_m", t.final_zxphi.x()},
+	          {"x_m", t.final_zxphi.y()},
+	          {"phi_deg", t.final_zxphi.z() * 180.0 / M_PI}}},
+	        {"objects", objects},
+	        {"held", t.held.empty() ? json(nullptr) : json(t.held)},
+	        {"contact", contact}};
+}
+
+MissionTruth truthFromJson(const json& j, const std::string& source)
+{
+	MissionTruth t;
+	const json& v = field(j, "vehicle", source);
+	t.final_zxphi = {number(v, "z_m", source), number(v, "x_m", source),
+	                 number(v, "phi_deg", source) * M_PI / 180.0};
+	const json& objects = field(j, "objects", source);
+	if (!objects.is_array()) throw std::runtime_error(source + ": 'objects' is not a list");
+	for (const auto& o : objects)
+	{
+		ObjectTruth ot;
+		ot.name = field(o, "name", source).get<std::string>();
+		ot.model = o.contains("model") ? o.at("model").get<std::string>() : "";
+		ot.T_OinW = transform(o, "T_OinW", source);
+		ot.T_OinW_start = o.contains("T_OinW_start") ? transform(o, "T_OinW_start", source) : ot.T_OinW;
+		t.objects.push_back(ot);
+	}
+	const json& held = field(j, "held", source);
+	t.held = held.is_null() ? "" : held.get<std::string>();
+	if (j.contains("contact") && !j.at("contact").is_null())
+	{
+		const json& c = j.at("contact");
+		t.contact = ContactTruth{field(c, "what", source).get<std::string>(),
+		                         {number(c, "z_m", source), number(c, "x_m", source)}};
+	}
+	return t;
+}
+
+}  // namespace mrolr::eval
