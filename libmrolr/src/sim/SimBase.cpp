@@ -35,23 +35,30 @@ SimBase::SimBase(const base::LabmateModel& model, const SimBaseOptions& options,
 	odo_.xv_zxphi = start_zxphi;
 }
 
-base::WheelControl SimBase::trueControl(const base::WheelControl& u)
+base::WheelControl SimBase::turnedWheels(const base::WheelControl& u)
 {
+	// the motors do not hold the commanded speed exactly (eq 5.13); the encoders see this
 	std::normal_distribution<double> n(0, 1);
 	const Eigen::Matrix2d U = model_.controlCovariance(u);
 	base::WheelControl t = u;
 	t.v1_mps += std::sqrt(U(0, 0)) * n(rng_);
 	t.v2_mps += std::sqrt(U(1, 1)) * n(rng_);
+	return t;
+}
+
+base::WheelControl SimBase::slipped(const base::WheelControl& turned)
+{
+	base::WheelControl m = turned;
 	if (slip_left_ == 0 &&
 	    std::uniform_real_distribution<double>(0, 1)(rng_) < options_.slip_probability)
 		slip_left_ = options_.slip_burst_steps;
 	if (slip_left_ > 0)
 	{
-		t.v2_mps *= 1 - options_.slip_fraction;  // the left wheel spins without gripping
+		m.v2_mps *= 1 - options_.slip_fraction;  // the left wheel spins without gripping
 		--slip_left_;
 		++slip_steps_total_;
 	}
-	return t;
+	return m;
 }
 
 long SimBase::countTicks(double travel_m, double& residual)
@@ -62,20 +69,27 @@ long SimBase::countTicks(double travel_m, double& residual)
 	return ticks;
 }
 
-void SimBase::step(const base::WheelControl& u)
+void SimBase::countEncoders(const base::WheelControl& turned)
 {
-	true_ = model_.move(true_, trueControl(u));
-	// the encoders count the commanded wheel turns (slip and ground noise are invisible to them)
-	const long dr = countTicks(u.v1_mps * u.dt_s, residual_right_);
-	const long dl = countTicks(u.v2_mps * u.dt_s, residual_left_);
+	// the encoders count what the wheels turned (slip on the ground is invisible to them)
+	const long dr = countTicks(turned.v1_mps * turned.dt_s, residual_right_);
+	const long dl = countTicks(turned.v2_mps * turned.dt_s, residual_left_);
 	odo_.ticks_right += dr;
 	odo_.ticks_left += dl;
-	if (u.dt_s > 0)
+	if (turned.dt_s > 0)
 	{
-		const base::WheelControl measured{double(dr) / options_.ticks_per_m / u.dt_s,
-		                                  double(dl) / options_.ticks_per_m / u.dt_s, u.dt_s};
+		const base::WheelControl measured{double(dr) / options_.ticks_per_m / turned.dt_s,
+		                                  double(dl) / options_.ticks_per_m / turned.dt_s,
+		                                  turned.dt_s};
 		odo_.xv_zxphi = model_.move(odo_.xv_zxphi, measured);
 	}
+}
+
+void SimBase::step(const base::WheelControl& u)
+{
+	const base::WheelControl turned = turnedWheels(u);
+	true_ = model_.move(true_, slipped(turned));
+	countEncoders(turned);
 	odo_.time_s += u.dt_s;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-/** The simulated Labmate base: the true pose moves by the Labmate model (thesis 5.3, eqs 5.4–5.7)
- * with wheel-velocity noise (eq 5.13) and bursts of wheel slip, while the encoders count what the
- * wheels turned, so odometry drifts from the truth as a real base does. */
+/** The simulated Labmate base (thesis 4.2.6, 5.3): the wheels turn as commanded plus the
+ * wheel-velocity noise of eq 5.13, and the optical encoders count what the wheels really turned;
+ * the vehicle then moves by the Labmate model (eqs 5.4–5.7) with those wheel velocities, except
+ * during bursts of wheel slip, when the left wheel's turning moves the vehicle less than the
+ * encoder says. So odometry drifts from the truth by the slip only, as a real base does, while
+ * predicting from the commands drifts by the velocity noise too. */
 
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/hw/Devices.h>
@@ -19,7 +22,7 @@ struct SimBaseOptions
 	double ticks_per_m = 20000;      ///< encoder counts per metre of wheel travel
 	double slip_probability = 0.02;  ///< chance per step that a slip burst starts
 	int slip_burst_steps = 3;        ///< steps a burst lasts
-	double slip_fraction = 0.3;      ///< fraction of one wheel's travel lost while slipping
+	double slip_fraction = 0.3;      ///< fraction of the left wheel's travel lost while slipping
 	unsigned seed = 1;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
@@ -42,7 +45,9 @@ class SimBase : public hw::BaseDevice
 	int slipStepsSoFar() const { return slip_steps_total_; }
 
  private:
-	base::WheelControl trueControl(const base::WheelControl& u);
+	base::WheelControl turnedWheels(const base::WheelControl& u);
+	base::WheelControl slipped(const base::WheelControl& turned);
+	void countEncoders(const base::WheelControl& turned);
 	long countTicks(double travel_m, double& residual);
 
 	base::LabmateModel model_;
