@@ -44,6 +44,47 @@ TEST(SimBase, SlipMovesTheTruthButNotTheEncoders)
 	EXPECT_GT(std::abs(slipping.truePose()[0] - 0.6), 0.1);  // the truth fell short
 }
 
+TEST(SimBase, EncodersSeeTheVelocityNoiseSoOdometryDiffersFromTheCommands)
+{
+	sim::SimBaseOptions o;
+	o.slip_probability = 0;
+	const base::LabmateModel noisy;  // σ = 0.14 |v| (eq 5.13)
+	sim::SimBase b(noisy, o);
+	Eigen::Vector3d commanded = Eigen::Vector3d::Zero();
+	for (int i = 0; i < 20; ++i)
+	{
+		const auto u = i % 5 == 4 ? noisy.rotationControl(0.3) : noisy.translationControl(0.2);
+		b.step(u);
+		commanded = noisy.move(commanded, u);
+	}
+	// without slip the encoders follow the wheels, and the wheels move the truth
+	EXPECT_LT((b.odometry().xv_zxphi - b.truePose()).norm(), 1e-3);
+	// the commands were not what the wheels did
+	EXPECT_GT((b.odometry().xv_zxphi - commanded).head<2>().norm(), 0.02);
+}
+
+TEST(SimBase, ASlipBurstIsInvisibleToTheEncoders)
+{
+	// the same seed draws the same wheel noise and the same bursts; only the ground differs
+	sim::SimBaseOptions grip, slip;
+	grip.slip_probability = slip.slip_probability = 0.3;
+	grip.slip_fraction = 0;
+	slip.slip_fraction = 0.5;
+	const base::LabmateModel noisy;
+	sim::SimBase a(noisy, grip), b(noisy, slip);
+	for (int i = 0; i < 20; ++i)
+	{
+		a.step(noisy.translationControl(0.2));
+		b.step(noisy.translationControl(0.2));
+	}
+	ASSERT_GT(b.slipStepsSoFar(), 0);
+	EXPECT_EQ(a.odometry().ticks_right, b.odometry().ticks_right);
+	EXPECT_EQ(a.odometry().ticks_left, b.odometry().ticks_left);
+	EXPECT_EQ(a.odometry().xv_zxphi, b.odometry().xv_zxphi);
+	EXPECT_GT((b.truePose() - a.truePose()).head<2>().norm(), 0.05);  // the truth did slip
+	EXPECT_GT((b.truePose() - b.odometry().xv_zxphi).head<2>().norm(), 0.05);
+}
+
 TEST(SimHead, MoveTimeFollowsTheSlowestJointAndLimitsAreEnforced)
 {
 	const geometry::BiSightHead head;

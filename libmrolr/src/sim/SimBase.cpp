@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <stdexcept>
 
 namespace mrolr::sim
 {
@@ -15,17 +16,25 @@ void SimBaseOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg
 	slip_burst_steps = int(readInt(cfg, section, "slip_burst_steps", slip_burst_steps));
 	slip_fraction = readDouble(cfg, section, "slip_fraction", slip_fraction);
 	seed = unsigned(readInt(cfg, section, "seed", long(seed)));
+	footprint.length_m = readDouble(cfg, section, "footprint_length_m", footprint.length_m);
+	footprint.width_m = readDouble(cfg, section, "footprint_width_m", footprint.width_m);
+	footprint.offset_m = readDouble(cfg, section, "footprint_offset_m", footprint.offset_m);
 	requireInRange(cfg, section, "ticks_per_m", ticks_per_m, 1, 1e7);
 	requireInRange(cfg, section, "slip_probability", slip_probability, 0, 1);
 	requireInRange(cfg, section, "slip_burst_steps", slip_burst_steps, 1, 1000);
 	requireInRange(cfg, section, "slip_fraction", slip_fraction, 0, 1);
+	requireInRange(cfg, section, "footprint_length_m", footprint.length_m, 0.05, 5);
+	requireInRange(cfg, section, "footprint_width_m", footprint.width_m, 0.05, 5);
+	requireInRange(cfg, section, "footprint_offset_m", footprint.offset_m, -2, 2);
 }
 
 void SimBaseOptions::dump(std::ostream& out) const
 {
 	out << "ticks_per_m = " << ticks_per_m << "\nslip_probability = " << slip_probability
 	    << "\nslip_burst_steps = " << slip_burst_steps << "\nslip_fraction = " << slip_fraction
-	    << "\nseed = " << seed << "\n";
+	    << "\nseed = " << seed << "\nfootprint_length_m = " << footprint.length_m
+	    << "\nfootprint_width_m = " << footprint.width_m
+	    << "\nfootprint_offset_m = " << footprint.offset_m << "\n";
 }
 
 SimBase::SimBase(const base::LabmateModel& model, const SimBaseOptions& options,
@@ -35,23 +44,67 @@ SimBase::SimBase(const base::LabmateModel& model, const SimBaseOptions& options,
 	odo_.xv_zxphi = start_zxphi;
 }
 
-base::WheelControl SimBase::trueControl(const base::WheelControl& u)
+void SimBase::setCollisionWorld(std::shared_ptr<const CollisionWorld> world)
 {
+	if (world)
+		if (const auto t = world->touchAt(true_))
+			throw std::invalid_argument("SimBase: the base at (z, x) = (" +
+			                            std::to_string(true_[0]) + ", " + std::to_string(true_[1]) +
+			                            ") m already overlaps " + t->what);
+	collisions_ = std::move(world);
+	odo_.bumper = collisions_ && collisions_->touchAt(true_, kBumperTravel_m);
+}
+
+base::WheelControl SimBase::turnedWheels(const base::WheelControl& u)
+{
+	// the motors do not hold the commanded speed exactly (eq 5.13); the encoders see this
 	std::normal_distribution<double> n(0, 1);
 	const Eigen::Matrix2d U = model_.controlCovariance(u);
 	base::WheelControl t = u;
 	t.v1_mps += std::sqrt(U(0, 0)) * n(rng_);
 	t.v2_mps += std::sqrt(U(1, 1)) * n(rng_);
+	return t;
+}
+
+base::WheelControl SimBase::slipped(const base::WheelControl& turned)
+{
+	base::WheelControl m = turned;
 	if (slip_left_ == 0 &&
 	    std::uniform_real_distribution<double>(0, 1)(rng_) < options_.slip_probability)
 		slip_left_ = options_.slip_burst_steps;
 	if (slip_left_ > 0)
 	{
-		t.v2_mps *= 1 - options_.slip_fraction;  // the left wheel spins without gripping
+		m.v2_mps *= 1 - options_.slip_fraction;  // the left wheel spins without gripping
 		--slip_left_;
 		++slip_steps_total_;
 	}
-	return t;
+	return m;
+}
+
+double SimBase::moveTruth(const base::WheelControl& moved)
+{
+	if (!collisions_)
+	{
+		true_ = model_.move(true_, moved);
+		return 1.0;
+	}
+	const Eigen::Vector3d from = true_;
+	const Motion arc = [this, from, moved](double t)
+	{ return model_.move(from, {moved.v1_mps, moved.v2_mps, moved.dt_s * t}); };
+	const auto contact = collisions_->firstContact(arc, std::abs(model_.arcLength(moved)),
+	                                               std::abs(model_.turnAngle(moved)));
+	odo_.bumper = false;
+	if (!contact)
+	{
+		true_ = model_.move(from, moved);
+		odo_.bumper = bool(collisions_->touchAt(true_, kBumperTravel_m));
+		return 1.0;
+	}
+	true_ = contact->last_free_zxphi;
+	last_contact_ = contact;
+	++contacts_total_;
+	odo_.bumper = true;
+	return contact->free_fraction;
 }
 
 long SimBase::countTicks(double travel_m, double& residual)
@@ -62,20 +115,28 @@ long SimBase::countTicks(double travel_m, double& residual)
 	return ticks;
 }
 
-void SimBase::step(const base::WheelControl& u)
+void SimBase::countEncoders(const base::WheelControl& turned, double stall_fraction)
 {
-	true_ = model_.move(true_, trueControl(u));
-	// the encoders count the commanded wheel turns (slip and ground noise are invisible to them)
-	const long dr = countTicks(u.v1_mps * u.dt_s, residual_right_);
-	const long dl = countTicks(u.v2_mps * u.dt_s, residual_left_);
+	// the encoders count what the wheels turned, up to where a contact stalled them
+	const double travelled_s = turned.dt_s * stall_fraction;
+	const long dr = countTicks(turned.v1_mps * travelled_s, residual_right_);
+	const long dl = countTicks(turned.v2_mps * travelled_s, residual_left_);
 	odo_.ticks_right += dr;
 	odo_.ticks_left += dl;
-	if (u.dt_s > 0)
+	if (turned.dt_s > 0)
 	{
-		const base::WheelControl measured{double(dr) / options_.ticks_per_m / u.dt_s,
-		                                  double(dl) / options_.ticks_per_m / u.dt_s, u.dt_s};
+		const base::WheelControl measured{double(dr) / options_.ticks_per_m / turned.dt_s,
+		                                  double(dl) / options_.ticks_per_m / turned.dt_s,
+		                                  turned.dt_s};
 		odo_.xv_zxphi = model_.move(odo_.xv_zxphi, measured);
 	}
+}
+
+void SimBase::step(const base::WheelControl& u)
+{
+	const base::WheelControl turned = turnedWheels(u);
+	const double stall_fraction = moveTruth(slipped(turned));
+	countEncoders(turned, stall_fraction);
 	odo_.time_s += u.dt_s;
 }
 
