@@ -34,8 +34,9 @@ bool stopped(const std::atomic<bool>* stop)
 int sliceMs(SocketDeadline deadline)
 {
 	if (deadline == kNoSocketDeadline) return kSocketSliceMs;
-	const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-	    deadline - std::chrono::steady_clock::now());
+	// rounded up: a deadline 0.4 ms away is not yet passed
+	const auto left =
+	    std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
 	return int(std::clamp<long long>(left.count(), 0, kSocketSliceMs));
 }
 
