@@ -226,6 +226,40 @@ TEST(CameraSocket, StopReturnsPromptlyWithAnIdleClientConnected)
 	EXPECT_LT(secondsSince(t0), 1.0);  // a bound against hanging, not a timing target
 }
 
+TEST(CameraSocket, AGivenPortIsUsedAndATakenOneIsRefusedNamingIt)
+{
+	const uint16_t port = hw::freeLoopbackPort();
+	hw::CameraServer first([] { return noisePair(8, 8, 1); }, port);
+	EXPECT_EQ(first.port(), port);
+	EXPECT_EQ(first.address(), "127.0.0.1:" + std::to_string(port));
+	try
+	{
+		hw::CameraServer second([] { return noisePair(8, 8, 1); }, port);
+		ADD_FAILURE() << "two servers on one port";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find(first.address()), std::string::npos) << e.what();
+	}
+	hw::CameraSocketClient client(first.address(), kTimeoutMs);
+	EXPECT_TRUE(sameGreyPixels(client.grab().left, noisePair(8, 8, 1).left));
+}
+
+TEST(CameraSocket, AnEmptyImageFromTheGrabIsRefusedNamingIt)
+{
+	hw::CameraServer server(
+	    []
+	    {
+		    auto p = noisePair(8, 8, 1);
+		    p.left = mrpt::img::CImage();
+		    return p;
+	    });
+	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	const auto e = expectSerialError([&] { client.grab(); });
+	EXPECT_EQ(e.kind(), Kind::Refused) << e.what();
+	EXPECT_NE(std::string(e.what()).find("left image is empty"), std::string::npos) << e.what();
+}
+
 TEST(CameraSocket, MalformedAddressesAreRefusedNamingDeviceAndAddress)
 {
 	for (const std::string bad :

@@ -77,10 +77,17 @@ void CameraServer::loop()
 {
 	while (!stop_)
 	{
-		auto client = listener_->accept(kSocketSliceMs);
-		if (!client) continue;
-		++accepted_;
-		serve(*client);
+		// nothing may escape the thread (std::terminate): a failure drops the connection only
+		try
+		{
+			auto client = listener_->accept(kSocketSliceMs);
+			if (!client) continue;
+			++accepted_;
+			serve(*client);
+		}
+		catch (const std::exception&)
+		{
+		}
 	}
 }
 
@@ -133,6 +140,10 @@ std::string CameraServer::reply(uint32_t seq)
 	catch (const std::exception& e)
 	{
 		return encodeCameraError(seq, mrptMessage(e.what()));
+	}
+	catch (...)
+	{
+		return encodeCameraError(seq, "the grab function threw an unknown exception");
 	}
 }
 
