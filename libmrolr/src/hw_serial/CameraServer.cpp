@@ -6,7 +6,9 @@
 #include <mrpt/comms/CClientTCPSocket.h>
 #include <mrpt/comms/CServerTCPSocket.h>
 
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 
 namespace mrolr::hw
 {
@@ -87,6 +89,8 @@ void CameraServer::loop()
 		}
 		catch (const std::exception&)
 		{
+			// a failure that repeats at once must not spin the thread
+			std::this_thread::sleep_for(std::chrono::milliseconds(kSocketSliceMs));
 		}
 	}
 }
