@@ -27,4 +27,14 @@ SerialDeviceError::SerialDeviceError(Kind kind, const std::string& device, const
 {
 }
 
+std::string mrptMessage(const std::string& what)
+{
+	// a nested MRPT exception repeats the header; the innermost message names the cause
+	const size_t m = what.rfind("Message:");
+	if (m == std::string::npos) return what.substr(0, what.find('\n'));
+	const size_t start = what.find_first_not_of(' ', m + 8);
+	if (start == std::string::npos) return {};
+	return what.substr(start, what.find('\n', start) - start);
+}
+
 }  // namespace mrolr::hw

@@ -12,18 +12,6 @@
 
 namespace mrolr::hw
 {
-namespace
-{
-/** The "Message:" line of an MRPT exception, without its call stack. */
-std::string mrptMessage(const std::string& what)
-{
-	const size_t m = what.find("Message:");
-	if (m == std::string::npos) return what.substr(0, what.find('\n'));
-	const size_t start = what.find_first_not_of(' ', m + 8);
-	return what.substr(start, what.find('\n', start) - start);
-}
-}  // namespace
-
 /** CSerialPort with its descriptor visible, for poll(). */
 class SerialPortTransport::Port : public mrpt::comms::CSerialPort
 {

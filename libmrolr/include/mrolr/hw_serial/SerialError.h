@@ -41,4 +41,8 @@ class SerialDeviceError : public std::runtime_error
 /** "timeout", "garbage", "disconnected", "refused". */
 const char* kindName(SerialDeviceError::Kind kind);
 
+/** The innermost "Message:" line of an MRPT exception's what(), without call stacks (the first
+ * line of any other text), for error messages a user reads. */
+std::string mrptMessage(const std::string& what);
+
 }  // namespace mrolr::hw

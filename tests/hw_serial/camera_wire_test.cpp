@@ -1,0 +1,159 @@
+// The camera socket's frames without sockets: exact header bytes, a pair through the payload and
+// back, and payloads that must be refused (truncated, padded, another class, random bytes).
+#include "CameraTestUtil.h"
+
+#include <mrolr/hw_serial/CameraWire.h>
+#include <mrolr/hw_serial/GreyImage.h>
+
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CObservationImage.h>
+#include <mrpt/obs/CObservationStereoImages.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <gtest/gtest.h>
+
+using namespace mrolr;
+using camtest::noisePair;
+using camtest::sameGreyPixels;
+
+namespace
+{
+std::string payloadOf(const std::string& frame)
+{
+	return frame.substr(hw::kCameraHeaderBytes);
+}
+
+/** Five doubles and @p obs, as an MRCI payload would hold them. */
+std::string payloadWith(const mrpt::serialization::CSerializable& obs)
+{
+	mrpt::io::CMemoryStream mem;
+	auto out = mrpt::serialization::archiveFrom(mem);
+	for (int i = 0; i < 5; ++i) out << 1.0;
+	out << obs;
+	return std::string(static_cast<const char*>(mem.getRawBufferData()),
+	                   size_t(mem.getTotalBytesCount()));
+}
+}  // namespace
+
+TEST(CameraWire, HeaderIsMagicThenLittleEndianSeqAndLength)
+{
+	EXPECT_EQ(hw::encodeCameraRequest(0x01020304u),
+	          std::string("MRCQ\x04\x03\x02\x01\0\0\0\0", 12));
+	EXPECT_EQ(hw::encodeCameraError(7, "no"), std::string("MRCE\x07\0\0\0\x02\0\0\0no", 14));
+	const auto images = hw::encodeCameraImages(0xFFFFFFFFu, noisePair(4, 3, 1));
+	EXPECT_EQ(images.substr(0, 8), std::string("MRCI\xFF\xFF\xFF\xFF"));
+	EXPECT_EQ(hw::decodeCameraHeader(images).length, images.size() - hw::kCameraHeaderBytes);
+}
+
+TEST(CameraWire, HeadersRoundTripForEveryKind)
+{
+	for (auto kind : {hw::CameraFrameKind::Images, hw::CameraFrameKind::Error})
+	{
+		const hw::CameraFrameHeader h{kind, 4000000000u, hw::kCameraMaxPayloadBytes};
+		const auto back = hw::decodeCameraHeader(hw::encodeCameraHeader(h));
+		EXPECT_EQ(back.kind, kind);
+		EXPECT_EQ(back.seq, h.seq);
+		EXPECT_EQ(back.length, h.length);
+	}
+	EXPECT_EQ(hw::decodeCameraHeader(hw::encodeCameraRequest(9)).kind,
+	          hw::CameraFrameKind::Request);
+}
+
+TEST(CameraWire, UnknownMagicOverlongLengthOrARequestWithPayloadAreRefused)
+{
+	EXPECT_THROW(hw::decodeCameraHeader(std::string("MRCX\0\0\0\0\0\0\0\0", 12)),
+	             hw::CameraWireError);
+	EXPECT_THROW(hw::decodeCameraHeader(std::string("mrcq\0\0\0\0\0\0\0\0", 12)),
+	             hw::CameraWireError);
+	EXPECT_THROW(hw::decodeCameraHeader(hw::encodeCameraHeader(
+	                 {hw::CameraFrameKind::Images, 1, hw::kCameraMaxPayloadBytes + 1})),
+	             hw::CameraWireError);
+	EXPECT_THROW(hw::decodeCameraHeader(std::string("MRCQ\0\0\0\0\x01\0\0\0", 12)),
+	             hw::CameraWireError);
+	EXPECT_THROW(hw::decodeCameraHeader("MRCQ"), std::invalid_argument);
+}
+
+TEST(CameraWire, APairRoundTripsExactlyThroughThePayload)
+{
+	const auto sent = noisePair(33, 17, 4);  // odd sizes: no row padding to hide behind
+	const auto got = hw::decodeCameraImages(payloadOf(hw::encodeCameraImages(5, sent)));
+	EXPECT_TRUE(sameGreyPixels(got.left, sent.left));
+	EXPECT_TRUE(sameGreyPixels(got.right, sent.right));
+	EXPECT_EQ(got.time_s, sent.time_s);
+	EXPECT_EQ(got.angles.pan, sent.angles.pan);
+	EXPECT_EQ(got.angles.verg_right, sent.angles.verg_right);
+}
+
+TEST(CameraWire, TheObservationHoldsBothImagesAndTheTimestamp)
+{
+	const auto sent = noisePair(20, 10, 2);
+	const std::string payload = payloadOf(hw::encodeCameraImages(1, sent));
+	mrpt::io::CMemoryStream mem;
+	mem.assignMemoryNotOwn(payload.data(), payload.size());
+	auto in = mrpt::serialization::archiveFrom(mem);
+	double d[5];
+	for (double& x : d) in >> x;
+	const auto obs = in.ReadObject<mrpt::obs::CObservationStereoImages>();
+	ASSERT_TRUE(obs);
+	EXPECT_TRUE(obs->hasImageRight);
+	EXPECT_FALSE(obs->hasImageDisparity);
+	EXPECT_TRUE(sameGreyPixels(obs->imageLeft, sent.left));
+	EXPECT_TRUE(sameGreyPixels(obs->imageRight, sent.right));
+	EXPECT_NEAR(mrpt::Clock::toDouble(obs->timestamp), sent.time_s, 1e-6);  // 100 ns ticks
+	EXPECT_EQ(obs->sensorLabel, hw::kCameraSensorLabel);
+	EXPECT_EQ(d[0], sent.time_s);
+	EXPECT_EQ(d[2], sent.angles.tilt);
+}
+
+TEST(CameraWire, ColourIsSentAsItsGreyConversion)
+{
+	auto pair = noisePair(16, 8, 3);
+	mrpt::img::CImage colour(16, 8, mrpt::img::CH_RGB);
+	for (unsigned y = 0; y < 8; ++y)
+		for (unsigned x = 0; x < 48; ++x) colour.ptrLine<uint8_t>(y)[x] = uint8_t(x * 5 + y);
+	pair.left = colour;
+	const auto got = hw::decodeCameraImages(payloadOf(hw::encodeCameraImages(1, pair)));
+	EXPECT_FALSE(got.left.isColor());
+	EXPECT_TRUE(sameGreyPixels(got.left, colour.grayscale()));
+}
+
+TEST(CameraWire, EmptyImagesAreNotEncoded)
+{
+	auto pair = noisePair(8, 8, 1);
+	pair.right = mrpt::img::CImage();
+	EXPECT_THROW(hw::encodeCameraImages(1, pair), std::invalid_argument);
+}
+
+TEST(CameraWire, EveryTruncationOrPaddingOfAPayloadIsRefused)
+{
+	const std::string payload = payloadOf(hw::encodeCameraImages(1, noisePair(6, 4, 1)));
+	for (size_t n = 0; n < payload.size(); ++n)
+		EXPECT_THROW(hw::decodeCameraImages(payload.substr(0, n)), hw::CameraWireError) << n;
+	EXPECT_THROW(hw::decodeCameraImages(payload + '\0'), hw::CameraWireError);
+}
+
+TEST(CameraWire, AnotherObservationClassIsRefused)
+{
+	mrpt::obs::CObservationImage mono;
+	mono.image = camtest::noiseImage(4, 4, 1);
+	EXPECT_THROW(hw::decodeCameraImages(payloadWith(mono)), hw::CameraWireError);
+}
+
+TEST(CameraWire, AStereoObservationWithoutItsRightImageIsRefused)
+{
+	mrpt::obs::CObservationStereoImages obs;
+	obs.imageLeft = camtest::noiseImage(4, 4, 1);
+	obs.hasImageRight = false;
+	EXPECT_THROW(hw::decodeCameraImages(payloadWith(obs)), hw::CameraWireError);
+}
+
+TEST(CameraWire, RandomPayloadsAreRefusedNeverCrash)
+{
+	std::mt19937 rng(11);
+	for (int i = 0; i < 300; ++i)
+	{
+		std::string junk(rng() % 600, '\0');
+		for (char& c : junk) c = char(rng());
+		EXPECT_THROW(hw::decodeCameraImages(junk), hw::CameraWireError);
+	}
+}
