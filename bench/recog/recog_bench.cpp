@@ -85,7 +85,7 @@ Fixture& fixture()
  * lab model (datasets/objects) that is not in it, with PPF trained on that model. */
 struct RenderedFixture
 {
-	mrolr::apps::EvalScene scene;
+	mrolr::eval::EvalScene scene;
 	model::WireFrame absent;
 	std::unique_ptr<Recognizer> skip, full;
 	cv::Mat ppf_scene;
@@ -97,7 +97,7 @@ struct RenderedFixture
 	{
 		mrolr::apps::RecognizeApp app;
 		const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile(app.config_path));
-		mrolr::apps::EvaluationOptions eo;
+		mrolr::eval::EvaluationOptions eo;
 		eo.loadFromConfigFile(cfg, "evaluation");
 		image_options.loadFromConfigFile(cfg, "image_verification");
 		scene = app.makeGenerator(eo)->make(0);

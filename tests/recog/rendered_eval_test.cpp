@@ -1,5 +1,5 @@
-#include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/util/Cli.h>
@@ -17,6 +17,7 @@
 
 namespace fs = std::filesystem;
 using namespace mrolr::apps;
+using namespace mrolr::eval;
 
 namespace
 {

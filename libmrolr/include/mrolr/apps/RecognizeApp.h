@@ -22,8 +22,8 @@
  *                     [--eval-seed S] [--config config/recognition.ini] [--no-image-verify]
  *                     [--json]
  *
- * renders the fixed evaluation set of [evaluation] (RecognitionEvaluation.h), reconstructs every
- * scene, searches every model (default every .wf of datasets/objects; --truth-models: the
+ * renders the fixed evaluation set of [evaluation] (eval/RecognitionEvaluation.h), reconstructs
+ * every scene, searches every model (default every .wf of datasets/objects; --truth-models: the
  * simulator's exact wire-frames) and compares with the truth; writes
  * DIR/scene_KK/{left,right,overlay}.png, scene.wf, calib.ini, truth.json, and DIR/cases.json,
  * DIR/summary.json.
@@ -31,7 +31,7 @@
  * With a stereo pair (--left/--right/--calib and --evaluate) the hypotheses are verified in the
  * images (recog::ImageVerifier, [image_verification] of --config) unless --no-image-verify. */
 
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
 
@@ -78,7 +78,8 @@ class RecognizeApp
 
 	/** The scene generator of --evaluate with the app's scene options (--scene-config) and the
 	 * shipped head (config/bisight.ini) and render options (config/sim.ini [render]). */
-	std::unique_ptr<EvalSceneGenerator> makeGenerator(const EvaluationOptions& eo) const;
+	std::unique_ptr<eval::EvalSceneGenerator> makeGenerator(
+	    const eval::EvaluationOptions& eo) const;
 
 	// Results (set by run)
 	recog::RecognitionOptions options;
@@ -86,9 +87,9 @@ class RecognizeApp
 	std::vector<model::WireFrame> models;
 	std::vector<model::WireFrame> scenes;           ///< the scene models searched, in order
 	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
-	EvaluationOptions eval_options;                 ///< --evaluate
-	std::vector<EvalCase> eval_cases;
-	EvalSummary eval_summary;
+	eval::EvaluationOptions eval_options;           ///< --evaluate
+	std::vector<eval::EvalCase> eval_cases;
+	eval::EvalSummary eval_summary;
 
  private:
 	void loadScenes();
@@ -109,11 +110,11 @@ class RecognizeApp
 	 * @p recs, scene @p s) not found is searched again with the found ones as occluders; a find
 	 * replaces its case and its entry of @p found. */
 	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
-	                       const std::vector<std::vector<double>>& symmetries, const EvalScene& s,
-	                       const recog::ImageVerifier& images,
-	                       std::vector<EvalCase>::iterator cases,
+	                       const std::vector<std::vector<double>>& symmetries,
+	                       const eval::EvalScene& s, const recog::ImageVerifier& images,
+	                       std::vector<eval::EvalCase>::iterator cases,
 	                       std::vector<recog::RecognitionResult>& found) const;
-	void loadEvaluationModels(const EvalSceneGenerator& gen);
+	void loadEvaluationModels(const eval::EvalSceneGenerator& gen);
 	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;
 	void printText(std::ostream& out) const;

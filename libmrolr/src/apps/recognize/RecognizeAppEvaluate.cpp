@@ -1,7 +1,7 @@
 #include "RecognizeOutput.h"
 
-#include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/recog/MutualOcclusion.h>
 #include <mrolr/sim/SceneBuilder.h>
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-nlohmann::json caseJson(const EvalCase& c)
+nlohmann::json caseJson(const eval::EvalCase& c)
 {
 	return {{"scene", c.scene},
 	        {"model", c.model},
@@ -44,7 +44,7 @@ nlohmann::json caseJson(const EvalCase& c)
 	        {"ms", c.ms}};
 }
 
-nlohmann::json objectJson(const EvalObject& o)
+nlohmann::json objectJson(const eval::EvalObject& o)
 {
 	recog::RecognitionResult r;
 	r.T_OinS = o.T_OinL;
@@ -54,7 +54,7 @@ nlohmann::json objectJson(const EvalObject& o)
 }
 
 /** Writes left/right images, the scene wire-frame, its calibration and truth under DIR/scene_K. */
-std::string saveScene(const EvalScene& s, const std::string& dir)
+std::string saveScene(const eval::EvalScene& s, const std::string& dir)
 {
 	char name[32];
 	std::snprintf(name, sizeof(name), "scene_%02d", s.index);
@@ -83,7 +83,7 @@ std::vector<std::string> defaultModelPaths()
 	return out;
 }
 
-nlohmann::json summaryJson(const EvalSummary& s)
+nlohmann::json summaryJson(const eval::EvalSummary& s)
 {
 	return {{"rate_cases", s.rate_cases},
 	        {"recognised", s.recognised},
@@ -100,7 +100,8 @@ nlohmann::json summaryJson(const EvalSummary& s)
 }
 }  // namespace
 
-std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(const EvaluationOptions& eo) const
+std::unique_ptr<eval::EvalSceneGenerator> RecognizeApp::makeGenerator(
+    const eval::EvaluationOptions& eo) const
 {
 	const auto lab = world::World::load(util::requireProjectFile(eo.world));
 	sim::RenderOptions ro;
@@ -111,10 +112,10 @@ std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(const Evaluation
 	                      "scene");
 	const geometry::BiSightHead head(
 	    geometry::BiSightOptions::fromFile(util::requireProjectFile("config/bisight.ini")));
-	return std::make_unique<EvalSceneGenerator>(eo, head, ro, so, sim::loadObjectShapes(lab));
+	return std::make_unique<eval::EvalSceneGenerator>(eo, head, ro, so, sim::loadObjectShapes(lab));
 }
 
-void RecognizeApp::loadEvaluationModels(const EvalSceneGenerator& gen)
+void RecognizeApp::loadEvaluationModels(const eval::EvalSceneGenerator& gen)
 {
 	if (truth_models)
 		for (const auto& [name, shape] : gen.shapes()) models.push_back(gen.truthWireFrame(name));
@@ -139,11 +140,11 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 	for (const auto& m : models)
 	{
 		recs.emplace_back(m, options);
-		symmetries.push_back(symmetryAnglesDeg(gen->truthWireFrame(m.name)));
+		symmetries.push_back(eval::symmetryAnglesDeg(gen->truthWireFrame(m.name)));
 	}
 	for (int k = 0; k < eval_options.scenes; ++k)
 	{
-		const EvalScene s = gen->make(k);
+		const eval::EvalScene s = gen->make(k);
 		std::unique_ptr<recog::ImageVerifier> images;
 		if (image_verify)
 			images =
@@ -152,8 +153,8 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 		const size_t first = eval_cases.size();
 		for (size_t i = 0; i < recs.size(); ++i)
 		{
-			eval_cases.push_back(
-			    evaluateCase(recs[i], s, symmetries[i], eval_options, images.get(), &s.plane_L));
+			eval_cases.push_back(eval::evaluateCase(recs[i], s, symmetries[i], eval_options,
+			                                        images.get(), &s.plane_L));
 			found.push_back(eval_cases.back().result);
 		}
 		if (images && image_options.mutual_occlusion)
@@ -163,15 +164,15 @@ int RecognizeApp::runEvaluation(std::ostream& out)
 		cv::cvtColor(s.left, colour, cv::COLOR_GRAY2BGR);
 		writeOverlay(colour, s.calib, {s.scene}, models, found, d + "/overlay.png");
 	}
-	eval_summary = summarize(eval_cases, eval_options);
+	eval_summary = eval::summarize(eval_cases, eval_options);
 	writeEvaluation(out);
 	return util::kExitOk;
 }
 
 void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
                                      const std::vector<std::vector<double>>& symmetries,
-                                     const EvalScene& s, const recog::ImageVerifier& images,
-                                     std::vector<EvalCase>::iterator cases,
+                                     const eval::EvalScene& s, const recog::ImageVerifier& images,
+                                     std::vector<eval::EvalCase>::iterator cases,
                                      std::vector<recog::RecognitionResult>& found) const
 {
 	std::vector<const recog::Recognizer*> ptrs;
@@ -183,8 +184,9 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 		const auto occluders = recog::occludersOf(ptrs, first, i, image_options.sample_spacing_mm);
 		if (occluders.empty()) continue;
 		const recog::ImageVerifier behind = images.withOccluders(occluders);
-		EvalCase c = evaluateCase(recs[i], s, symmetries[i], eval_options, &behind, &s.plane_L);
-		EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
+		eval::EvalCase c =
+		    eval::evaluateCase(recs[i], s, symmetries[i], eval_options, &behind, &s.plane_L);
+		eval::EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
 		c.ms += before.ms;
 		c.result.ms = c.ms;
 		if (!c.found || recog::interpenetrates(recs[i], c.result.T_OinS, occluders))

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 /** Section [evaluation] of config/recognition.ini. */
 struct EvaluationOptions
@@ -154,13 +154,13 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 /** The figures of a set of cases (issue 7's targets). */
 struct EvalSummary
 {
-	int rate_cases = 0;       ///< present with visible_fraction >= min_visible_fraction
-	int recognised = 0;       ///< of those, found at a correct pose
-	int absent_cases = 0;     ///< model absent from the scene
-	int false_positives = 0;  ///< absent but found
-	int wrong_poses = 0;      ///< present, found at a pose beyond the error limits
+	int rate_cases = 0;             ///< present with visible_fraction >= min_visible_fraction
+	int recognised = 0;             ///< of those, found at a correct pose
+	int absent_cases = 0;           ///< model absent from the scene
+	int false_positives = 0;        ///< absent but found
+	int wrong_poses = 0;            ///< present, found at a pose beyond the error limits
 	int recognised_from_plane = 0;  ///< of the recognised, by a support-plane hypothesis
-	double rate = 0;          ///< recognised / rate_cases
+	double rate = 0;                ///< recognised / rate_cases
 	double median_rot_err_deg = -1, median_trans_err_mm = -1;  ///< over correct rate cases
 	double median_ms = 0, max_ms = 0;                          ///< per model and scene, all cases
 	double median_absent_ms = 0;                               ///< absent cases
@@ -168,4 +168,4 @@ struct EvalSummary
 
 EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOptions& opts);
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval
