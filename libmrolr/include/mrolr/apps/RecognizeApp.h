@@ -1,6 +1,6 @@
 #pragma once
-/** `mrolr-recognize`: recognise object models in scene wire-frames and report their poses (issue 7,
- * thesis 6.3–6.4).
+/** `mrolr-recognize`: recognise object models in scene wire-frames and report their poses (thesis
+ * 6.3–6.4).
  *
  *     mrolr-recognize --model M.wf [--model M2.wf ...]
  *                     (--scene S.wf [--scene S2.wf ...] | --left L.png --right R.png --calib C.ini)
@@ -22,9 +22,9 @@
  *                     [--eval-seed S] [--config config/recognition.ini] [--no-image-verify]
  *                     [--json]
  *
- * renders the fixed evaluation set of [evaluation] (eval/RecognitionEvaluation.h), reconstructs
- * every scene, searches every model (default every .wf of datasets/objects; --truth-models: the
- * simulator's exact wire-frames) and compares with the truth; writes
+ * renders the fixed evaluation set of [evaluation], reconstructs every scene, searches every model
+ * (default every .wf of datasets/objects; --truth-models: the simulator's exact wire-frames) and
+ * compares with the truth (eval::evaluateSet, eval/RecognitionEvaluation.h); the app writes
  * DIR/scene_KK/{left,right,overlay}.png, scene.wf, calib.ini, truth.json, and DIR/cases.json,
  * DIR/summary.json.
  *
@@ -76,11 +76,6 @@ class RecognizeApp
 	bool json = false;
 	bool help_shown = false;
 
-	/** The scene generator of --evaluate with the app's scene options (--scene-config) and the
-	 * shipped head (config/bisight.ini) and render options (config/sim.ini [render]). */
-	std::unique_ptr<eval::EvalSceneGenerator> makeGenerator(
-	    const eval::EvaluationOptions& eo) const;
-
 	// Results (set by run)
 	recog::RecognitionOptions options;
 	recog::ImageVerificationOptions image_options;  ///< [image_verification], read when used
@@ -106,15 +101,9 @@ class RecognizeApp
 	/** --judgement: the left image with the judged samples of each found model of @p recs. */
 	void writeJudgements(const std::vector<recog::Recognizer>& recs,
 	                     const recog::ImageVerifier& images) const;
-	/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per model of
-	 * @p recs, scene @p s) not found is searched again with the found ones as occluders; a find
-	 * replaces its case and its entry of @p found. */
-	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
-	                       const std::vector<std::vector<double>>& symmetries,
-	                       const eval::EvalScene& s, const recog::ImageVerifier& images,
-	                       std::vector<eval::EvalCase>::iterator cases,
-	                       std::vector<recog::RecognitionResult>& found) const;
-	void loadEvaluationModels(const eval::EvalSceneGenerator& gen);
+	/** --evaluate: DIR/scene_KK/ of scene @p s and its overlay of what was @p found. */
+	void writeEvaluationScene(const eval::EvalScene& s,
+	                          const std::vector<recog::RecognitionResult>& found) const;
 	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;
 	void printText(std::ostream& out) const;
