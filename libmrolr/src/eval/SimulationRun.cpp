@@ -11,7 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -256,4 +256,4 @@ RunResult runSimulation(const world::World& world, const SimulationSetup& setup,
 	return RunEngine(world, setup, seed).run();
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

@@ -1,5 +1,5 @@
-// Simulator → filter → error against ground truth on maps/lab_points (issue 3).
-#include <mrolr/apps/EkfSimulation.h>
+// Simulator → filter → error against ground truth on maps/lab_points.
+#include <mrolr/eval/EkfSimulation.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-using namespace mrolr::apps;
+using namespace mrolr::eval;
 
 namespace
 {
@@ -41,7 +41,7 @@ void print(const MonteCarloSummary& m)
 
 TEST(EkfSim, ConsistencyOver50Runs)
 {
-	// Issue 3: the shipped configuration (2 % outliers, no wheel slip) and its seed, 50 runs.
+	// The shipped configuration (2 % outliers, no wheel slip) and its seed, 50 runs.
 	const SimulationSetup s = SimulationSetup::load(kRoot + "/config/ekf_sim.ini");
 	const auto m = summarise(monteCarlo(s, 50, s.sim.seed));
 	print(m);
@@ -50,7 +50,7 @@ TEST(EkfSim, ConsistencyOver50Runs)
 	EXPECT_NEAR(m.nees_hi, 3.7160, 1e-3);
 	// The innovations are consistent: mean NIS of a χ²₃ is 3.
 	EXPECT_NEAR(m.mean_nis, 3.0, 0.25);
-	// The issue's criterion: mean vehicle NEES inside its 95 % bounds for ≥ 90 % of the steps.
+	// The consistency criterion: mean vehicle NEES inside its 95 % bounds for ≥ 90 % of the steps.
 	EXPECT_GE(m.nees_inside_fraction, 0.90);
 	EXPECT_GE(m.nees_steps, m.steps - 1);
 	EXPECT_LT(m.slam_rms_position_m, 0.3 * m.dr_rms_position_m);
