@@ -24,9 +24,7 @@ SimulationSetup cleanSetup()
 std::vector<RunResult> monteCarlo(const SimulationSetup& s, int runs, uint64_t seed)
 {
 	const auto world = mrolr::world::World::load(kRoot + "/maps/lab_points/world.ini");
-	std::vector<RunResult> out;
-	for (int r = 0; r < runs; ++r) out.push_back(runSimulation(world, s, seed + 1000 * r));
-	return out;
+	return runMonteCarlo(world, s, runs, seed);
 }
 
 void print(const MonteCarloSummary& m)
@@ -121,6 +119,31 @@ TEST(EkfSim, KnownFeaturesKeepZeroCovarianceThroughARun)
 	}
 	EXPECT_EQ(known, 2);
 	EXPECT_GT(r.features_added, 2);
+}
+
+// Run r of a study is seeded by its index alone: the runs of a shorter study are its first runs,
+// and every run is the single run of its seed; the progress callback counts the runs.
+TEST(EkfSim, RunOfAStudyIsTheSameWhateverTheNumberOfRuns)
+{
+	const auto world = mrolr::world::World::load(kRoot + "/maps/lab_points/world.ini");
+	std::vector<int> done;
+	const auto three = runMonteCarlo(world, cleanSetup(), 3, 21, [&](int n) { done.push_back(n); });
+	const auto two = runMonteCarlo(world, cleanSetup(), 2, 21);
+	EXPECT_EQ(done, (std::vector<int>{1, 2, 3}));
+	ASSERT_EQ(three.size(), 3u);
+	const auto last = runSimulation(world, cleanSetup(), 21 + 2000);
+	const auto sameRun = [](const RunResult& a, const RunResult& b)
+	{
+		if (a.steps.size() != b.steps.size()) return false;
+		for (size_t k = 0; k < a.steps.size(); ++k)
+			if (a.steps[k].estimate != b.steps[k].estimate || a.steps[k].truth != b.steps[k].truth)
+				return false;
+		return true;
+	};
+	EXPECT_TRUE(sameRun(three[0], two[0]));
+	EXPECT_TRUE(sameRun(three[1], two[1]));
+	EXPECT_TRUE(sameRun(three[2], last));
+	EXPECT_FALSE(sameRun(three[0], three[1]));
 }
 
 TEST(EkfSim, ConfigErrorsNameTheKey)

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -98,6 +99,13 @@ struct RunResult
 /** Runs one simulation with its own random seed. Throws std::invalid_argument for a world with
  * fewer than two waypoints. */
 RunResult runSimulation(const world::World& world, const SimulationSetup& setup, uint64_t seed);
+
+/** Monte-Carlo runs: run r of @p runs uses the seed @p seed0 + 1000 r (so a run is the same
+ * whatever the number of runs). @p after_run, when set, is called after each run with the number
+ * of runs done. Throws as runSimulation. */
+std::vector<RunResult> runMonteCarlo(const world::World& world, const SimulationSetup& setup,
+                                     int runs, uint64_t seed0,
+                                     const std::function<void(int done)>& after_run = {});
 
 /** Monte-Carlo figures over runs (the keys of mrolr-ekf-sim --json): consistency (NEES against its
  * χ² bounds, NIS) and errors against the truth. */
