@@ -3,7 +3,7 @@
 // (cv::ppf_match_3d::PPF3DDetector, the peer a user would otherwise pick) fed points with
 // tangents sampled every 3 mm from the same wire-frames. The summary prints the ratios and the
 // pose errors of both against the scene's truth, measured in the same run.
-#include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Recognizer.h>
@@ -85,7 +85,7 @@ Fixture& fixture()
  * lab model (datasets/objects) that is not in it, with PPF trained on that model. */
 struct RenderedFixture
 {
-	mrolr::apps::EvalScene scene;
+	mrolr::eval::EvalScene scene;
 	model::WireFrame absent;
 	std::unique_ptr<Recognizer> skip, full;
 	cv::Mat ppf_scene;
@@ -95,12 +95,12 @@ struct RenderedFixture
 
 	RenderedFixture()
 	{
-		mrolr::apps::RecognizeApp app;
-		const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile(app.config_path));
-		mrolr::apps::EvaluationOptions eo;
+		const mrpt::config::CConfigFile cfg(
+		    mrolr::util::requireProjectFile("config/recognition.ini"));
+		mrolr::eval::EvaluationOptions eo;
 		eo.loadFromConfigFile(cfg, "evaluation");
 		image_options.loadFromConfigFile(cfg, "image_verification");
-		scene = app.makeGenerator(eo)->make(0);
+		scene = mrolr::eval::makeSceneGenerator(eo)->make(0);
 		images =
 		    std::make_unique<ImageVerifier>(scene.left, scene.right, scene.calib, image_options);
 		for (const char* name : {"alphabet_cube", "bottle", "can", "cup", "drink_package",

@@ -1,6 +1,6 @@
 #pragma once
-/** `mrolr-ekf-sim`: Monte-Carlo runs of the active-vision EKF-SLAM simulator (issue 3, thesis
- * 5.4–5.9, simulator module 1 of 6.8):
+/** `mrolr-ekf-sim`: Monte-Carlo runs of the active-vision EKF-SLAM simulator (thesis 5.4–5.9,
+ * simulator module 1 of 6.8; the runs and their figures are eval/EkfSimulation.h):
  *
  *     mrolr-ekf-sim --world FILE [--config FILE] [--runs N] [--seed S] [--out DIR]
  *                   [--rawlog FILE] [--json]
@@ -9,7 +9,7 @@
  * stderr) or, with --json, as one JSON object. --out writes steps.csv, nees.csv and paths.png (run
  * 0); --rawlog writes run 0 as an MRPT rawlog. Run r uses the seed S + 1000 r. */
 
-#include <mrolr/apps/EkfSimulation.h>
+#include <mrolr/eval/EkfSimulation.h>
 
 #include <iosfwd>
 #include <optional>
@@ -38,9 +38,9 @@ class EkfSimApp
 	bool help_shown = false;
 
 	// Results
-	SimulationSetup setup;
-	std::vector<RunResult> results;
-	MonteCarloSummary summary;
+	eval::SimulationSetup setup;
+	std::vector<eval::RunResult> results;
+	eval::MonteCarloSummary summary;
 
 	static std::string defaultConfigPath();
 

@@ -1,6 +1,6 @@
 #pragma once
-/** `mrolr-recognize`: recognise object models in scene wire-frames and report their poses (issue 7,
- * thesis 6.3–6.4).
+/** `mrolr-recognize`: recognise object models in scene wire-frames and report their poses (thesis
+ * 6.3–6.4).
  *
  *     mrolr-recognize --model M.wf [--model M2.wf ...]
  *                     (--scene S.wf [--scene S2.wf ...] | --left L.png --right R.png --calib C.ini)
@@ -22,16 +22,16 @@
  *                     [--eval-seed S] [--config config/recognition.ini] [--no-image-verify]
  *                     [--json]
  *
- * renders the fixed evaluation set of [evaluation] (RecognitionEvaluation.h), reconstructs every
- * scene, searches every model (default every .wf of datasets/objects; --truth-models: the
- * simulator's exact wire-frames) and compares with the truth; writes
+ * renders the fixed evaluation set of [evaluation], reconstructs every scene, searches every model
+ * (default every .wf of datasets/objects; --truth-models: the simulator's exact wire-frames) and
+ * compares with the truth (eval::evaluateSet, eval/RecognitionEvaluation.h); the app writes
  * DIR/scene_KK/{left,right,overlay}.png, scene.wf, calib.ini, truth.json, and DIR/cases.json,
  * DIR/summary.json.
  *
  * With a stereo pair (--left/--right/--calib and --evaluate) the hypotheses are verified in the
  * images (recog::ImageVerifier, [image_verification] of --config) unless --no-image-verify. */
 
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
 
@@ -76,19 +76,15 @@ class RecognizeApp
 	bool json = false;
 	bool help_shown = false;
 
-	/** The scene generator of --evaluate with the app's scene options (--scene-config) and the
-	 * shipped head (config/bisight.ini) and render options (config/sim.ini [render]). */
-	std::unique_ptr<EvalSceneGenerator> makeGenerator(const EvaluationOptions& eo) const;
-
 	// Results (set by run)
 	recog::RecognitionOptions options;
 	recog::ImageVerificationOptions image_options;  ///< [image_verification], read when used
 	std::vector<model::WireFrame> models;
 	std::vector<model::WireFrame> scenes;           ///< the scene models searched, in order
 	std::vector<recog::RecognitionResult> results;  ///< one per model, in --model order
-	EvaluationOptions eval_options;                 ///< --evaluate
-	std::vector<EvalCase> eval_cases;
-	EvalSummary eval_summary;
+	eval::EvaluationOptions eval_options;           ///< --evaluate
+	std::vector<eval::EvalCase> eval_cases;
+	eval::EvalSummary eval_summary;
 
  private:
 	void loadScenes();
@@ -105,15 +101,9 @@ class RecognizeApp
 	/** --judgement: the left image with the judged samples of each found model of @p recs. */
 	void writeJudgements(const std::vector<recog::Recognizer>& recs,
 	                     const recog::ImageVerifier& images) const;
-	/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per model of
-	 * @p recs, scene @p s) not found is searched again with the found ones as occluders; a find
-	 * replaces its case and its entry of @p found. */
-	void searchBehindFound(const std::vector<recog::Recognizer>& recs,
-	                       const std::vector<std::vector<double>>& symmetries, const EvalScene& s,
-	                       const recog::ImageVerifier& images,
-	                       std::vector<EvalCase>::iterator cases,
-	                       std::vector<recog::RecognitionResult>& found) const;
-	void loadEvaluationModels(const EvalSceneGenerator& gen);
+	/** --evaluate: DIR/scene_KK/ of scene @p s and its overlay of what was @p found. */
+	void writeEvaluationScene(const eval::EvalScene& s,
+	                          const std::vector<recog::RecognitionResult>& found) const;
 	void writeEvaluation(std::ostream& out) const;
 	void writeDemo(std::ostream& out) const;
 	void printText(std::ostream& out) const;

@@ -22,8 +22,8 @@ void writeVec(std::ostream& f, const Eigen::Vector3d& v)
 }
 }  // namespace
 
-void writeCsv(const std::string& dir, const std::vector<RunResult>& runs,
-              const MonteCarloSummary& summary)
+void writeCsv(const std::string& dir, const std::vector<eval::RunResult>& runs,
+              const eval::MonteCarloSummary& summary)
 {
 	auto f = openOut(dir + "/steps.csv");
 	f << "run,step,true_z_m,true_x_m,true_phi_rad,est_z_m,est_x_m,est_phi_rad,var_z_m2,var_x_m2,"

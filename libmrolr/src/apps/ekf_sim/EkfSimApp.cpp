@@ -66,17 +66,16 @@ void EkfSimApp::initialize(const std::vector<std::string>& args)
 int EkfSimApp::run(std::ostream& out)
 {
 	if (help_shown) return util::kExitOk;
-	setup = SimulationSetup::load(config_path);
+	setup = eval::SimulationSetup::load(config_path);
 	const auto world = world::World::load(world_path);
 	const uint64_t s0 = seed.value_or(setup.sim.seed);
-	results.clear();
-	for (int r = 0; r < runs; ++r)
+	const auto report = [this](int done)
 	{
-		results.push_back(runSimulation(world, setup, s0 + 1000 * static_cast<uint64_t>(r)));
-		if (progress) std::cerr << "\rrun " << r + 1 << "/" << runs << std::flush;
-	}
+		if (progress) std::cerr << "\rrun " << done << "/" << runs << std::flush;
+	};
+	results = eval::runMonteCarlo(world, setup, runs, s0, report);
 	if (progress) std::cerr << "\n";
-	summary = summarise(results);
+	summary = eval::summarise(results);
 	writeOutputs(world);
 	json ? printJson(out) : printTable(out);
 	return util::kExitOk;

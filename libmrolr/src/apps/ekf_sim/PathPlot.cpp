@@ -24,7 +24,7 @@ struct View
 	}
 };
 
-View fit(const world::World& w, const RunResult& run)
+View fit(const world::World& w, const eval::RunResult& run)
 {
 	double zmin = 1e9, zmax = -1e9, xmin = 1e9, xmax = -1e9;
 	const auto add = [&](double z, double x)
@@ -59,7 +59,7 @@ void drawEllipse(cv::Mat& img, const View& v, double z, double x, const Eigen::M
 	            colour, 1, cv::LINE_AA);
 }
 
-void drawPath(cv::Mat& img, const View& v, const RunResult& run, int which,
+void drawPath(cv::Mat& img, const View& v, const eval::RunResult& run, int which,
               const cv::Scalar& colour)
 {
 	std::vector<cv::Point> pts;
@@ -89,7 +89,7 @@ void drawLegend(cv::Mat& img)
 }
 }  // namespace
 
-void writePathPlot(const std::string& png, const world::World& w, const RunResult& run)
+void writePathPlot(const std::string& png, const world::World& w, const eval::RunResult& run)
 {
 	cv::Mat img(kSize, kSize, CV_8UC3, cv::Scalar(255, 255, 255));
 	const View v = fit(w, run);

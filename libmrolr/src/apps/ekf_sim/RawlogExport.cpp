@@ -22,7 +22,7 @@ mrpt::poses::CPose2D toMrpt(const Eigen::Vector3d& p)
 
 mrpt::obs::CObservationBearingRange::TMeasurement toBearingRange(const Eigen::Vector3d& h,
                                                                  int32_t id,
-                                                                 const SimulationSetup& s)
+                                                                 const eval::SimulationSetup& s)
 {
 	// Range from vergence: r = I / (2 tan γ), var_r = (dr/dγ)² σ_γ²; yaw = pan, pitch = −elevation.
 	const double I = s.slam.head.constants.interocular_m, g = h[2];
@@ -47,8 +47,8 @@ int32_t landmarkId(const world::World& w, const std::string& name)
 }
 }  // namespace
 
-void writeRawlog(const std::string& path, const world::World& world, const RunResult& run,
-                 const SimulationSetup& setup)
+void writeRawlog(const std::string& path, const world::World& world, const eval::RunResult& run,
+                 const eval::SimulationSetup& setup)
 {
 	mrpt::obs::CRawlog rawlog;
 	auto t = mrpt::Clock::fromDouble(0.0);

@@ -1,10 +1,8 @@
 #include "RecognizeOutput.h"
 
-#include <mrolr/apps/RecognitionEvaluation.h>
 #include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
-#include <mrolr/recog/MutualOcclusion.h>
-#include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/util/Cli.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -22,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-nlohmann::json caseJson(const EvalCase& c)
+nlohmann::json caseJson(const eval::EvalCase& c)
 {
 	return {{"scene", c.scene},
 	        {"model", c.model},
@@ -44,7 +42,7 @@ nlohmann::json caseJson(const EvalCase& c)
 	        {"ms", c.ms}};
 }
 
-nlohmann::json objectJson(const EvalObject& o)
+nlohmann::json objectJson(const eval::EvalObject& o)
 {
 	recog::RecognitionResult r;
 	r.T_OinS = o.T_OinL;
@@ -54,7 +52,7 @@ nlohmann::json objectJson(const EvalObject& o)
 }
 
 /** Writes left/right images, the scene wire-frame, its calibration and truth under DIR/scene_K. */
-std::string saveScene(const EvalScene& s, const std::string& dir)
+std::string saveScene(const eval::EvalScene& s, const std::string& dir)
 {
 	char name[32];
 	std::snprintf(name, sizeof(name), "scene_%02d", s.index);
@@ -74,16 +72,7 @@ std::string saveScene(const EvalScene& s, const std::string& dir)
 	return d.string();
 }
 
-std::vector<std::string> defaultModelPaths()
-{
-	std::vector<std::string> out;
-	for (const auto& e : fs::directory_iterator(util::requireProjectFile("datasets/objects")))
-		if (e.path().extension() == ".wf") out.push_back(e.path().string());
-	std::sort(out.begin(), out.end());
-	return out;
-}
-
-nlohmann::json summaryJson(const EvalSummary& s)
+nlohmann::json summaryJson(const eval::EvalSummary& s)
 {
 	return {{"rate_cases", s.rate_cases},
 	        {"recognised", s.recognised},
@@ -100,102 +89,36 @@ nlohmann::json summaryJson(const EvalSummary& s)
 }
 }  // namespace
 
-std::unique_ptr<EvalSceneGenerator> RecognizeApp::makeGenerator(const EvaluationOptions& eo) const
-{
-	const auto lab = world::World::load(util::requireProjectFile(eo.world));
-	sim::RenderOptions ro;
-	ro.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile("config/sim.ini")),
-	                      "render");
-	stereo::SceneOptions so;
-	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config_path)),
-	                      "scene");
-	const geometry::BiSightHead head(
-	    geometry::BiSightOptions::fromFile(util::requireProjectFile("config/bisight.ini")));
-	return std::make_unique<EvalSceneGenerator>(eo, head, ro, so, sim::loadObjectShapes(lab));
-}
-
-void RecognizeApp::loadEvaluationModels(const EvalSceneGenerator& gen)
-{
-	if (truth_models)
-		for (const auto& [name, shape] : gen.shapes()) models.push_back(gen.truthWireFrame(name));
-	else
-		for (const auto& p : model_paths.empty() ? defaultModelPaths() : model_paths)
-			models.push_back(model::loadWireFrame(p));
-	for (const auto& m : models) gen.truthWireFrame(m.name);  // every model must be an object
-}
-
 int RecognizeApp::runEvaluation(std::ostream& out)
 {
 	const mrpt::config::CConfigFile cfg(util::requireProjectFile(config_path));
 	loadRecognitionOptions();
 	eval_options.loadFromConfigFile(cfg, "evaluation");
-	if (image_verify) image_options.loadFromConfigFile(cfg, "image_verification");
+	eval::SetSearchOptions search{options, std::nullopt};
+	if (image_verify)
+	{
+		image_options.loadFromConfigFile(cfg, "image_verification");
+		search.images = image_options;
+	}
 	if (eval_scenes > 0) eval_options.scenes = eval_scenes;
 	if (eval_seed >= 0) eval_options.seed = static_cast<unsigned>(eval_seed);
-	const auto gen = makeGenerator(eval_options);
-	loadEvaluationModels(*gen);
-	std::vector<recog::Recognizer> recs;
-	std::vector<std::vector<double>> symmetries;
-	for (const auto& m : models)
-	{
-		recs.emplace_back(m, options);
-		symmetries.push_back(symmetryAnglesDeg(gen->truthWireFrame(m.name)));
-	}
-	for (int k = 0; k < eval_options.scenes; ++k)
-	{
-		const EvalScene s = gen->make(k);
-		std::unique_ptr<recog::ImageVerifier> images;
-		if (image_verify)
-			images =
-			    std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, image_options);
-		std::vector<recog::RecognitionResult> found;
-		const size_t first = eval_cases.size();
-		for (size_t i = 0; i < recs.size(); ++i)
-		{
-			eval_cases.push_back(
-			    evaluateCase(recs[i], s, symmetries[i], eval_options, images.get(), &s.plane_L));
-			found.push_back(eval_cases.back().result);
-		}
-		if (images && image_options.mutual_occlusion)
-			searchBehindFound(recs, symmetries, s, *images, eval_cases.begin() + first, found);
-		const std::string d = saveScene(s, evaluate_dir);
-		cv::Mat colour;
-		cv::cvtColor(s.left, colour, cv::COLOR_GRAY2BGR);
-		writeOverlay(colour, s.calib, {s.scene}, models, found, d + "/overlay.png");
-	}
-	eval_summary = summarize(eval_cases, eval_options);
+	const auto gen = eval::makeSceneGenerator(eval_options, scene_config_path);
+	models = truth_models ? eval::truthModels(*gen) : eval::databaseModels(*gen, model_paths);
+	eval_cases = eval::evaluateSet(*gen, models, search,
+	                               [this](const eval::EvalScene& s, const auto& found)
+	                               { writeEvaluationScene(s, found); });
+	eval_summary = eval::summarize(eval_cases, eval_options);
 	writeEvaluation(out);
 	return util::kExitOk;
 }
 
-void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
-                                     const std::vector<std::vector<double>>& symmetries,
-                                     const EvalScene& s, const recog::ImageVerifier& images,
-                                     std::vector<EvalCase>::iterator cases,
-                                     std::vector<recog::RecognitionResult>& found) const
+void RecognizeApp::writeEvaluationScene(const eval::EvalScene& s,
+                                        const std::vector<recog::RecognitionResult>& found) const
 {
-	std::vector<const recog::Recognizer*> ptrs;
-	for (const auto& r : recs) ptrs.push_back(&r);
-	const std::vector<recog::RecognitionResult> first = found;
-	for (size_t i = 0; i < recs.size(); ++i)
-	{
-		if (first[i].found) continue;
-		const auto occluders = recog::occludersOf(ptrs, first, i, image_options.sample_spacing_mm);
-		if (occluders.empty()) continue;
-		const recog::ImageVerifier behind = images.withOccluders(occluders);
-		EvalCase c = evaluateCase(recs[i], s, symmetries[i], eval_options, &behind, &s.plane_L);
-		EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
-		c.ms += before.ms;
-		c.result.ms = c.ms;
-		if (!c.found || recog::interpenetrates(recs[i], c.result.T_OinS, occluders))
-		{
-			before.ms = before.result.ms = c.ms;  // the second search's time counts
-			continue;
-		}
-		c.result.occluders = static_cast<int>(occluders.size());
-		before = c;
-		found[i] = c.result;
-	}
+	const std::string d = saveScene(s, evaluate_dir);
+	cv::Mat colour;
+	cv::cvtColor(s.left, colour, cv::COLOR_GRAY2BGR);
+	writeOverlay(colour, s.calib, {s.scene}, models, found, d + "/overlay.png");
 }
 
 void RecognizeApp::writeEvaluation(std::ostream& out) const

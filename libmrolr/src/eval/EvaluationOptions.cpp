@@ -1,9 +1,9 @@
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/util/Config.h>
 
 #include <ostream>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -62,4 +62,4 @@ void EvaluationOptions::dump(std::ostream& out) const
 	    << "\nmax_translation_error_mm = " << max_translation_error_mm << "\n";
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -256,4 +256,17 @@ RunResult runSimulation(const world::World& world, const SimulationSetup& setup,
 	return RunEngine(world, setup, seed).run();
 }
 
-}  // namespace mrolr::apps
+std::vector<RunResult> runMonteCarlo(const world::World& world, const SimulationSetup& setup,
+                                     int runs, uint64_t seed0,
+                                     const std::function<void(int done)>& after_run)
+{
+	std::vector<RunResult> out;
+	for (int r = 0; r < runs; ++r)
+	{
+		out.push_back(runSimulation(world, setup, seed0 + 1000 * static_cast<uint64_t>(r)));
+		if (after_run) after_run(r + 1);
+	}
+	return out;
+}
+
+}  // namespace mrolr::eval

@@ -1,13 +1,13 @@
 #pragma once
 // The true side of the simulation: the real vehicle pose, wheel slip, and what the head really
-// measures. Private to the ekf_sim app library.
+// measures. Private to the eval library.
 
-#include <mrolr/apps/EkfSimulation.h>
+#include <mrolr/eval/EkfSimulation.h>
 
 #include <optional>
 #include <random>
 
-namespace mrolr::apps::detail
+namespace mrolr::eval::detail
 {
 class SimulatedWorld
 {
@@ -40,4 +40,4 @@ class SimulatedWorld
 	std::vector<std::optional<Eigen::Vector3d>> m_first_seen;
 };
 
-}  // namespace mrolr::apps::detail
+}  // namespace mrolr::eval::detail

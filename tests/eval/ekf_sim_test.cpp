@@ -1,5 +1,5 @@
-// Simulator → filter → error against ground truth on maps/lab_points (issue 3).
-#include <mrolr/apps/EkfSimulation.h>
+// Simulator → filter → error against ground truth on maps/lab_points.
+#include <mrolr/eval/EkfSimulation.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-using namespace mrolr::apps;
+using namespace mrolr::eval;
 
 namespace
 {
@@ -24,9 +24,7 @@ SimulationSetup cleanSetup()
 std::vector<RunResult> monteCarlo(const SimulationSetup& s, int runs, uint64_t seed)
 {
 	const auto world = mrolr::world::World::load(kRoot + "/maps/lab_points/world.ini");
-	std::vector<RunResult> out;
-	for (int r = 0; r < runs; ++r) out.push_back(runSimulation(world, s, seed + 1000 * r));
-	return out;
+	return runMonteCarlo(world, s, runs, seed);
 }
 
 void print(const MonteCarloSummary& m)
@@ -41,7 +39,7 @@ void print(const MonteCarloSummary& m)
 
 TEST(EkfSim, ConsistencyOver50Runs)
 {
-	// Issue 3: the shipped configuration (2 % outliers, no wheel slip) and its seed, 50 runs.
+	// The shipped configuration (2 % outliers, no wheel slip) and its seed, 50 runs.
 	const SimulationSetup s = SimulationSetup::load(kRoot + "/config/ekf_sim.ini");
 	const auto m = summarise(monteCarlo(s, 50, s.sim.seed));
 	print(m);
@@ -50,7 +48,7 @@ TEST(EkfSim, ConsistencyOver50Runs)
 	EXPECT_NEAR(m.nees_hi, 3.7160, 1e-3);
 	// The innovations are consistent: mean NIS of a χ²₃ is 3.
 	EXPECT_NEAR(m.mean_nis, 3.0, 0.25);
-	// The issue's criterion: mean vehicle NEES inside its 95 % bounds for ≥ 90 % of the steps.
+	// The consistency criterion: mean vehicle NEES inside its 95 % bounds for ≥ 90 % of the steps.
 	EXPECT_GE(m.nees_inside_fraction, 0.90);
 	EXPECT_GE(m.nees_steps, m.steps - 1);
 	EXPECT_LT(m.slam_rms_position_m, 0.3 * m.dr_rms_position_m);
@@ -121,6 +119,31 @@ TEST(EkfSim, KnownFeaturesKeepZeroCovarianceThroughARun)
 	}
 	EXPECT_EQ(known, 2);
 	EXPECT_GT(r.features_added, 2);
+}
+
+// Run r of a study is seeded by its index alone: the runs of a shorter study are its first runs,
+// and every run is the single run of its seed; the progress callback counts the runs.
+TEST(EkfSim, RunOfAStudyIsTheSameWhateverTheNumberOfRuns)
+{
+	const auto world = mrolr::world::World::load(kRoot + "/maps/lab_points/world.ini");
+	std::vector<int> done;
+	const auto three = runMonteCarlo(world, cleanSetup(), 3, 21, [&](int n) { done.push_back(n); });
+	const auto two = runMonteCarlo(world, cleanSetup(), 2, 21);
+	EXPECT_EQ(done, (std::vector<int>{1, 2, 3}));
+	ASSERT_EQ(three.size(), 3u);
+	const auto last = runSimulation(world, cleanSetup(), 21 + 2000);
+	const auto sameRun = [](const RunResult& a, const RunResult& b)
+	{
+		if (a.steps.size() != b.steps.size()) return false;
+		for (size_t k = 0; k < a.steps.size(); ++k)
+			if (a.steps[k].estimate != b.steps[k].estimate || a.steps[k].truth != b.steps[k].truth)
+				return false;
+		return true;
+	};
+	EXPECT_TRUE(sameRun(three[0], two[0]));
+	EXPECT_TRUE(sameRun(three[1], two[1]));
+	EXPECT_TRUE(sameRun(three[2], last));
+	EXPECT_FALSE(sameRun(three[0], three[1]));
 }
 
 TEST(EkfSim, ConfigErrorsNameTheKey)

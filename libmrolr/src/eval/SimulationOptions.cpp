@@ -1,4 +1,4 @@
-#include <mrolr/apps/EkfSimulation.h>
+#include <mrolr/eval/EkfSimulation.h>
 #include <mrolr/util/Config.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <ostream>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -84,4 +84,4 @@ SimulationSetup SimulationSetup::load(const std::string& path)
 	return s;
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

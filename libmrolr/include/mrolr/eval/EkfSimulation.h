@@ -4,7 +4,8 @@
  * the noisy Labmate model (plus optional wheel-slip bursts), the head measures the true ideal-head
  * angles plus noise (and occasional outliers) of the feature the filter selects, within the head's
  * limits and the visibility rules; the filter maps and localises (5.7). One run gives per-step
- * truth, estimate and dead reckoning; many runs give the Monte-Carlo consistency figures. */
+ * truth, estimate and dead reckoning; many runs give the Monte-Carlo consistency figures. The
+ * simulated truth and the filter's belief meet here, so the harness lives in eval. */
 
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/base/TrajectoryPlanner.h>
@@ -16,11 +17,12 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 /** Section [simulation] of config/ekf_sim.ini. */
 struct SimulationOptions
@@ -98,7 +100,15 @@ struct RunResult
  * fewer than two waypoints. */
 RunResult runSimulation(const world::World& world, const SimulationSetup& setup, uint64_t seed);
 
-/** Monte-Carlo figures over runs (issue 3's --json keys). */
+/** Monte-Carlo runs: run r of @p runs uses the seed @p seed0 + 1000 r (so a run is the same
+ * whatever the number of runs). @p after_run, when set, is called after each run with the number
+ * of runs done. Throws as runSimulation. */
+std::vector<RunResult> runMonteCarlo(const world::World& world, const SimulationSetup& setup,
+                                     int runs, uint64_t seed0,
+                                     const std::function<void(int done)>& after_run = {});
+
+/** Monte-Carlo figures over runs (the keys of mrolr-ekf-sim --json): consistency (NEES against its
+ * χ² bounds, NIS) and errors against the truth. */
 struct MonteCarloSummary
 {
 	int runs = 0;
@@ -116,4 +126,4 @@ struct MonteCarloSummary
 
 MonteCarloSummary summarise(const std::vector<RunResult>& runs);
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-namespace mrolr::apps::detail
+namespace mrolr::eval::detail
 {
 namespace
 {
@@ -95,4 +95,4 @@ size_t SimulatedWorld::landmarkIndex(const std::string& name) const
 	throw std::out_of_range("no landmark called '" + name + "'");
 }
 
-}  // namespace mrolr::apps::detail
+}  // namespace mrolr::eval::detail

@@ -1,9 +1,9 @@
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/recog/Verification.h>
 
 #include <algorithm>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -87,4 +87,4 @@ EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOption
 	return s;
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

@@ -1,4 +1,4 @@
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/model/WireFrameSampling.h>
@@ -17,7 +17,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -216,4 +216,4 @@ EvalObject EvalSceneGenerator::truthOf(const sim::ObjectView& ov,
 	return o;
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

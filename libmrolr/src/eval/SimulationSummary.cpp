@@ -1,12 +1,12 @@
 // Monte-Carlo figures: the mean vehicle NEES per step against its χ² bounds, and error statistics.
-#include <mrolr/apps/EkfSimulation.h>
 #include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/eval/EkfSimulation.h>
 #include <mrolr/slam/Chi2.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -85,4 +85,4 @@ MonteCarloSummary summarise(const std::vector<RunResult>& runs)
 	return s;
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

@@ -1,11 +1,11 @@
-#include <mrolr/apps/RecognitionEvaluation.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 namespace
 {
@@ -109,4 +109,4 @@ double rotationErrorDeg(const Eigen::Matrix3d& R_true, const Eigen::Matrix3d& R_
 	return best;
 }
 
-}  // namespace mrolr::apps
+}  // namespace mrolr::eval

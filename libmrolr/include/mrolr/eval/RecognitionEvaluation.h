@@ -1,10 +1,11 @@
 #pragma once
-/** Evaluation of object recognition on rendered table scenes (issue 7): the simulator renders the
+/** Evaluation of object recognition on rendered table scenes: the simulator renders the
  * lab table with a few of the lab objects at random positions and yaws, seen from random vehicle
  * poses with the head fixating the table (so the objects are seen under different tilts, partly
  * hidden by each other); stereo::reconstructScene turns each pair into a scene wire-frame in the
  * left camera frame L; every model of the database is then searched in every scene and compared
- * with the simulator's truth. Everything is deterministic for a seed, so the set is fixed. */
+ * with the simulator's truth. Everything is deterministic for a seed, so the set is fixed.
+ * (The world side's truth meets the recogniser's answers only here, after the searches.) */
 
 #include <mrolr/geometry/BiSightHead.h>
 #include <mrolr/model/WireFrame.h>
@@ -21,13 +22,15 @@
 
 #include <Eigen/Geometry>
 
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace mrolr::apps
+namespace mrolr::eval
 {
 /** Section [evaluation] of config/recognition.ini. */
 struct EvaluationOptions
@@ -88,6 +91,7 @@ class EvalSceneGenerator
 	/** Scene @p k of the set (deterministic). Throws std::runtime_error when no placement fits. */
 	EvalScene make(int k);
 
+	const EvaluationOptions& options() const { return opts_; }
 	const std::map<std::string, world::ObjectShape>& shapes() const { return shapes_; }
 	/** The exact wire-frame of a model (sim::objectWireFrame), named after it. */
 	const model::WireFrame& truthWireFrame(const std::string& model) const;
@@ -151,16 +155,16 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
                       const recog::ImageVerifier* images = nullptr,
                       const recog::SupportPlane* plane = nullptr);
 
-/** The figures of a set of cases (issue 7's targets). */
+/** The figures of a set of cases. */
 struct EvalSummary
 {
-	int rate_cases = 0;       ///< present with visible_fraction >= min_visible_fraction
-	int recognised = 0;       ///< of those, found at a correct pose
-	int absent_cases = 0;     ///< model absent from the scene
-	int false_positives = 0;  ///< absent but found
-	int wrong_poses = 0;      ///< present, found at a pose beyond the error limits
+	int rate_cases = 0;             ///< present with visible_fraction >= min_visible_fraction
+	int recognised = 0;             ///< of those, found at a correct pose
+	int absent_cases = 0;           ///< model absent from the scene
+	int false_positives = 0;        ///< absent but found
+	int wrong_poses = 0;            ///< present, found at a pose beyond the error limits
 	int recognised_from_plane = 0;  ///< of the recognised, by a support-plane hypothesis
-	double rate = 0;          ///< recognised / rate_cases
+	double rate = 0;                ///< recognised / rate_cases
 	double median_rot_err_deg = -1, median_trans_err_mm = -1;  ///< over correct rate cases
 	double median_ms = 0, max_ms = 0;                          ///< per model and scene, all cases
 	double median_absent_ms = 0;                               ///< absent cases
@@ -168,4 +172,40 @@ struct EvalSummary
 
 EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOptions& opts);
 
-}  // namespace mrolr::apps
+/** The generator of the shipped set: the lab of @p opts.world, the head of config/bisight.ini,
+ * the render options of config/sim.ini [render] and the scene options of [scene] in the project
+ * file @p scene_config. Throws util::ConfigError naming file, section and key. */
+std::unique_ptr<EvalSceneGenerator> makeSceneGenerator(
+    const EvaluationOptions& opts, const std::string& scene_config = "config/model.ini");
+
+/** The simulator's exact wire-frame of every object of @p gen, in name order. */
+std::vector<model::WireFrame> truthModels(const EvalSceneGenerator& gen);
+
+/** The .wf models at @p paths (empty: every .wf of datasets/objects, in path order). Throws
+ * std::runtime_error when one is named after no object of @p gen (no truth to compare with). */
+std::vector<model::WireFrame> databaseModels(const EvalSceneGenerator& gen,
+                                             const std::vector<std::string>& paths);
+
+/** How the models are searched in each scene of the set. */
+struct SetSearchOptions
+{
+	recog::RecognitionOptions recognition;
+	/** Verify the hypotheses in the scene's stereo pair (and, with mutual_occlusion, search the
+	 * models not found again behind the found ones); unset: verification in 3D only. */
+	std::optional<recog::ImageVerificationOptions> images;
+};
+
+/** Called after the searches of each scene, in scene order, with what was found there (one result
+ * per model, in model order). Scenes are not kept: each holds its stereo pair. */
+using SceneObserver =
+    std::function<void(const EvalScene& scene, const std::vector<recog::RecognitionResult>& found)>;
+
+/** Renders scenes 0 … gen.options().scenes − 1, searches every model of @p models in each (with
+ * the scene's up direction and support plane) and compares with the truth: one case per scene and
+ * model, scene by scene in model order. Each model must be an object of @p gen. */
+std::vector<EvalCase> evaluateSet(EvalSceneGenerator& gen,
+                                  const std::vector<model::WireFrame>& models,
+                                  const SetSearchOptions& search,
+                                  const SceneObserver& observe = {});
+
+}  // namespace mrolr::eval

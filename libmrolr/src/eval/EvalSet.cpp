@@ -1,0 +1,150 @@
+// The whole set: the shipped generator, the models searched, every model in every scene.
+#include <mrolr/eval/RecognitionEvaluation.h>
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/recog/MutualOcclusion.h>
+#include <mrolr/sim/SceneBuilder.h>
+#include <mrolr/util/Cli.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace mrolr::eval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+/** The recognisers of the models and the symmetries of their objects, in model order. */
+struct Searchers
+{
+	std::vector<recog::Recognizer> recs;
+	std::vector<std::vector<double>> symmetries;
+};
+
+Searchers searchersOf(const EvalSceneGenerator& gen, const std::vector<model::WireFrame>& models,
+                      const recog::RecognitionOptions& options)
+{
+	Searchers s;
+	for (const auto& m : models)
+	{
+		s.recs.emplace_back(m, options);
+		s.symmetries.push_back(symmetryAnglesDeg(gen.truthWireFrame(m.name)));
+	}
+	return s;
+}
+
+std::vector<std::string> datasetModelPaths()
+{
+	std::vector<std::string> out;
+	for (const auto& e : fs::directory_iterator(util::requireProjectFile("datasets/objects")))
+		if (e.path().extension() == ".wf") out.push_back(e.path().string());
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per searcher, scene
+ * @p s) not found is searched again with the found ones as occluders; a find replaces its case and
+ * its entry of @p found. */
+void searchBehindFound(const Searchers& sr, const EvalScene& s, const recog::ImageVerifier& images,
+                       const EvaluationOptions& opts, std::vector<EvalCase>::iterator cases,
+                       std::vector<recog::RecognitionResult>& found)
+{
+	std::vector<const recog::Recognizer*> ptrs;
+	for (const auto& r : sr.recs) ptrs.push_back(&r);
+	const std::vector<recog::RecognitionResult> first = found;
+	const double spacing_mm = images.options().sample_spacing_mm;
+	for (size_t i = 0; i < sr.recs.size(); ++i)
+	{
+		if (first[i].found) continue;
+		const auto occluders = recog::occludersOf(ptrs, first, i, spacing_mm);
+		if (occluders.empty()) continue;
+		const recog::ImageVerifier behind = images.withOccluders(occluders);
+		EvalCase c = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, &behind, &s.plane_L);
+		EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
+		c.ms += before.ms;
+		c.result.ms = c.ms;
+		if (!c.found || recog::interpenetrates(sr.recs[i], c.result.T_OinS, occluders))
+		{
+			before.ms = before.result.ms = c.ms;  // the second search's time counts
+			continue;
+		}
+		c.result.occluders = static_cast<int>(occluders.size());
+		before = c;
+		found[i] = c.result;
+	}
+}
+
+/** Appends the cases of scene @p s to @p cases; returns what was found, one result a model. */
+std::vector<recog::RecognitionResult> evaluateScene(const Searchers& sr, const EvalScene& s,
+                                                    const SetSearchOptions& search,
+                                                    const EvaluationOptions& opts,
+                                                    std::vector<EvalCase>& cases)
+{
+	std::unique_ptr<recog::ImageVerifier> images;
+	if (search.images)
+		images = std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, *search.images);
+	std::vector<recog::RecognitionResult> found;
+	const size_t first = cases.size();
+	for (size_t i = 0; i < sr.recs.size(); ++i)
+	{
+		cases.push_back(
+		    evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, images.get(), &s.plane_L));
+		found.push_back(cases.back().result);
+	}
+	if (images && search.images->mutual_occlusion)
+		searchBehindFound(sr, s, *images, opts, cases.begin() + static_cast<std::ptrdiff_t>(first),
+		                  found);
+	return found;
+}
+}  // namespace
+
+std::unique_ptr<EvalSceneGenerator> makeSceneGenerator(const EvaluationOptions& opts,
+                                                       const std::string& scene_config)
+{
+	const auto lab = world::World::load(util::requireProjectFile(opts.world));
+	sim::RenderOptions ro;
+	ro.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile("config/sim.ini")),
+	                      "render");
+	stereo::SceneOptions so;
+	so.loadFromConfigFile(mrpt::config::CConfigFile(util::requireProjectFile(scene_config)),
+	                      "scene");
+	const geometry::BiSightHead head(
+	    geometry::BiSightOptions::fromFile(util::requireProjectFile("config/bisight.ini")));
+	return std::make_unique<EvalSceneGenerator>(opts, head, ro, so, sim::loadObjectShapes(lab));
+}
+
+std::vector<model::WireFrame> truthModels(const EvalSceneGenerator& gen)
+{
+	std::vector<model::WireFrame> out;
+	for (const auto& [name, shape] : gen.shapes()) out.push_back(gen.truthWireFrame(name));
+	return out;
+}
+
+std::vector<model::WireFrame> databaseModels(const EvalSceneGenerator& gen,
+                                             const std::vector<std::string>& paths)
+{
+	std::vector<model::WireFrame> out;
+	for (const auto& p : paths.empty() ? datasetModelPaths() : paths)
+		out.push_back(model::loadWireFrame(p));
+	for (const auto& m : out) gen.truthWireFrame(m.name);  // throws for a model of no object
+	return out;
+}
+
+std::vector<EvalCase> evaluateSet(EvalSceneGenerator& gen,
+                                  const std::vector<model::WireFrame>& models,
+                                  const SetSearchOptions& search, const SceneObserver& observe)
+{
+	const Searchers sr = searchersOf(gen, models, search.recognition);
+	std::vector<EvalCase> cases;
+	for (int k = 0; k < gen.options().scenes; ++k)
+	{
+		const EvalScene s = gen.make(k);
+		const auto found = evaluateScene(sr, s, search, gen.options(), cases);
+		if (observe) observe(s, found);
+	}
+	return cases;
+}
+
+}  // namespace mrolr::eval
