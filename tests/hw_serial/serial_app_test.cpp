@@ -5,6 +5,10 @@
 #include <mrolr/util/Cli.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
 
 using namespace mrolr;
 
@@ -63,14 +67,22 @@ TEST(SerialApp, BadArgumentsAreUsageErrors)
 	EXPECT_TRUE(parsed({"--help"}).help_shown);
 }
 
-TEST(SerialApp, EmulateServesThreeDevicesForABoundedTime)
+TEST(SerialApp, EmulateServesTheLabsDevicesAndCameraAndWritesTheTruth)
 {
-	auto app = parsed({"emulate", "--seconds", "0.2", "--json"});
+	const auto truth = std::filesystem::temp_directory_path() / "mrolr_serial_app_T.json";
+	std::filesystem::remove(truth);
+	auto app = parsed({"emulate", "--seconds", "0.2", "--json", "--truth-out", truth.string()});
 	EXPECT_EQ(app.run(), 0);
-	ASSERT_EQ(app.ports.size(), 3u);
-	for (const auto& p : app.ports) EXPECT_EQ(p.rfind("/dev/pts/", 0), 0u) << p;
+	ASSERT_EQ(app.ports.size(), 4u);
+	for (int i = 0; i < 3; ++i) EXPECT_EQ(app.ports[i].rfind("/dev/pts/", 0), 0u) << app.ports[i];
 	EXPECT_NE(app.ports[0], app.ports[1]);
+	EXPECT_EQ(app.ports[3].rfind("127.0.0.1:", 0), 0u) << app.ports[3];
 	EXPECT_EQ(app.requests_served, 0u);
+	// Nothing moved: the truth is the world's start (the lab's W0 at the origin, objects placed).
+	const auto j = nlohmann::json::parse(std::ifstream(truth));
+	EXPECT_DOUBLE_EQ(j["vehicle"]["z_m"].get<double>(), 0.0);
+	EXPECT_TRUE(j["held"].is_null());
+	EXPECT_GE(j["objects"].size(), 8u);
 }
 
 TEST(SerialApp, EmulateNamesAMissingConfigFile)

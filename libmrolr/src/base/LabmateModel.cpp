@@ -26,6 +26,10 @@ void LabmateOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg
 	requireInRange(cfg, section, "rotation_wheel_speed_mps", rotation_wheel_speed_mps, 1e-6, 10);
 	encoder_ticks_per_m = readDouble(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m);
 	requireInRange(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m, 1, 1e8);
+	footprint_length_m = readDouble(cfg, section, "footprint_length_m", footprint_length_m);
+	requireInRange(cfg, section, "footprint_length_m", footprint_length_m, 0.05, 5);
+	footprint_width_m = readDouble(cfg, section, "footprint_width_m", footprint_width_m);
+	requireInRange(cfg, section, "footprint_width_m", footprint_width_m, 0.05, 5);
 }
 
 void LabmateOptions::dumpToTextStream(std::ostream& out) const
@@ -34,7 +38,9 @@ void LabmateOptions::dumpToTextStream(std::ostream& out) const
 	    << "\nvelocity_noise_fraction  = " << velocity_noise_fraction
 	    << "\ntranslation_speed_mps    = " << translation_speed_mps
 	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps
-	    << "\nencoder_ticks_per_m      = " << encoder_ticks_per_m << "\n";
+	    << "\nencoder_ticks_per_m      = " << encoder_ticks_per_m
+	    << "\nfootprint_length_m       = " << footprint_length_m
+	    << "\nfootprint_width_m        = " << footprint_width_m << "\n";
 }
 
 LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)

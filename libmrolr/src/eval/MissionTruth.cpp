@@ -45,6 +45,7 @@ MissionTruth truthOf(const sim::Lab& lab)
 	for (const auto& [name, T] : lab.objectPoses())
 		t.objects.push_back({name, lab.modelOf(name), start.at(name), T});
 	t.held = lab.held();
+	if (const auto& c = lab.simBase().lastContact()) t.contact = ContactTruth{c->what, c->p_zx_m};
 	t.steps = lab.truth().steps;
 	t.frames = lab.truth().frames;
 	t.world = std::make_shared<world::World>(lab.options().world);

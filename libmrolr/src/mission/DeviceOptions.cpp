@@ -1,4 +1,5 @@
 // The mission's device sections (docs/mission.md "Configuration", docs/serial.md "Config keys").
+#include <mrolr/hw_serial/CameraSocketClient.h>
 #include <mrolr/mission/DeviceOptions.h>
 #include <mrolr/util/Config.h>
 
@@ -25,6 +26,26 @@ void DeviceChoice::dump(std::ostream& out) const
 	if (serial) link.dump(out);
 }
 
+namespace
+{
+/** [<s>.left] and [<s>.right] as .ini text; either missing is an error naming it. */
+std::string sectionsText(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
+{
+	std::string out;
+	for (const std::string side : {".left", ".right"})
+	{
+		std::vector<std::string> keys;
+		cfg.getAllKeys(s + side, keys);
+		if (keys.empty())
+			throw util::ConfigError(util::describeKey(cfg, s + side, "grabber_type") +
+			                        ": missing: driver = camera_sensor needs the section");
+		out += "[" + s + side + "]\n";
+		for (const auto& k : keys) out += k + " = " + cfg.read_string(s + side, k, "") + "\n";
+	}
+	return out;
+}
+}  // namespace
+
 void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 {
 	const std::string s = "device.camera";
@@ -39,8 +60,17 @@ void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 		driver = Driver::CameraSensor;
 	else
 		throw util::ConfigError(key + ": '" + d + "' is not one of sim, socket, camera_sensor");
+	if (driver == Driver::CameraSensor) sensor_sections = sectionsText(cfg, s);
 	if (driver != Driver::Socket) return;
 	address = util::readString(cfg, s, "address");
+	try
+	{
+		hw::parseCameraAddress(address, s);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw util::ConfigError(util::describeKey(cfg, s, "address") + ": " + e.what());
+	}
 	timeout_ms = static_cast<int>(util::readInt(cfg, s, "timeout_ms", timeout_ms));
 	util::requireInRange(cfg, s, "timeout_ms", timeout_ms, 10, 600000);
 }

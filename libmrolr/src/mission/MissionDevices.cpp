@@ -1,7 +1,11 @@
 // The robot's device factory: the simulator's devices or serial drivers per [device.*] section.
+#include <mrolr/hw_serial/CameraSensorStereo.h>
+#include <mrolr/hw_serial/CameraSocketClient.h>
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/MissionDevices.h>
 #include <mrolr/util/Config.h>
+
+#include <mrpt/config/CConfigFileMemory.h>
 
 namespace mrolr::mission
 {
@@ -49,7 +53,33 @@ hw::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices&
 			                        " = sim: there is no simulator to render the stereo pairs");
 		return [head = sim.head] { return head->grab(); };
 	}
-	throw util::ConfigError(o.camera.key + ": this camera driver is not available yet");
+	if (o.camera.driver == Driver::Socket)
+	{
+		std::shared_ptr<hw::CameraSocketClient> client;
+		try
+		{
+			client = std::make_shared<hw::CameraSocketClient>(o.camera.address, o.camera.timeout_ms);
+		}
+		catch (const std::exception& e)
+		{
+			throw util::ConfigError(o.camera.key + " = socket: cannot use '" + o.camera.address +
+			                        "': " + e.what());
+		}
+		camera_ = client;
+		return [client] { return client->grab(); };
+	}
+	std::shared_ptr<hw::CameraSensorStereo> cameras;
+	try
+	{
+		cameras = std::make_shared<hw::CameraSensorStereo>(
+		    mrpt::config::CConfigFileMemory(o.camera.sensor_sections), "device.camera");
+	}
+	catch (const hw::SerialDeviceError& e)
+	{
+		throw util::ConfigError(o.camera.key + " = camera_sensor: " + e.what());
+	}
+	camera_ = cameras;
+	return [cameras] { return cameras->grab(); };
 }
 
 MissionDevices::MissionDevices(const DeviceOptions& o, const SimDevices& sim)

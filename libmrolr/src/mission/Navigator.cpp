@@ -1,4 +1,5 @@
 // Waypoint navigation with EKF-SLAM or dead reckoning (thesis 5.6.3, 5.7, 7.2.1).
+#include <mrolr/mission/FootprintSweep.h>
 #include <mrolr/mission/Navigator.h>
 #include <mrolr/slam/FeatureSelection.h>
 #include <mrolr/slam/FeatureVisibility.h>
@@ -22,6 +23,17 @@ std::string where(const Eigen::Vector3d& e)
 	s.precision(2);
 	s << std::fixed << "(z " << e.x() << ", x " << e.y() << ") m";
 	return s.str();
+}
+}  // namespace
+
+namespace
+{
+/** @p goal moved onto the line of @p e's heading (its projection), with the goal's heading. */
+Eigen::Vector3d alongHeading(const Eigen::Vector3d& e, const Eigen::Vector3d& goal)
+{
+	const Eigen::Vector2d dir(std::cos(e.z()), std::sin(e.z()));
+	const Eigen::Vector2d p = e.head<2>() + dir * dir.dot(goal.head<2>() - e.head<2>());
+	return {p.x(), p.y(), goal.z()};
 }
 }  // namespace
 
@@ -58,9 +70,9 @@ void Navigator::addPlanFeatures()
 {
 	for (const auto& k : o_.plan.known_features)
 		if (vslam_)
-			vslam_->addKnownFeature(k.id, k.p_FinW, covarianceOf(k), k.patch);
+			vslam_->addKnownFeature(k.id, k.p_FinW, covarianceOf(k), k.patch, k.p_viewinW);
 		else
-			filter_.addKnownFeature(k.id, k.p_FinW, covarianceOf(k));
+			filter_.addKnownFeature(k.id, k.p_FinW, covarianceOf(k), k.p_viewinW);
 }
 
 Eigen::Vector3d Navigator::estimate()
@@ -73,14 +85,60 @@ Eigen::Matrix3d Navigator::estimateCovariance()
 	return o_.mode == NavigationMode::Slam ? filter_.vehicleCovariance() : Eigen::Matrix3d::Zero();
 }
 
+double Navigator::tableMargin()
+{
+	// The tables are where the plan says, the base where it believes: keep twice its position's
+	// standard deviation besides the fixed margin.
+	const double sigma = std::sqrt(estimateCovariance().topLeftCorner<2, 2>().eigenvalues().real().maxCoeff());
+	return kTurnMargin_m + std::min(2 * sigma, kMaxUncertaintyMargin_m);
+}
+
+bool Navigator::canTurn(const Eigen::Vector3d& xv, double slack_m)
+{
+	return distanceToTables(o_.plan.tables, xv.head<2>()) >=
+	       o_.labmate.turnRadius() + tableMargin() + slack_m;
+}
+
+namespace
+{
+/** Distances tried, shortest first, for moving straight to where the base can turn (m). */
+constexpr double kStraightSteps_m[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5};
+/** The approach point of a goal next to a table keeps this much more clearance than a turn
+ * needs, so that arriving a little off it still leaves room to turn (m). */
+constexpr double kApproachSlack_m = 0.15;
+/** Back-offs from a table on one leg before the rest is driven as planned. */
+constexpr int kMaxBackOffs = 3;
+
+Eigen::Vector2d along(const Eigen::Vector3d& xv, double d)
+{
+	return xv.head<2>() + d * Eigen::Vector2d(std::cos(xv.z()), std::sin(xv.z()));
+}
+}  // namespace
+
+std::optional<Eigen::Vector2d> Navigator::approachPoint(const Eigen::Vector3d& goal)
+{
+	if (canTurn(goal)) return std::nullopt;
+	for (double d : kStraightSteps_m)
+		if (const Eigen::Vector2d a = along(goal, -d); canTurn({a.x(), a.y(), goal.z()}, kApproachSlack_m))
+			return a;
+	return std::nullopt;
+}
+
 void Navigator::driveTo(const NamedPose& goal)
 {
 	const Eigen::Vector3d now = estimate();
-	const auto via =
-	    detourAroundTables(o_.plan.tables, {now.x(), now.y()},
-	                       {goal.xv_zxphi.x(), goal.xv_zxphi.y()}, o_.navigation.table_clearance_m);
-	driveThrough(via, {now.x(), now.y()}, o_.navigation.max_correction_legs);
-	driveStraightTo(goal.xv_zxphi, o_.navigation.max_correction_legs);
+	const auto approach = approachPoint(goal.xv_zxphi);
+	const Eigen::Vector2d last = approach ? *approach : goal.xv_zxphi.head<2>();
+	auto via = detourAroundTables(o_.plan.tables, now.head<2>(), last,
+	                              o_.navigation.table_clearance_m);
+	if (approach)  // then straight in: no turning next to the table
+	{
+		via.push_back(*approach);
+		timeline_.note("approaching " + goal.name + " straight from " +
+		               where({approach->x(), approach->y(), 0}));
+	}
+	driveThrough(via, now.head<2>(), o_.navigation.max_correction_legs);
+	driveStraightTo(goal.xv_zxphi, o_.navigation.max_correction_legs, !approach);
 	timeline_.note("reached " + goal.name);
 }
 
@@ -95,9 +153,36 @@ void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vec
 	}
 }
 
-void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs)
+std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
+                                                    const Eigen::Vector3d& goal, double reverse_m,
+                                                    bool& backing)
 {
-	int detours = 0;
+	backing = false;
+	const double margin = tableMargin();
+	auto blocked = [&](const std::vector<base::PlannedStep>& p)
+	{ return firstBlockedStep(o_.plan.tables, o_.labmate, e, p, margin).has_value(); };
+	auto plan = planMissionLeg(e, goal, model_, o_.trajectory, reverse_m);
+	if (!blocked(plan)) return plan;
+	// Next to a table: along the heading to the goal's projection, then a small turn ...
+	auto straight = planMissionLeg(e, alongHeading(e, goal), model_, o_.trajectory, 1.0);
+	if (!blocked(straight)) return straight;
+	// ... or straight back (or on) until turning there is clear.
+	for (double d : kStraightSteps_m)
+		for (double sign : {-1.0, 1.0})
+			if (const Eigen::Vector2d b = along(e, sign * d); canTurn({b.x(), b.y(), e.z()}))
+			{
+				auto move = planMissionLeg(e, {b.x(), b.y(), e.z()}, model_, o_.trajectory, 1.6);
+				if (blocked(move)) continue;
+				backing = true;
+				return move;
+			}
+	return plan;  // nothing clear from here: the bumper will say so
+}
+
+void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs,
+                                bool may_reverse)
+{
+	int detours = 0, backs = 0;
 	for (int leg = 0; leg <= correction_legs; ++leg)
 	{
 		const Eigen::Vector3d e = estimate();
@@ -105,23 +190,50 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs
 		    (e.head<2>() - goal.head<2>()).norm() < o_.navigation.waypoint_tolerance_m;
 		if (leg > 0 && close && std::abs(base::wrapAngle(e.z() - goal.z())) < 0.02) return;
 		std::vector<base::PlannedStep> plan;
+		bool backing = false;
 		{
 			ComputeTimer t(timeline_);
 			// Obstacle mode looks ahead before each translation: no reversing blind.
-			const double reverse_m = before_translation ? 0.0 : o_.navigation.reverse_max_m;
-			plan = planMissionLeg(e, goal, model_, o_.trajectory, reverse_m);
+			const double reverse_m =
+			    before_translation || !may_reverse ? 0.0 : o_.navigation.reverse_max_m;
+			plan = clearPlan(e, goal, reverse_m, backing);
+		}
+		if (backing && backs++ < kMaxBackOffs)
+		{
+			timeline_.note("backing away from the table to turn");
+			--leg;  // backing off is not a correction of its own
 		}
 		if (!executeLeg(plan, goal, detours)) leg = -1;  // round an obstacle: plan the leg anew
 	}
 }
 
+namespace
+{
+/** A translation is replanned when the estimate's heading is off the bearing to the leg's goal
+ * by more than this (rad): legs are driven closed-loop, not blind rotate–translate–rotate. */
+constexpr double kSteerTolerance_rad = 3.0 * M_PI / 180.0;
+/** ... unless the goal is this close (m): a last short step is not worth a turn. */
+constexpr double kSteerMinDistance_m = 0.1;
+
+/** True when the next translation of @p amount_m should be replanned from the estimate @p e. */
+bool offCourse(const Eigen::Vector3d& e, const Eigen::Vector3d& goal, double amount_m)
+{
+	const Eigen::Vector2d d = goal.head<2>() - e.head<2>();
+	if (d.norm() < kSteerMinDistance_m) return false;
+	const double bearing = std::atan2(d.y(), d.x()) + (amount_m < 0 ? M_PI : 0.0);
+	return std::abs(base::wrapAngle(bearing - e.z())) > kSteerTolerance_rad;
+}
+}  // namespace
+
 bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
                            int& detours)
 {
+	bool translated = false;
 	for (const auto& s : plan)
 	{
-		const bool check = before_translation && s.kind == base::PlannedStep::Kind::Translate &&
-		                   detours < max_detours_per_leg && detour_depth_ < 2;
+		const bool translation = s.kind == base::PlannedStep::Kind::Translate;
+		const bool check = before_translation && translation && detours < max_detours_per_leg &&
+		                   detour_depth_ < 2;
 		if (check)
 			if (const auto via = before_translation(estimate(), goal); !via.empty())
 			{
@@ -131,7 +243,9 @@ bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eig
 				--detour_depth_;
 				return false;
 			}
+		if (translation && translated && offCourse(estimate(), goal, s.amount)) return false;
 		execute(s);
+		translated |= translation;
 	}
 	return true;
 }

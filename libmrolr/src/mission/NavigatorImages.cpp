@@ -1,6 +1,7 @@
 // Navigation measurements from the head's stereo pairs (measurement_source = images): the vision
 // area's cycle (thesis 5.5–5.7) on the mission's filter; docs/mission.md "Measurements from
 // images".
+#include <mrolr/geometry/Frames.h>
 #include <mrolr/mission/Navigator.h>
 
 #include <chrono>
@@ -20,12 +21,44 @@ void Navigator::measureInImages(const base::WheelControl& u)
 		const double grab = grab_seconds_() - grab0;
 		timeline_.addRender(grab);
 		timeline_.addCompute(std::max(0.0, wall - grab));
+		for (const auto& f : rec.deleted) timeline_.note("feature " + f + " deleted (rule 5.7)");
 		if (!rec.measured) continue;
 		timeline_.advance(o_.navigation.measurement_time_s);
 		++image_cycles;
 		image_matched += rec.measurement.found ? 1 : 0;
 		(rec.accepted ? measurements : rejected) += 1;
+		if (rec.nis) noteNis(rec.label, *rec.nis, rec.accepted);
 	}
+}
+
+bool Navigator::acquireNamed(const std::string& label, const Eigen::Vector3d& p_aim_inW,
+                             std::string& why)
+{
+	if (!vslam_)
+	{
+		why = "not navigating from images";
+		return false;
+	}
+	ComputeTimer t(timeline_);
+	const Eigen::Isometry3d T_C0inW = geometry::T_C0inW(filter_.vehicle(), o_.bisight.head_height_m);
+	const bool ok = vslam_->acquireNamed(label, T_C0inW.inverse() * p_aim_inW, *images_head_, &why)
+	                    .has_value();
+	timeline_.advance(o_.navigation.measurement_time_s);
+	return ok;
+}
+
+std::vector<SavedFeature> Navigator::savedFeatures()
+{
+	std::vector<SavedFeature> out;
+	if (!vslam_) return out;
+	const auto map = this->map();
+	for (size_t i = 0; i < map.size(); ++i)
+	{
+		const auto& info = filter_.info(i);
+		out.push_back({map[i], vslam_->patches()[i], info.p_C0atInitInW, info.successes,
+		               info.failures});
+	}
+	return out;
 }
 
 }  // namespace mrolr::mission

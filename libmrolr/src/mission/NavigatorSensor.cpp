@@ -81,7 +81,11 @@ void Navigator::measureWithSensor()
 			filter_.recordAttempt(report.accepted[j], true);
 			noteNis(filter_.info(report.accepted[j]).label, report.nis[j], true);
 		}
-		for (size_t i : report.rejected) filter_.recordAttempt(i, false);
+		for (size_t j = 0; j < report.rejected.size(); ++j)
+		{
+			filter_.recordAttempt(report.rejected[j], false);
+			noteNis(filter_.info(report.rejected[j]).label, report.rejected_nis[j], false);
+		}
 	}
 	deleteFailingFeatures();
 }

@@ -71,14 +71,25 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	return r;
 }
 
+std::vector<double> ObjectSearch::sweepPans() const
+{
+	const auto& s = o_.search;
+	std::vector<double> pans;
+	for (double pan = s.pan_from_deg; pan <= s.pan_to_deg + 1e-9; pan += s.pan_step_deg)
+		pans.push_back(pan);
+	// Nothing recognised: look again between the first views (new pairs, other viewpoints).
+	for (double pan = s.pan_from_deg + s.pan_step_deg / 2; pan < s.pan_to_deg; pan += s.pan_step_deg)
+		pans.push_back(pan);
+	return pans;
+}
+
 SearchResult ObjectSearch::sweep(Timeline& timeline) const
 {
 	SearchResult last;
 	int views = 0;
-	const auto& s = o_.search;
-	for (double pan = s.pan_from_deg; pan <= s.pan_to_deg + 1e-9; pan += s.pan_step_deg)
+	for (double pan : sweepPans())
 	{
-		timeline.advance(s.head_move_time_s);
+		timeline.advance(o_.search.head_move_time_s);
 		last = observe(sweepAngles(pan), timeline);
 		last.views = ++views;
 		timeline.note("view at pan " + std::to_string(static_cast<int>(std::lround(pan))) +

@@ -5,6 +5,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -90,12 +91,28 @@ void readSections(const IniDocument& doc, Plan& p)
 			for (const auto& e : s.entries) p.waypoints.push_back(parseWaypoint(doc, s, e));
 		else if (s.name == "known_features")
 			for (const auto& e : s.entries) p.known_features.push_back(parseFeature(doc, s, e));
+		else if (s.name == "known_feature_views")
+			continue;  // read after every feature (readViews)
 		else if (s.name.rfind("table.", 0) == 0 && s.name.size() > 6)
 			p.tables.push_back(parseTable(doc, s, s.name.substr(6)));
 		else if (s.name != "plan")
 			throw util::IniError(doc.path + ":" + std::to_string(s.line) + " [" + s.name +
-			                     "]: unknown section (expected plan, waypoints, known_features or "
-			                     "table.NAME)");
+			                     "]: unknown section (expected plan, waypoints, known_features, "
+			                     "known_feature_views or table.NAME)");
+	}
+}
+
+void readViews(const IniDocument& doc, Plan& p)
+{
+	const IniSection* s = doc.find("known_feature_views");
+	if (!s) return;
+	for (const auto& e : s->entries)
+	{
+		auto k = std::find_if(p.known_features.begin(), p.known_features.end(),
+		                      [&](const PlanFeature& f) { return f.id == e.key; });
+		if (k == p.known_features.end()) doc.fail(*s, e, "no known feature of this id");
+		const auto v = util::numbers(doc, *s, e, 3);
+		k->p_viewinW = Eigen::Vector3d(v[0], v[1], v[2]);
 	}
 }
 
@@ -127,6 +144,7 @@ Plan Plan::fromDocument(const IniDocument& doc)
 	Plan p;
 	p.path = doc.path;
 	readSections(doc, p);
+	readViews(doc, p);
 	const IniSection& plan = requireSection(doc, "plan");
 	util::rejectUnknownKeys(doc, plan, {"route", "stations", "home"});
 	p.route = namedPoses(doc, plan, "route", p);
@@ -166,6 +184,11 @@ void Plan::save(const std::string& path) const
 		    << k.patch_file << " " << k.sigma_m.x() << " " << k.sigma_m.y() << " "
 		    << k.sigma_m.z() << "\n";
 	}
+	out << "\n# the head centre each patch was saved from, X Y Z (m)\n[known_feature_views]\n";
+	for (const auto& k : known_features)
+		if (k.p_viewinW)
+			out << k.id << " = " << k.p_viewinW->x() << " " << k.p_viewinW->y() << " "
+			    << k.p_viewinW->z() << "\n";
 	for (const auto& t : tables)
 		out << "\n[table." << t.name << "]\ncentre_m = " << t.x_m << " " << t.z_m
 		    << "\nyaw_deg = " << t.yaw_deg << "\nsize_m = " << t.length_m << " " << t.depth_m

@@ -107,4 +107,23 @@ std::vector<Eigen::Vector2d> detourAroundTables(const std::vector<PlanTable>& ta
 	return {};
 }
 
+double distanceToTables(const std::vector<PlanTable>& tables, const Eigen::Vector2d& p_zx)
+{
+	double best = std::numeric_limits<double>::infinity();
+	for (const auto& t : tables)
+	{
+		const Eigen::Vector2d l = footprintOf(t, 0).toLocal(p_zx);
+		const double dz = std::max(std::abs(l.x()) - 0.5 * t.depth_m, 0.0);
+		const double dx = std::max(std::abs(l.y()) - 0.5 * t.length_m, 0.0);
+		best = std::min(best, std::hypot(dz, dx));
+	}
+	return best;
+}
+
+bool canTurnAt(const std::vector<PlanTable>& tables, const Eigen::Vector2d& p_zx,
+               double turn_radius_m)
+{
+	return distanceToTables(tables, p_zx) >= turn_radius_m + kTurnMargin_m;
+}
+
 }  // namespace mrolr::mission

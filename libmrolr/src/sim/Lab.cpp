@@ -51,6 +51,9 @@ Lab::Lab(const LabOptions& o)
       poses_(placedObjectPoses(o.world)),
       shapes_(loadObjectShapes(o.world))
 {
+	// The base meets the walls, tables and obstacles of its world (the world must leave it room).
+	if (o.world.has_room)
+		base_.setCollisionWorld(std::make_shared<CollisionWorld>(o.world, o.base.footprint));
 	base_device_ = std::make_unique<LabBase>(*this);
 	head_ = makeHead();
 	const arm::RtxKinematics kin(o.rtx);

@@ -97,7 +97,13 @@ double SimBase::moveTruth(const base::WheelControl& moved)
 	if (!contact)
 	{
 		true_ = model_.move(from, moved);
-		odo_.bumper = bool(collisions_->touchAt(true_, kBumperTravel_m));
+		// within the bumper's travel of something: pressed, and the world side notes the touch
+		if (const auto touch = collisions_->touchAt(true_, kBumperTravel_m))
+		{
+			odo_.bumper = true;
+			if (!last_contact_ || last_contact_->what != touch->what)
+				last_contact_ = Contact{touch->what, touch->p_zx_m, true_, 1.0};
+		}
 		return 1.0;
 	}
 	true_ = contact->last_free_zxphi;

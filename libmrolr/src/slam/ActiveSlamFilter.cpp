@@ -134,6 +134,7 @@ void ActiveSlamFilter::OnGetObservationsAndDataAssociation(
 		if (!(nis <= m_gate))
 		{
 			m_report.rejected.push_back(o.feature);
+			m_report.rejected_nis.push_back(nis);
 			continue;
 		}
 		m_report.accepted.push_back(o.feature);

@@ -73,14 +73,16 @@ size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::
 }
 
 size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
-                                         const Eigen::Matrix3d& P_FF)
+                                         const Eigen::Matrix3d& P_FF,
+                                         const std::optional<Eigen::Vector3d>& p_viewinW)
 {
 	synchronise();
 	FeatureInfo info;
 	info.label = label;
 	info.known = true;
 	info.p_FinW_first = p_FinW;
-	info.p_C0atInitInW = headCentreInW(vehicleRaw(), m_options.head.constants);
+	info.p_C0atInitInW =
+	    p_viewinW ? *p_viewinW : headCentreInW(vehicleRaw(), m_options.head.constants);
 	Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, m_xkk.size() + 3);
 	rows.rightCols(3) = 0.5 * (P_FF + P_FF.transpose());
 	appendFeature(p_FinW, rows, std::move(info));

@@ -53,6 +53,7 @@ UpdateReport ActiveSlamFilter::updatePostponed(const Observation& z)
 	if (!(nis <= m_gate))
 	{
 		report.rejected.push_back(z.feature);
+		report.rejected_nis.push_back(nis);
 		return report;
 	}
 	m_tracker.update<3>(nu, H, R);

@@ -91,6 +91,7 @@ void ActiveSlamFilter::updateSequential(const std::vector<Observation>& z)
 		if (!(l.nis <= m_gate))
 		{
 			m_report.rejected.push_back(o.feature);
+			m_report.rejected_nis.push_back(l.nis);
 			continue;
 		}
 		m_report.accepted.push_back(o.feature);

@@ -1,3 +1,4 @@
+#include <mrolr/geometry/GeometryError.h>
 #include <mrolr/geometry/IdealHead.h>
 #include <mrolr/slam/FeatureSelection.h>
 #include <mrolr/slam/FeatureVisibility.h>
@@ -39,10 +40,38 @@ void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d
 }
 
 void VisualSlam::addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
-                                 const Eigen::Matrix3d& P_FF, const cv::Mat& patch)
+                                 const Eigen::Matrix3d& P_FF, const cv::Mat& patch,
+                                 const std::optional<Eigen::Vector3d>& p_viewinW)
 {
-	filter_.addKnownFeature(label, p_FinW, P_FF);
+	filter_.addKnownFeature(label, p_FinW, P_FF, p_viewinW);
 	patches_.push_back(patch.clone());
+}
+
+std::optional<size_t> VisualSlam::acquireNamed(const std::string& label,
+                                               const Eigen::Vector3d& p_aim_inC0,
+                                               StereoHeadDevice& device, std::string* why)
+{
+	try
+	{
+		device.moveTo(head_.fixate(p_aim_inC0));
+	}
+	catch (const geometry::GeometryError& e)
+	{
+		if (why) *why = std::string("cannot point the head there: ") + e.what();
+		return std::nullopt;
+	}
+	const auto& cam = head_.camera();
+	const int side = std::max(options_.known_search_box_px, options_.patch_size_px + 2);
+	const cv::Rect box(int(cam.u0_px) - side / 2, int(cam.v0_px) - side / 2, side, side);
+	const Acquisition acq = acquireFeature(device, head_, box, options_);
+	CycleRecord r;
+	if (!acq.ok || !addFeature(acq.fixation.p_GinC0, acq.patch, r, label))
+	{
+		if (why) *why = acq.ok ? "a mapped feature is already there" : acq.failure;
+		return std::nullopt;
+	}
+	spared_.push_back(label);
+	return filter_.numFeatures() - 1;
 }
 
 CycleRecord VisualSlam::step(const base::WheelControl& u, StereoHeadDevice& device,
@@ -122,13 +151,14 @@ void VisualSlam::acquireFeatures(StereoHeadDevice& device, CycleRecord& r)
 	}
 }
 
-bool VisualSlam::addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r)
+bool VisualSlam::addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r,
+                            const std::string& name)
 {
 	const Eigen::Vector3d h = geometry::idealHeadMeasure(p_GinC0, head_.options().interocular_m);
 	const auto init =
 	    slam::initialiseFromMeasurement(filter_.vehicle(), h, filter_.options().head.constants);
 	if (isDuplicate(init.p_FinW)) return false;
-	const std::string label = "F" + std::to_string(next_label_++);
+	const std::string label = name.empty() ? "F" + std::to_string(next_label_++) : name;
 	filter_.initialiseFeature(label, h);
 	patches_.push_back(patch.clone());
 	r.added.push_back(label);
@@ -187,6 +217,8 @@ void VisualSlam::applyMeasurement(CycleRecord& r)
 		const slam::UpdateReport rep =
 		    filter_.update({slam::Observation{r.feature, r.measurement.h}});
 		r.accepted = !rep.accepted.empty();
+		if (!rep.nis.empty()) r.nis = rep.nis.front();
+		if (!rep.rejected_nis.empty()) r.nis = rep.rejected_nis.front();
 	}
 	filter_.recordAttempt(r.feature, r.accepted);
 }
@@ -195,7 +227,9 @@ void VisualSlam::deleteFailed(CycleRecord& r)
 {
 	for (size_t i = filter_.numFeatures(); i-- > 0;)
 	{
-		if (filter_.info(i).known || !filter_.shouldDelete(i)) continue;
+		const auto& label = filter_.info(i).label;
+		const bool spared = std::find(spared_.begin(), spared_.end(), label) != spared_.end();
+		if (filter_.info(i).known || spared || !filter_.shouldDelete(i)) continue;
 		r.deleted.push_back(filter_.info(i).label);
 		filter_.deleteFeature(i);
 		patches_.erase(patches_.begin() + static_cast<long>(i));

@@ -1,8 +1,11 @@
 #pragma once
-/** The simulated lab's devices served on pseudo-terminals (hw::PtyEmulator around hw::BaseHandler,
- * HeadHandler, ArmHandler), so that a mission with `driver = serial` runs through real serial I/O
- * (`mrolr-mission --serial-emulation`, `mrolr-serial emulate`; docs/mission.md "Hardware path").
- * Faults can be injected per device, also while the mission runs. */
+/** The simulated lab's devices served as a real robot's are: the base, head and arm on
+ * pseudo-terminals (hw::PtyEmulator around hw::BaseHandler, HeadHandler, ArmHandler) and the head's
+ * stereo camera on a local TCP socket (hw::CameraServer), so that a mission with `driver = serial`
+ * and `[device.camera] driver = socket` runs through real I/O (`mrolr-mission --serial-emulation`,
+ * `mrolr-serial emulate`; docs/mission.md "Hardware path"). Faults can be injected per serial
+ * device, also while the mission runs. */
+#include <mrolr/hw_serial/CameraServer.h>
 #include <mrolr/hw_serial/DeviceEmulator.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/sim/Lab.h>
@@ -18,18 +21,21 @@ class SerialEmulation
 	 * @p faults. */
 	explicit SerialEmulation(sim::Lab& lab, const hw::FaultOptions& faults = {});
 	~SerialEmulation();
-	/** Switches every device of @p o to `driver = serial` on its pseudo-terminal; link timeouts
-	 * and retries already configured for serial are kept, otherwise @p defaults are used. */
+	/** Switches every device of @p o to `driver = serial` on its pseudo-terminal and the camera
+	 * to the socket; link timeouts and retries already configured for serial are kept,
+	 * otherwise @p defaults are used. */
 	void useIn(mission::MissionOptions& o, const hw::LinkOptions& defaults = {}) const;
 	hw::PtyEmulator& base() { return *base_; }
 	hw::PtyEmulator& head() { return *head_; }
 	hw::PtyEmulator& arm() { return *arm_; }
+	hw::CameraServer& camera() { return *camera_; }
 
  private:
 	hw::BaseHandler base_handler_;
 	hw::HeadHandler head_handler_;
 	hw::ArmHandler arm_handler_;
 	std::unique_ptr<hw::PtyEmulator> base_, head_, arm_;
+	std::unique_ptr<hw::CameraServer> camera_;
 };
 
 }  // namespace mrolr::apps

@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <iosfwd>
 #include <string>
 
@@ -39,6 +40,10 @@ struct LabmateOptions
 	double rotation_wheel_speed_mps = 0.05;  ///< |v1| = |v2| for rotations in place
 	/** Optional: wheel-encoder counts per metre of wheel travel (the odometry's calibration). */
 	double encoder_ticks_per_m = 20000;
+	/** Optional: the base's footprint, a rectangle centred on the axle, length along the heading
+	 * and width (m), as measured once; turning in place sweeps a disc of half its diagonal. */
+	double footprint_length_m = 0.8, footprint_width_m = 0.7;
+	double turnRadius() const { return 0.5 * std::hypot(footprint_length_m, footprint_width_m); }
 
 	/** Reads every key above; errors name file, section and key (mrolr::util::ConfigError). */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

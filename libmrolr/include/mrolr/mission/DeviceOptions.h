@@ -41,7 +41,10 @@ struct CameraChoice
 	Driver driver = Driver::Sim;
 	std::string address;   ///< socket: "127.0.0.1:PORT"
 	int timeout_ms = 5000;  ///< socket: no pair within this is a timeout
-	std::string key;        ///< "<file> [device.camera] driver", for errors
+	/** camera_sensor: the sections [device.camera.left] and [device.camera.right] as .ini text
+	 * (CCameraSensor's own keys), opened when the devices are built. */
+	std::string sensor_sections;
+	std::string key;  ///< "<file> [device.camera] driver", for errors
 	/** Reads [device.camera] when present; absent, the camera is the simulator's. */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg);
 	void dump(std::ostream& out) const;

@@ -42,6 +42,15 @@ struct MappedLandmark
 	bool known = false;
 };
 
+/** A mapped feature with what a saved map needs: its patch, viewpoint and record (images only). */
+struct SavedFeature
+{
+	MappedLandmark landmark;
+	cv::Mat patch;
+	Eigen::Vector3d p_viewinW = Eigen::Vector3d::Zero();  ///< head centre when it was first seen
+	int successes = 0, failures = 0;                     ///< measurement attempts (5.7)
+};
+
 /** One measurement's consistency: its normalised innovation squared against χ²₃. */
 struct NisRecord
 {
@@ -87,6 +96,11 @@ class Navigator
 	Eigen::Matrix3d estimateCovariance();
 	const std::vector<PathSample>& path() const { return path_; }
 	std::vector<MappedLandmark> map();
+	/** Images only: every mapped feature with its patch and record. */
+	std::vector<SavedFeature> savedFeatures();
+	/** Images only: a feature named @p label acquired where the head is pointed at @p p_aim_inW
+	 * (W, m), as an operator points it (5.6.2); false (and @p why) when it was not locked on. */
+	bool acquireNamed(const std::string& label, const Eigen::Vector3d& p_aim_inW, std::string& why);
 	const std::vector<NisRecord>& nis() const { return nis_; }
 	/** Called after every step with the sample just recorded (progress, rawlog). */
 	std::function<void(const PathSample&)> on_step;
@@ -106,11 +120,23 @@ class Navigator
 
  private:
 	void addPlanFeatures();
+	/** The leg from @p e to @p goal whose swept footprint keeps clear of the plan's tables: the
+	 * planned one, else along the heading to the goal's projection, else straight back until
+	 * turning is clear (@p backing set); the planned one when nothing is clear. */
+	std::vector<base::PlannedStep> clearPlan(const Eigen::Vector3d& e, const Eigen::Vector3d& goal,
+	                                         double reverse_m, bool& backing);
+	/** A point @p goal's heading leads straight into from where turning is clear, if any. */
+	std::optional<Eigen::Vector2d> approachPoint(const Eigen::Vector3d& goal);
+	/** True when turning in place at @p xv keeps tableMargin() (and @p slack_m) from the tables. */
+	bool canTurn(const Eigen::Vector3d& xv, double slack_m = 0);
+	/** Clearance kept from the plan's tables: kTurnMargin_m and twice the position's σ. */
+	double tableMargin();
 	/** Drives through @p via (z, x in W), arriving at each in the direction of travel. */
 	void driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vector2d from,
 	                  int correction_legs);
-	/** Rotate–translate–rotate to @p goal, repeated up to @p correction_legs times. */
-	void driveStraightTo(const Eigen::Vector3d& goal, int correction_legs);
+	/** Rotate–translate–rotate to @p goal, repeated up to @p correction_legs times; backwards
+	 * to a goal close behind only when @p may_reverse (not on a straight approach to a table). */
+	void driveStraightTo(const Eigen::Vector3d& goal, int correction_legs, bool may_reverse = true);
 	/** Executes @p plan; false when a detour was driven instead of the rest of it. */
 	bool executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
 	                int& detours);
@@ -162,5 +188,18 @@ std::vector<base::PlannedStep> planMissionLeg(const Eigen::Vector3d& from,
 std::vector<Eigen::Vector2d> detourAroundTables(const std::vector<PlanTable>& tables,
                                                 const Eigen::Vector2d& from,
                                                 const Eigen::Vector2d& to, double clearance_m);
+
+/** Distance (m) from @p p_zx (z, x in W) to the nearest table footprint of @p tables (0 inside;
+ * infinity without tables). */
+double distanceToTables(const std::vector<PlanTable>& tables, const Eigen::Vector2d& p_zx);
+
+/** True when the base turning in place at @p p_zx sweeps a disc of @p turn_radius_m that keeps
+ * kTurnMargin_m from every table. */
+bool canTurnAt(const std::vector<PlanTable>& tables, const Eigen::Vector2d& p_zx,
+               double turn_radius_m);
+/** Kept between a table and the disc the base sweeps when it turns in place (m), besides twice
+ * the position's standard deviation up to kMaxUncertaintyMargin_m. */
+constexpr double kTurnMargin_m = 0.05;
+constexpr double kMaxUncertaintyMargin_m = 0.1;
 
 }  // namespace mrolr::mission

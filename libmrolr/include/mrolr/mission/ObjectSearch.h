@@ -1,7 +1,8 @@
 #pragma once
 /** The object search at a station (thesis 6.4, 7.2.2): the head looks down at the table and pans
- * from pan_from_deg to pan_to_deg; each view gives a scene wire-frame in the left camera L (mm)
- * and the target model is sought in it; the first view that recognises ends the sweep. Where a
+ * from pan_from_deg to pan_to_deg, then looks again between those views; each view gives a scene
+ * wire-frame in the left camera L (mm) and the target model is sought in it; the first view that
+ * recognises ends the sweep. Where a
  * view's scene comes from is the mission's choice (a ViewSource): reconstructed from the head's
  * stereo pair, or a simulated scene sensor in tests. */
 #include <mrolr/geometry/BiSightHead.h>
@@ -56,6 +57,9 @@ class ObjectSearch
 	geometry::HeadAngles fixationAngles(const Eigen::Isometry3d& T_OinC0_mm) const;
 	/** One recognition in one view; fills every field of the result but views. */
 	SearchResult observe(const geometry::HeadAngles& angles, Timeline& timeline) const;
+	/** The sweep's pans (deg): pan_from_deg to pan_to_deg in pan_step_deg, then, should none of
+	 * those recognise, once more half a step between them. */
+	std::vector<double> sweepPans() const;
 	/** The whole sweep; stops at the first view that recognises. */
 	SearchResult sweep(Timeline& timeline) const;
 	const geometry::BiSightHead& head() const { return head_; }

@@ -16,6 +16,8 @@
  * W0 = 0 0 0              # z_m x_m phi_deg
  * [known_features]
  * fire_sign = 1.0 1.6 5.99 patches/fire_sign.png 0.004 0.004 0.02   # X Y Z PNG σX σY σZ
+ * [known_feature_views]   # optional
+ * fire_sign = 0.0 1.0 0.0  # the head centre the patch was saved from, X Y Z
  * [table.main]
  * centre_m = 0.0 1.5      # x z
  * yaw_deg = 0
@@ -28,6 +30,7 @@
 #include <opencv2/core.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +62,10 @@ struct PlanFeature
 	Eigen::Vector3d sigma_m = Eigen::Vector3d::Zero();  ///< standard deviations of X, Y, Z
 	std::string patch_file;                             ///< as written in the plan
 	cv::Mat patch;                                      ///< 8-bit grey
+	/** Optional, `[known_feature_views] id = X Y Z`: the head centre in W the patch was saved
+	 * from (thesis 5.6.2 stores "the robot's position" with a known feature); the 5.2.1
+	 * visibility rules refer to it. Absent: the start pose's head centre. */
+	std::optional<Eigen::Vector3d> p_viewinW;
 };
 
 /** `--set plan.SECTION.KEY=VALUE` (or `plan.KEY=VALUE` for [plan]): one override. */

@@ -51,8 +51,9 @@ class SimBase : public hw::BaseDevice
 	 * again). Throws std::invalid_argument, naming what it overlaps, if the base's true pose
 	 * already overlaps a wall, table or obstacle. */
 	void setCollisionWorld(std::shared_ptr<const CollisionWorld> world);
-	/** The latest step that was stopped by a contact; kept after the bumper releases. nullopt
-	 * until the base first hits something. */
+	/** The latest contact: a step stopped by it, or a step that ended within the bumper's travel
+	 * of something (free_fraction 1); kept after the bumper releases. nullopt until the base
+	 * first touches something. */
 	const std::optional<Contact>& lastContact() const { return last_contact_; }
 	/** Steps stopped by a contact so far. */
 	int contactsSoFar() const { return contacts_total_; }

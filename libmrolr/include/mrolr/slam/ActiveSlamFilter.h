@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct UpdateReport
 	std::vector<size_t> accepted;  ///< feature indices used to update the filter
 	std::vector<size_t> rejected;  ///< feature indices rejected by the χ² gate
 	std::vector<double> nis;       ///< NIS of each accepted observation
+	std::vector<double> rejected_nis;  ///< NIS of each rejected observation
 };
 
 class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
@@ -67,9 +69,12 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	/** A known feature at p_FinW with zero covariance and cross-covariances (5.6.2). */
 	size_t addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW);
 	/** A known feature from a saved map (5.6.2): at p_FinW with covariance @p P_FF (m²), not
-	 * correlated with the vehicle or the other features; never deleted by the 5.7 rule. */
+	 * correlated with the vehicle or the other features; never deleted by the 5.7 rule. Its
+	 * patch was saved from the head centre @p p_viewinW (default: where the head is now), the
+	 * viewpoint of the 5.2.1 visibility rules. */
 	size_t addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
-	                       const Eigen::Matrix3d& P_FF);
+	                       const Eigen::Matrix3d& P_FF,
+	                       const std::optional<Eigen::Vector3d>& p_viewinW = std::nullopt);
 	/** A new feature from its first measurement h (eqs 5.46–5.48). Returns its index. */
 	size_t initialiseFeature(const std::string& label, const Eigen::Vector3d& h);
 	/** Removes feature @p i from x and P (eq 5.49); later indices shift down by one. */

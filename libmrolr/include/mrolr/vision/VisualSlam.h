@@ -44,6 +44,7 @@ struct CycleRecord
 	double vs = 0;                            ///< its innovation volume Vs (eq 5.147), rad³
 	FeatureMeasurement measurement;           ///< ellipses, matches, scores, measured h
 	bool accepted = false;                    ///< matched and passed the χ² gate
+	std::optional<double> nis;                ///< its NIS (eq 5.36) when it was matched
 	std::vector<std::string> added, deleted;  ///< map changes in this cycle
 	/** The head turned to another feature than the last one measured (5.7). */
 	bool saccade = false;
@@ -66,9 +67,19 @@ class VisualSlam
 	/** A known feature (5.6.2) at @p p_FinW (W, metres) with its saved patch. */
 	void addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
 	                     const cv::Mat& patch);
-	/** The same with the covariance @p P_FF (m²) of a saved map's feature. */
+	/** The same with the covariance @p P_FF (m²) of a saved map's feature, whose patch was saved
+	 * with the head centre at @p p_viewinW (the viewpoint the 5.2.1 visibility rules refer to). */
 	void addKnownFeature(const std::string& label, const Eigen::Vector3d& p_FinW,
-	                     const Eigen::Matrix3d& P_FF, const cv::Mat& patch);
+	                     const Eigen::Matrix3d& P_FF, const cv::Mat& patch,
+	                     const std::optional<Eigen::Vector3d>& p_viewinW = std::nullopt);
+
+	/** A feature named @p label acquired where the head is pointed, as an operator points it
+	 * (5.6.2): the head fixates @p p_aim_inC0 (C0, m), the best Shi–Tomasi patch within
+	 * [vision] known_search_box_px of the image centre is locked on (5.3) and initialised from
+	 * its triangulation; the 5.7 deletion rule spares it. Returns its index, or nothing when it
+	 * could not be locked on (@p why). */
+	std::optional<size_t> acquireNamed(const std::string& label, const Eigen::Vector3d& p_aim_inC0,
+	                                   StereoHeadDevice& device, std::string* why = nullptr);
 
 	/** One cycle after the base moved by @p u (dt_s = 0: no motion, measure only). @p upcoming:
 	 * the next planned controls, for the saccade decision (selection = saccade). */
@@ -101,8 +112,10 @@ class VisualSlam
  private:
 	void acquireFeatures(StereoHeadDevice& device, CycleRecord& r);
 	void acquireInFrame(const StereoImages& images, CycleRecord& r);
-	/** Adds the feature triangulated at @p p_GinC0 with @p patch unless a mapped one is there. */
-	bool addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r);
+	/** Adds the feature triangulated at @p p_GinC0 with @p patch unless a mapped one is there
+	 * (label: "F<n>" when empty). */
+	bool addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r,
+	                const std::string& label = "");
 	CycleRecord measureInFrame(size_t i, const StereoImages& images);
 	void applyMeasurement(CycleRecord& r);
 	bool isDuplicate(const Eigen::Vector3d& p_FinW);
@@ -119,6 +132,7 @@ class VisualSlam
 	std::vector<cv::Mat> patches_;
 	base::LabmateModel model_;
 	int added_ = 0, deleted_ = 0, next_label_ = 1;
+	std::vector<std::string> spared_;  ///< named features the 5.7 deletion rule keeps
 	std::string tracked_;  ///< label of the feature the head fixates now
 	Eigen::Vector3d head_h_ = Eigen::Vector3d::Zero();  ///< its ideal-head angles (eq 5.40), rad
 	std::string pending_;  ///< selection = saccade: the feature the head is moving to

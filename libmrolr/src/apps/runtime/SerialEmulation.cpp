@@ -25,6 +25,7 @@ SerialEmulation::SerialEmulation(sim::Lab& lab, const hw::FaultOptions& faults)
 	base_ = std::make_unique<hw::PtyEmulator>(base_handler_, faults);
 	head_ = std::make_unique<hw::PtyEmulator>(head_handler_, faults);
 	arm_ = std::make_unique<hw::PtyEmulator>(arm_handler_, faults);
+	camera_ = std::make_unique<hw::CameraServer>([&lab] { return lab.head().grab(); });
 }
 
 SerialEmulation::~SerialEmulation() = default;
@@ -34,6 +35,9 @@ void SerialEmulation::useIn(mission::MissionOptions& o, const hw::LinkOptions& d
 	useSerial(o.devices.base, base_->slavePath(), defaults);
 	useSerial(o.devices.head, head_->slavePath(), defaults);
 	useSerial(o.devices.arm, arm_->slavePath(), defaults);
+	o.devices.camera.driver = mission::CameraChoice::Driver::Socket;
+	o.devices.camera.address = camera_->address();
+	o.devices.camera.key = "[device.camera] driver (serial emulation)";
 }
 
 }  // namespace mrolr::apps

@@ -49,10 +49,15 @@ void SerialApp::initialize(const std::vector<std::string>& args)
 	TCLAP::ValueArg<int> delay("", "delay-ms", "emulate: reply delay", false, 0, "N", cmd);
 	TCLAP::ValueArg<double> drop("", "drop-probability", "emulate: chance to lose each reply byte",
 	                             false, 0, "P", cmd);
-	TCLAP::ValueArg<std::string> sim("", "sim", "simulated devices (.ini)", false,
-	                                 MROLR_SOURCE_DIR "/config/sim.ini", "FILE", cmd);
-	TCLAP::ValueArg<std::string> lab("", "labmate", "base model (.ini, [labmate])", false,
-	                                 MROLR_SOURCE_DIR "/config/labmate.ini", "FILE", cmd);
+	TCLAP::ValueArg<std::string> sim(
+	    "", "sim", "emulate: mission file whose simulator sections build the lab", false,
+	    MROLR_SOURCE_DIR "/config/mission_sim.ini", "FILE", cmd);
+	TCLAP::ValueArg<std::string> world("", "world",
+	                                   "emulate: the world (default [simulator] world_file)", false,
+	                                   "", "W.ini", cmd);
+	TCLAP::ValueArg<std::string> truth("", "truth-out",
+	                                   "emulate: write the truth here at the end (T.json)", false,
+	                                   "", "FILE", cmd);
 	TCLAP::ValueArg<int> baud_arg("", "baud", "send: line speed", false, 9600, "B", cmd);
 	TCLAP::ValueArg<int> tmo("", "timeout-ms", "send: reply timeout per attempt", false, 500, "T",
 	                         cmd);
@@ -72,7 +77,7 @@ void SerialApp::initialize(const std::vector<std::string>& args)
 	}
 	command = mode.getValue(), json = json_arg.getValue(), seconds = sec.getValue();
 	faults.reply_delay_ms = delay.getValue(), faults.drop_byte_probability = drop.getValue();
-	sim_file = sim.getValue(), labmate_file = lab.getValue();
+	sim_file = sim.getValue(), world_file = world.getValue(), truth_out = truth.getValue();
 	baud = baud_arg.getValue(), timeout_ms = tmo.getValue(), retries = rtr.getValue();
 	takePositionals(*this, rest.getValue());
 	checkRanges(*this);

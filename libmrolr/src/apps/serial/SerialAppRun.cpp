@@ -1,17 +1,18 @@
 #include <mrolr/apps/SerialApp.h>
+#include <mrolr/apps/SerialEmulation.h>
+#include <mrolr/apps/StopSignals.h>
+#include <mrolr/eval/MissionTruth.h>
 #include <mrolr/hw_serial/SerialClient.h>
 #include <mrolr/hw_serial/SerialPortTransport.h>
-#include <mrolr/sim/SimArm.h>
-#include <mrolr/sim/SimBase.h>
-#include <mrolr/sim/SimHead.h>
+#include <mrolr/sim/Lab.h>
+#include <mrolr/util/Config.h>
 
 #include <mrpt/config/CConfigFile.h>
 
 #include <nlohmann/json.hpp>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <thread>
@@ -20,56 +21,26 @@ namespace mrolr::apps
 {
 namespace
 {
-std::atomic<bool> g_interrupted{false};
-
-void onSignal(int)
-{
-	g_interrupted = true;
-}
-
 mrpt::config::CConfigFile openConfig(const std::string& file)
 {
-	if (!std::ifstream(file)) throw std::runtime_error(file + ": cannot open the config file");
+	if (!std::ifstream(file)) throw util::ConfigError(file + ": cannot open the config file");
 	return mrpt::config::CConfigFile(file);
 }
 
-/** The three simulated devices; the head renders an empty scene (its images are not served). */
-struct SimDevices
+bool keepRunning(double seconds, std::chrono::steady_clock::time_point start,
+                 const StopSignals& signals, StopSignals& flag)
 {
-	base::LabmateModel model;
-	sim::SimBase base;
-	geometry::BiSightHead bisight;
-	sim::StereoRenderer renderer{bisight, sim::RenderOptions{}};
-	mrpt::opengl::COpenGLScene scene;
-	sim::SimHead head;
-	std::map<std::string, Eigen::Isometry3d> objects;
-	sim::SimArm arm;
-
-	template <typename O>
-	static O load(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
-	{
-		O o;
-		o.loadFromConfigFile(cfg, section);
-		return o;
-	}
-	SimDevices(const mrpt::config::CConfigFileBase& sim, const mrpt::config::CConfigFileBase& lab)
-	    : model(load<base::LabmateOptions>(lab, "labmate")),
-	      base(model, load<sim::SimBaseOptions>(sim, "sim_base")),
-	      head(
-	          renderer, scene, [] { return Eigen::Isometry3d::Identity(); },
-	          load<sim::SimHeadOptions>(sim, "sim_head")),
-	      arm([](const hw::ArmJoints&) { return Eigen::Isometry3d::Identity(); },
-	          load<sim::SimArmOptions>(sim, "sim_arm"), objects)
-	{
-	}
-};
-
-bool keepRunning(double seconds, std::chrono::steady_clock::time_point start)
-{
-	if (g_interrupted) return false;
+	if (flag.flag() || signals.received()) return false;
 	if (seconds <= 0) return true;
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
 	       seconds;
+}
+
+void writeTruth(const sim::Lab& lab, const std::string& path)
+{
+	std::ofstream out(path);
+	out << eval::truthJson(eval::truthOf(lab)).dump(2) << "\n";
+	if (!out) throw std::runtime_error(path + ": cannot write the truth");
 }
 }  // namespace
 
@@ -81,28 +52,29 @@ int SerialApp::run()
 
 int SerialApp::runEmulate()
 {
-	SimDevices sim(openConfig(sim_file), openConfig(labmate_file));
-	hw::BaseHandler bh(sim.base);
-	hw::HeadHandler hh(sim.head);
-	hw::ArmHandler ah(sim.arm);
-	hw::PtyEmulator eb(bh, faults), eh(hh, faults), ea(ah, faults);
-	ports = {eb.slavePath(), eh.slavePath(), ea.slavePath()};
+	const auto cfg = openConfig(sim_file);
+	const auto dir = std::filesystem::path(sim_file).parent_path().string();
+	sim::Lab lab(sim::LabOptions::load(cfg, dir, world_file));
+	SerialEmulation emulation(lab, faults);
+	ports = {emulation.base().slavePath(), emulation.head().slavePath(),
+	         emulation.arm().slavePath(), emulation.camera().address()};
 	if (json)
-		std::cout << nlohmann::json{{"base", ports[0]}, {"head", ports[1]}, {"arm", ports[2]}}
+		std::cout << nlohmann::json{{"base", ports[0]}, {"head", ports[1]}, {"arm", ports[2]},
+		                            {"camera", ports[3]}}
 		          << std::endl;
 	else
 		std::cout << "base " << ports[0] << "\nhead " << ports[1] << "\narm " << ports[2]
-		          << std::endl;
-	g_interrupted = false;
-	std::signal(SIGINT, onSignal);
-	std::signal(SIGTERM, onSignal);
+		          << "\ncamera " << ports[3] << std::endl;
+	StopSignals signals;
 	const auto start = std::chrono::steady_clock::now();
-	while (keepRunning(seconds, start)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
-	requests_served =
-	    eb.emulator().executed() + eh.emulator().executed() + ea.emulator().executed();
+	while (keepRunning(seconds, start, signals, signals))
+		std::this_thread::sleep_for(std::chrono::milliseconds(20));
+	requests_served = emulation.base().emulator().executed() +
+	                  emulation.head().emulator().executed() +
+	                  emulation.arm().emulator().executed();
+	if (!truth_out.empty()) writeTruth(lab, truth_out);
 	return 0;
 }
-
 int SerialApp::runSend()
 {
 	hw::LinkOptions link;
