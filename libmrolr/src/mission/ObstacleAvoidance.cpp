@@ -82,11 +82,30 @@ bool ObstacleAvoidance::onKnownTable(const Eigen::Vector3d& p_inB) const
 	return false;
 }
 
+namespace
+{
+/** A clear look ahead covers the steps that stay this much short of its far end (m) ... */
+constexpr double kLookCoverSlack_m = 0.3;
+/** ... on about the same heading (rad). */
+constexpr double kLookCoverTurn_rad = 10.0 * M_PI / 180.0;
+}  // namespace
+
+bool ObstacleAvoidance::coveredByLastLook(const Eigen::Vector3d& xv) const
+{
+	if (!last_clear_) return false;
+	const Eigen::Vector2d d = xv.head<2>() - last_clear_->head<2>();
+	const Eigen::Vector2d dir(std::cos(last_clear_->z()), std::sin(last_clear_->z()));
+	return std::abs(std::remainder(xv.z() - last_clear_->z(), 2 * M_PI)) < kLookCoverTurn_rad &&
+	       d.dot(dir) >= -0.05 && d.norm() < last_clear_length_m_ - kLookCoverSlack_m;
+}
+
 std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
                                                       const Eigen::Vector3d& goal)
 {
+	if (coveredByLastLook(xv)) return {};
 	++report_.checks;
 	xv_ = xv;
+	last_clear_.reset();
 	try
 	{
 		const auto ahead = look(0);
@@ -97,7 +116,11 @@ std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
 		e.time_s = timeline_.simulatedSeconds();
 		e.xv_estimate = xv;
 		e.sighting = obstacleAhead(ahead, length, o_, to_goal <= o_.range_m);
-		if (!e.sighting.blocked) return {};
+		if (!e.sighting.blocked)
+		{
+			last_clear_ = xv, last_clear_length_m_ = length;
+			return {};
+		}
 		lookAround(e, ahead);
 		for (const auto& v : e.detour.via_zx) e.via_zx_inW.push_back(baseToWorld(xv, v));
 		note(e);

@@ -1,6 +1,7 @@
 #pragma once
-/** Obstacle mode of the mission (thesis 5.8.1.2, fig 5.8.1.4). Before each translation step the
- * head tilts down (pan 0, tilt_deg) and grabs a stereo pair; ObstacleStereo turns it into points
+/** Obstacle mode of the mission (thesis 5.8.1.2, fig 5.8.1.4). Before a translation step the head
+ * tilts down (pan 0, tilt_deg) and grabs a stereo pair (unless a clear look from about the same
+ * heading still covers the step); ObstacleStereo turns it into points
  * above the floor in the base frame B. An obstacle within range_m ahead in the robot's corridor
  * (and not beyond the leg's goal) makes the head look left and right (±side_pan_deg) for free
  * space, and two waypoints round the obstacle on the free side are inserted (ObstacleDetour.h).
@@ -14,6 +15,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,10 @@ class ObstacleAvoidance
 	double table_margin_m_ = 0;
 	Eigen::Vector3d xv_ = Eigen::Vector3d::Zero();  ///< estimate at the current check
 	bool onKnownTable(const Eigen::Vector3d& p_inB) const;
+	/** True when the last clear look ahead still covers a step from @p xv. */
+	bool coveredByLastLook(const Eigen::Vector3d& xv) const;
+	std::optional<Eigen::Vector3d> last_clear_;  ///< where the last clear look was made
+	double last_clear_length_m_ = 0;           ///< how far ahead it was clear
 };
 
 /** report.json's "obstacle" block: looks, checks, failed looks and every obstacle seen (B, m) with
