@@ -259,6 +259,8 @@ void Mission::Impl::finish()
 		r.features_deleted = nav->deleted_features;
 		r.image_searches = nav->image_cycles;
 		r.image_matches = nav->image_matched;
+		r.jointly_rejected = nav->jointly_rejected;
+		r.lost_events = nav->lost_events, r.recoveries = nav->recoveries;
 	}
 	if (nav_head) r.navigation_pairs = nav_head->grabs();
 	r.returned_home = nav && !r.stopped && r.home_estimate_error_m <= o.home_tolerance_m;

@@ -108,6 +108,11 @@ constexpr double kStraightSteps_m[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1
 constexpr double kApproachSlack_m = 0.15;
 /** Back-offs from a table on one leg before the rest is driven as planned. */
 constexpr int kMaxBackOffs = 3;
+/** Next to a table the base moves straight to a goal's projection only when its heading is this
+ * close to the goal's (rad); otherwise it first moves to where it can turn. */
+constexpr double kStraightAlign_rad = 5.0 * M_PI / 180.0;
+/** Replans of one leg for being off course before the rest is driven as planned. */
+constexpr int kMaxSteerReplans = 12;
 
 Eigen::Vector2d along(const Eigen::Vector3d& xv, double d)
 {
@@ -163,9 +168,12 @@ std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
 	{ return firstBlockedStep(o_.plan.tables, o_.labmate, e, p, margin).has_value(); };
 	auto plan = planMissionLeg(e, goal, model_, o_.trajectory, reverse_m);
 	if (!blocked(plan)) return plan;
-	// Next to a table: along the heading to the goal's projection, then a small turn ...
-	auto straight = planMissionLeg(e, alongHeading(e, goal), model_, o_.trajectory, 1.0);
-	if (!blocked(straight)) return straight;
+	// Next to a table, already facing the goal's heading: along it to the goal's projection ...
+	if (std::abs(base::wrapAngle(goal.z() - e.z())) < kStraightAlign_rad)
+	{
+		auto straight = planMissionLeg(e, alongHeading(e, goal), model_, o_.trajectory, 1.0);
+		if (!blocked(straight)) return straight;
+	}
 	// ... or straight back (or on) until turning there is clear.
 	for (double d : kStraightSteps_m)
 		for (double sign : {-1.0, 1.0})
@@ -183,6 +191,7 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs
                                 bool may_reverse)
 {
 	int detours = 0, backs = 0;
+	steer_replans_ = 0;
 	for (int leg = 0; leg <= correction_legs; ++leg)
 	{
 		const Eigen::Vector3d e = estimate();
@@ -228,7 +237,6 @@ bool offCourse(const Eigen::Vector3d& e, const Eigen::Vector3d& goal, double amo
 bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
                            int& detours)
 {
-	bool translated = false;
 	for (const auto& s : plan)
 	{
 		const bool translation = s.kind == base::PlannedStep::Kind::Translate;
@@ -243,9 +251,14 @@ bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eig
 				--detour_depth_;
 				return false;
 			}
-		if (translation && translated && offCourse(estimate(), goal, s.amount)) return false;
+		// closed loop: off course before a translation (a slipped turn, a drift) replans the leg
+		if (translation && steer_replans_ < kMaxSteerReplans &&
+		    offCourse(estimate(), goal, s.amount))
+		{
+			++steer_replans_;
+			return false;
+		}
 		execute(s);
-		translated |= translation;
 	}
 	return true;
 }
@@ -263,6 +276,12 @@ base::WheelControl Navigator::encoderControl(const hw::Odometry& before,
 void Navigator::execute(const base::PlannedStep& step)
 {
 	if (stop_requested && stop_requested()) throw StopRequested();
+	if (vslam_ && step.kind == base::PlannedStep::Kind::Rotate)
+	{  // measurements through a turn: the head keeps its feature in view while the base turns
+		ComputeTimer t(timeline_);
+		const Eigen::Vector3d e = filter_.vehicle();
+		vslam_->holdGaze({e.x(), e.y(), e.z() + step.amount}, *images_head_);
+	}
 	base_.step(step.u);
 	timeline_.advance(step.u.dt_s);
 	const hw::Odometry odo = base_.odometry();

@@ -1,6 +1,6 @@
-// Navigation measurements from the head's stereo pairs (measurement_source = images): the vision
-// area's cycle (thesis 5.5–5.7) on the mission's filter; docs/mission.md "Measurements from
-// images".
+// Navigation measurements from the head's stereo pairs (landmark_sensor = images): the vision
+// area's cycle (thesis 5.5–5.7) on the mission's filter, one step's matches tested jointly;
+// docs/mission.md "Measurements from images".
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/mission/Navigator.h>
 
@@ -10,25 +10,27 @@ namespace mrolr::mission
 {
 void Navigator::measureInImages(const base::WheelControl& u)
 {
-	for (int k = 0; k < std::max(1, o_.navigation.measurements_per_step); ++k)
+	const double grab0 = grab_seconds_();
+	const auto t0 = std::chrono::steady_clock::now();
+	const auto records =
+	    vslam_->stepJoint(u, *images_head_, std::max(1, o_.navigation.measurements_per_step));
+	const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	const double grab = grab_seconds_() - grab0;
+	timeline_.addRender(grab);
+	timeline_.addCompute(std::max(0.0, wall - grab));
+	for (const auto& rec : records)
 	{
-		const double grab0 = grab_seconds_();
-		const auto t0 = std::chrono::steady_clock::now();
-		// The first cycle predicts with the step's control; the others measure only (dt = 0).
-		const auto rec = vslam_->step(k == 0 ? u : base::WheelControl{}, *images_head_);
-		const double wall =
-		    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		const double grab = grab_seconds_() - grab0;
-		timeline_.addRender(grab);
-		timeline_.addCompute(std::max(0.0, wall - grab));
 		for (const auto& f : rec.deleted) timeline_.note("feature " + f + " deleted (rule 5.7)");
 		if (!rec.measured) continue;
 		timeline_.advance(o_.navigation.measurement_time_s);
 		++image_cycles;
 		image_matched += rec.measurement.found ? 1 : 0;
+		jointly_rejected += rec.jointly_rejected ? 1 : 0;
 		(rec.accepted ? measurements : rejected) += 1;
 		if (rec.nis) noteNis(rec.label, *rec.nis, rec.accepted);
+		noteAttempt(rec.accepted);
 	}
+	checkLost();
 }
 
 bool Navigator::acquireNamed(const std::string& label, const Eigen::Vector3d& p_aim_inW,

@@ -19,6 +19,9 @@ void SimBaseOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg
 	footprint.length_m = readDouble(cfg, section, "footprint_length_m", footprint.length_m);
 	footprint.width_m = readDouble(cfg, section, "footprint_width_m", footprint.width_m);
 	footprint.offset_m = readDouble(cfg, section, "footprint_offset_m", footprint.offset_m);
+	kick_after_s = readDouble(cfg, section, "kick_after_s", kick_after_s);
+	kick_deg = readDouble(cfg, section, "kick_deg", kick_deg);
+	requireInRange(cfg, section, "kick_deg", kick_deg, -180, 180);
 	requireInRange(cfg, section, "ticks_per_m", ticks_per_m, 1, 1e7);
 	requireInRange(cfg, section, "slip_probability", slip_probability, 0, 1);
 	requireInRange(cfg, section, "slip_burst_steps", slip_burst_steps, 1, 1000);
@@ -141,7 +144,17 @@ void SimBase::countEncoders(const base::WheelControl& turned, double stall_fract
 void SimBase::step(const base::WheelControl& u)
 {
 	const base::WheelControl turned = turnedWheels(u);
-	const double stall_fraction = moveTruth(slipped(turned));
+	base::WheelControl moved = slipped(turned);
+	const bool turning = u.dt_s > 0 && u.v1_mps * u.v2_mps < 0;
+	if (!kicked_ && options_.kick_after_s >= 0 && odo_.time_s >= options_.kick_after_s && turning)
+	{  // the turn slips: the base turns by kick_deg more than its wheels (as a wheel would
+		// turn the base about the other): v1 - v2 grows by 2 D1 kick / dt
+		const double extra = options_.kick_deg * M_PI / 180.0 *
+		                     model_.options().wheel_half_separation_m / u.dt_s;
+		moved.v1_mps += extra, moved.v2_mps -= extra;
+		kicked_ = true;
+	}
+	const double stall_fraction = moveTruth(moved);
 	countEncoders(turned, stall_fraction);
 	odo_.time_s += u.dt_s;
 }

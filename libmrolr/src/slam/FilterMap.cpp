@@ -234,4 +234,32 @@ Eigen::Matrix3d ActiveSlamFilter::innovationCovariance(size_t i)
 	return H * Pa * H.transpose() + measurementNoise();
 }
 
+Eigen::MatrixXd ActiveSlamFilter::jointInnovationCovariance(const std::vector<size_t>& features)
+{
+	synchronise();
+	const Eigen::Vector3d xv = vehicle();
+	const auto P = m_pkk.asEigen();
+	const auto n = static_cast<Eigen::Index>(features.size());
+	Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3 * n, P.cols());
+	for (Eigen::Index k = 0; k < n; ++k)
+	{
+		const size_t i = features[static_cast<size_t>(k)];
+		checkIndex(i, m_info.size(), "jointInnovationCovariance");
+		const auto J = measurementJacobians(xv, feature(i), m_options.head.constants);
+		H.block<3, 3>(3 * k, 0) = J.H_xv;
+		H.block<3, 3>(3 * k, static_cast<Eigen::Index>(3 + 3 * i)) = J.H_y;
+	}
+	Eigen::MatrixXd S = H * P * H.transpose();
+	for (Eigen::Index k = 0; k < n; ++k) S.block<3, 3>(3 * k, 3 * k) += measurementNoise();
+	return S;
+}
+
+void ActiveSlamFilter::inflateVehicleCovariance(const Eigen::Matrix3d& Q)
+{
+	synchronise();
+	Eigen::MatrixXd P = covariance();
+	P.topLeftCorner<3, 3>() += 0.5 * (Q + Q.transpose());
+	setState(stateVector(), P);
+}
+
 }  // namespace mrolr::slam

@@ -181,6 +181,14 @@ void VisualSlam::selectFeature(CycleRecord& r)
 
 void VisualSlam::measureSelected(StereoHeadDevice& device, CycleRecord& r)
 {
+	matchSelected(device, r);
+	auto t0 = std::chrono::steady_clock::now();
+	applyMeasurement(r);
+	r.times.update_ms = lap(t0);
+}
+
+void VisualSlam::matchSelected(StereoHeadDevice& device, CycleRecord& r)
+{
 	auto t0 = std::chrono::steady_clock::now();
 	const Eigen::Vector3d h_pred = filter_.predictedMeasurement(r.feature);
 	const Eigen::Matrix3d S = filter_.innovationCovariance(r.feature);
@@ -206,8 +214,6 @@ void VisualSlam::measureSelected(StereoHeadDevice& device, CycleRecord& r)
 		matchInRegions(images, head_, patches_[r.feature], options_, NssdMethod::OpenCv, m);
 		r.times.match_ms = lap(t0);
 	}
-	applyMeasurement(r);
-	r.times.update_ms = lap(t0);
 }
 
 void VisualSlam::applyMeasurement(CycleRecord& r)

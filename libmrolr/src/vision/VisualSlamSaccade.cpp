@@ -1,6 +1,9 @@
 // Feature selection by the saccade decision of thesis 5.7 steps 1-4 in the live cycle: a saccade
 // to another feature costs the measurements of the time the head needs to get there.
+#include <mrolr/geometry/GeometryError.h>
 #include <mrolr/slam/FeatureSelection.h>
+#include <mrolr/slam/FeatureVisibility.h>
+#include <mrolr/slam/HeadMeasurement.h>
 #include <mrolr/vision/VisualSlam.h>
 
 #include <algorithm>
@@ -64,6 +67,22 @@ bool VisualSlam::selectBySaccade(CycleRecord& r, const std::vector<base::WheelCo
 	pending_ = r.label, waiting_ = r.measurements_lost;
 	r.measured = false, r.waiting = true;
 	return false;
+}
+
+void VisualSlam::holdGaze(const Eigen::Vector3d& xv_after, StereoHeadDevice& device)
+{
+	const auto i = indexOf(filter_, filter_.numFeatures(), tracked_);
+	if (!i) return;
+	const Eigen::Vector3d p = filter_.feature(*i);
+	if (slam::headCanFixate(xv_after, p, filter_.options().head) != slam::Visibility::Visible)
+		return;
+	try
+	{
+		device.moveTo(head_.fixate(slam::pointInHead(xv_after, p, filter_.options().head.constants)));
+	}
+	catch (const geometry::GeometryError&)
+	{
+	}
 }
 
 }  // namespace mrolr::vision

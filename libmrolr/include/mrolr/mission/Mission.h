@@ -86,6 +86,8 @@ struct MissionResult
 	 * shots), the searches for a mapped feature and how many matched in both images. */
 	std::string navigation_source;
 	int image_searches = 0, image_matches = 0, navigation_pairs = 0;
+	int jointly_rejected = 0;             ///< matches left out by the joint compatibility test
+	int lost_events = 0, recoveries = 0;  ///< times it knew it was lost / found the map again
 	Timeline timeline;
 };
 

@@ -13,6 +13,7 @@
 #include <mrolr/slam/ActiveSlamFilter.h>
 #include <mrolr/vision/VisualSlam.h>
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -117,6 +118,8 @@ class Navigator
 	/** Simulated sensors: measurements lost (lost_feature_probability); features deleted by 5.7. */
 	int lost = 0, deleted_features = 0;
 	int image_cycles = 0, image_matched = 0;  ///< images: cycles that searched, matches found
+	int jointly_rejected = 0;  ///< images: matches left out by the joint compatibility test
+	int lost_events = 0, recoveries = 0;  ///< images: times it knew it was lost, found the map
 
  private:
 	void addPlanFeatures();
@@ -153,6 +156,12 @@ class Navigator
 	std::vector<size_t> visibleMapped(const std::vector<hw::LandmarkSensor::Sighting>& seen);
 	void initialiseNewFeature(const std::vector<hw::LandmarkSensor::Sighting>& seen);
 	void noteNis(const std::string& label, double nis, bool accepted);
+	/** Images: why the robot is lost (empty when it is not): its estimate's uncertainty grew
+	 * beyond steering, or most of its recent searches failed. */
+	std::string lostReason();
+	void noteAttempt(bool accepted);
+	/** Images, after each step: when lost, doubt the estimate and seek the known features. */
+	void checkLost();
 	void record(const hw::Odometry& odo);
 
 	const MissionOptions& o_;
@@ -170,6 +179,10 @@ class Navigator
 	vision::StereoHeadDevice* images_head_ = nullptr;
 	std::function<double()> grab_seconds_;
 	hw::LandmarkSensor* sensor_ = nullptr;
+	std::deque<bool> recent_;  ///< images: the last searches, accepted or not
+	int steps_since_relocalise_ = 0;
+	int failed_relocalisations_ = 0;  ///< in a row: the doubt grows with them
+	int steer_replans_ = 0;           ///< of the leg being driven
 };
 
 /** Rotate–translate–rotate from @p from to @p to (z, x, φ in W) as base::planLeg, except that a

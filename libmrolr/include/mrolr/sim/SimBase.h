@@ -33,6 +33,11 @@ struct SimBaseOptions
 	unsigned seed = 1;
 	/** `footprint_length_m`, `footprint_width_m`, `footprint_offset_m` (all optional). */
 	Footprint footprint;
+	/** Optional fault for tests (`kick_after_s`, `kick_deg`): the first turn in place after this
+	 * base time turns the base by kick_deg more than its wheels did (a slipped turn, invisible
+	 * to the encoders); < 0 (default): never. */
+	double kick_after_s = -1;
+	double kick_deg = 0;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -81,6 +86,7 @@ class SimBase : public hw::BaseDevice
 	hw::Odometry odo_;
 	double residual_right_ = 0, residual_left_ = 0;
 	int slip_left_ = 0, slip_steps_total_ = 0;
+	bool kicked_ = false;
 	std::shared_ptr<const CollisionWorld> collisions_;
 	std::optional<Contact> last_contact_;
 	int contacts_total_ = 0;

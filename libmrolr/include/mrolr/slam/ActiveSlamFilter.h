@@ -79,6 +79,9 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	size_t initialiseFeature(const std::string& label, const Eigen::Vector3d& h);
 	/** Removes feature @p i from x and P (eq 5.49); later indices shift down by one. */
 	void deleteFeature(size_t i);
+	/** Adds @p Q (m², rad²) to the vehicle's covariance: the robot doubts where it is (it lost
+	 * track) and searches wider before it trusts a measurement again. */
+	void inflateVehicleCovariance(const Eigen::Matrix3d& Q);
 	/** Makes the current vehicle pose the new world frame (eqs 5.50–5.52). */
 	void zeroWorldFrame();
 	/** Records a measurement attempt of feature @p i for the deletion rule (5.7). */
@@ -111,6 +114,9 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	 */
 	Eigen::Vector3d predictedMeasurement(size_t i);
 	Eigen::Matrix3d innovationCovariance(size_t i);
+	/** The joint innovation covariance of measurements of the distinct features @p features:
+	 * S_J = H_J P H_Jᵀ + R_J (3k × 3k), their predictions' cross-covariances included. */
+	Eigen::MatrixXd jointInnovationCovariance(const std::vector<size_t>& features);
 	/** The measurement noise R (eq 5.41). */
 	Eigen::Matrix3d measurementNoise() const;
 	/** Brings x and P up to date and stops postponed tracking (no-op otherwise). */

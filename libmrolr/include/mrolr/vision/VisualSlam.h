@@ -44,6 +44,7 @@ struct CycleRecord
 	double vs = 0;                            ///< its innovation volume Vs (eq 5.147), rad³
 	FeatureMeasurement measurement;           ///< ellipses, matches, scores, measured h
 	bool accepted = false;                    ///< matched and passed the χ² gate
+	bool jointly_rejected = false;            ///< matched, but not jointly compatible (stepJoint)
 	std::optional<double> nis;                ///< its NIS (eq 5.36) when it was matched
 	std::vector<std::string> added, deleted;  ///< map changes in this cycle
 	/** The head turned to another feature than the last one measured (5.7). */
@@ -86,6 +87,25 @@ class VisualSlam
 	CycleRecord step(const base::WheelControl& u, StereoHeadDevice& device,
 	                 const std::vector<base::WheelControl>& upcoming = {});
 
+	/** One step's cycle with joint compatibility: predict with @p u, manage the map, then measure
+	 * up to @p count visible features — the nearest known feature first (thesis 7.2(a)), then by
+	 * largest Vs — without updating in between; the matches are accepted only as a jointly
+	 * compatible set (slam::jointlyCompatible), then used to update. One record per feature
+	 * measured (or one with measured = false). */
+	std::vector<CycleRecord> stepJoint(const base::WheelControl& u, StereoHeadDevice& device,
+	                                   int count);
+
+	/** Before the base turns in place: the head turns the other way so that the feature it last
+	 * measured stays in view at @p xv_after (the pose the turn should end at), and the first
+	 * search after the turn is a short one; nothing when that feature would leave the head's
+	 * reach. */
+	void holdGaze(const Eigen::Vector3d& xv_after, StereoHeadDevice& device);
+
+	/** After losing track (the caller has widened the vehicle's covariance): up to @p count known
+	 * features within @p max_range_m and the head's reach, nearest first, sought in their (now
+	 * wide) ellipses and accepted only as a jointly compatible set. One record per feature. */
+	std::vector<CycleRecord> relocalise(StereoHeadDevice& device, int count, double max_range_m);
+
 	/** Measures feature @p i now, without motion or selection (e.g. re-finding a known feature when
 	 * the robot is back home, 5.6.2). Returns found = false if it is not visible. */
 	CycleRecord measureFeature(size_t i, StereoHeadDevice& device);
@@ -124,7 +144,13 @@ class VisualSlam
 	bool selectBySaccade(CycleRecord& r, const std::vector<base::WheelControl>& upcoming);
 	void noteSaccade(CycleRecord& r);
 	void measureSelected(StereoHeadDevice& device, CycleRecord& r);
+	/** Saccade to the selected feature, search its ellipses and match it; no update. */
+	void matchSelected(StereoHeadDevice& device, CycleRecord& r);
 	void deleteFailed(CycleRecord& r);
+	/** The features of one joint step: the nearest visible known one, then by largest Vs. */
+	std::vector<size_t> chooseForStep(int count);
+	/** The jointly compatible matches of @p records update the filter; every attempt recorded. */
+	void applyJointly(std::vector<CycleRecord>& records);
 
 	slam::ActiveSlamFilter& filter_;
 	geometry::BiSightHead head_;
