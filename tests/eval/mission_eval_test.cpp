@@ -1,0 +1,96 @@
+// eval's verdict on a robot's report: success only when the robot claimed it and the truth agrees;
+// the truth read back from T.json as written; a malformed T.json names the field.
+#include <mrolr/eval/MissionEval.h>
+#include <mrolr/mission/MissionOutputs.h>
+
+#include <gtest/gtest.h>
+
+using namespace mrolr;
+using nlohmann::json;
+
+namespace
+{
+/** The smallest report eval reads: the robot claims success and holds the cube at home. */
+json claimedSuccess()
+{
+	const json P = {{1e-4, 0, 0}, {0, 1e-4, 0}, {0, 0, 1e-4}};
+	return {{"success", true},      {"failure", ""},        {"target", "alphabet_cube"},
+	        {"found", false},       {"retrieved", true},    {"returned_home", true},
+	        {"robot",
+	         {{"success", true},
+	          {"home", {{"name", "H"}, {"zxphi", {0.0, 0.0, 0.0}}}},
+	          {"home_tolerance_m", 0.15},
+	          {"head_height_m", 1.0},
+	          {"final_estimate_zxphi", {0.01, 0.0, 0.0}},
+	          {"final_odometry_zxphi", {0.3, 0.1, 0.0}},
+	          {"path", json::array({{{"device_t_s", 0.0}, {"estimate", {0.0, 0.0, 0.0}}, {"P_vv", P}}})}}}};
+}
+
+eval::MissionTruth truthAt(double z, const std::string& held)
+{
+	eval::MissionTruth t;
+	t.final_zxphi = {z, 0, 0};
+	t.objects.push_back({"alphabet_cube", "alphabet_cube", Eigen::Isometry3d::Identity(),
+	                     Eigen::Isometry3d::Identity()});
+	t.objects.push_back({"cup", "cup", Eigen::Isometry3d::Identity(), Eigen::Isometry3d::Identity()});
+	t.held = held;
+	t.steps.push_back({0.0, {0, 0, 0}});
+	return t;
+}
+}  // namespace
+
+TEST(MissionEval, ARightClaimIsConfirmed)
+{
+	auto r = claimedSuccess();
+	eval::evaluateMission(r, truthAt(0.02, "alphabet_cube"));
+	EXPECT_TRUE(r["success"].get<bool>());
+	EXPECT_TRUE(r["eval"]["confirms"].get<bool>());
+	EXPECT_NEAR(r["final_position_error_m"].get<double>(), 0.02, 1e-12);
+	EXPECT_NEAR(r["dead_reckoning_error_m"].get<double>(), std::hypot(0.28, 0.1), 1e-12);
+	EXPECT_EQ(r["eval"]["nees"]["count"], 1);
+}
+
+TEST(MissionEval, TheRobotsClaimIsNotEnoughWhenTheTruthDisagrees)
+{
+	auto far = claimedSuccess();
+	eval::evaluateMission(far, truthAt(0.4, "alphabet_cube"));  // it believes it is home
+	EXPECT_FALSE(far["success"].get<bool>());
+	EXPECT_FALSE(far["eval"]["agrees_home"].get<bool>());
+	EXPECT_NE(far["failure"].get<std::string>().find("not home"), std::string::npos);
+	auto wrong = claimedSuccess();
+	eval::evaluateMission(wrong, truthAt(0.0, "cup"));  // it holds something, not the target
+	EXPECT_FALSE(wrong["success"].get<bool>());
+	EXPECT_FALSE(wrong["eval"]["object_held"].get<bool>());
+	EXPECT_EQ(wrong["eval"]["held_instance"], "cup");
+	auto hit = claimedSuccess();
+	auto t = truthAt(0.0, "alphabet_cube");
+	t.contact = eval::ContactTruth{"obstacle.crate", {1.0, 2.0}};
+	eval::evaluateMission(hit, t);
+	EXPECT_FALSE(hit["success"].get<bool>());
+	EXPECT_EQ(hit["eval"]["collision"]["what"], "obstacle.crate");
+}
+
+TEST(MissionEval, TJsonReadsBackAndAMalformedOneNamesTheField)
+{
+	auto t = truthAt(1.25, "alphabet_cube");
+	t.contact = eval::ContactTruth{"wall", {2.0, -1.0}};
+	const auto back = eval::truthFromJson(eval::truthJson(t), "T.json");
+	EXPECT_NEAR(back.final_zxphi.x(), 1.25, 1e-12);
+	EXPECT_EQ(back.held, "alphabet_cube");
+	ASSERT_EQ(back.objects.size(), 2u);
+	EXPECT_EQ(back.objects[1].model, "cup");
+	ASSERT_TRUE(back.contact.has_value());
+	EXPECT_EQ(back.contact->what, "wall");
+	json bad = eval::truthJson(t);
+	bad["vehicle"].erase("x_m");
+	try
+	{
+		eval::truthFromJson(bad, "T.json");
+		FAIL() << "accepted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("T.json: missing field 'x_m'"), std::string::npos)
+		    << e.what();
+	}
+}

@@ -1,0 +1,90 @@
+// The robot on its own: a table it was not told of stops it by the bumper (and eval names what it
+// hit), a slipped turn makes it lost and it finds the map again through a known feature, and it
+// drives the office (another room, route and table) from its images with the office's plan.
+#include "MissionTestConfig.h"
+
+#include <mrolr/eval/MissionOutputs.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace mrolr;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string tempDir(const std::string& name)
+{
+	const auto d = fs::temp_directory_path() / ("mrolr_honest_run_test_" + name);
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+bool timelineHas(const mission::MissionResult& r, const std::string& text)
+{
+	for (const auto& e : r.timeline.events())
+		if (e.text.find(text) != std::string::npos) return true;
+	return false;
+}
+}  // namespace
+
+TEST(HonestRun, ATableTheRobotWasNotToldOfStopsItByTheBumperAndEvalNamesIt)
+{
+	// The plan has no table, and its route runs straight through the lab's.
+	const auto dir = tempDir("collision");
+	std::ofstream(dir + "/plan.ini") << "[plan]\nroute = W0 T\nstations = W5\nhome = W6\n"
+	                                    "[waypoints]\nW0 = 0 0 0\nT = 2.4 0 0\nW5 = 0.5 0 0\n"
+	                                    "W6 = 0 0 0\n";
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("mission", "obstacle_mode", "false");
+	const auto run = mission::test::runMission(cfg, mission::test::planWith({}, dir + "/plan.ini"));
+	EXPECT_TRUE(run.r.collided);
+	EXPECT_TRUE(run.r.stopped);
+	EXPECT_FALSE(run.r.success);
+	EXPECT_NE(run.r.failure.find("bumper"), std::string::npos) << run.r.failure;
+	const auto& c = run.report["eval"]["collision"];
+	ASSERT_FALSE(c.is_null());
+	EXPECT_EQ(c["what"], "table.main");
+	EXPECT_NEAR(c["z_m"].get<double>(), 1.05, 0.05);  // the table's front edge
+	EXPECT_NE(run.report["failure"].get<std::string>().find("hit table.main"), std::string::npos);
+	EXPECT_FALSE(run.report["success"].get<bool>());
+	// The robot stopped there: its last step is the one that met the table.
+	EXPECT_LT(run.truth.final_zxphi.x(), 1.05);
+	const auto out = eval::writeMissionOutputs(run.r, run.o, &run.truth, dir + "/out");
+	EXPECT_GT(fs::file_size(dir + "/out/trajectory.png"), 100u);
+}
+
+TEST(HonestRun, ASlippedTurnLosesTheRobotAndAKnownFeatureFindsTheMapAgain)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("sim_base", "kick_after_s", "300");  // the first turn after 300 s of driving ...
+	cfg.write("sim_base", "kick_deg", "20");       // ... turns 20 deg more than its wheels did
+	cfg.write("search", "scene_sensor", "exact_sim");  // navigation is under test here
+	cfg.write("search", "render_stereo", "false");
+	const auto run = mission::test::runMission(cfg);
+	EXPECT_GE(run.r.lost_events, 1);
+	EXPECT_GE(run.r.recoveries, 1);
+	EXPECT_TRUE(timelineHas(run.r, "lost: ")) << "the robot did not notice";
+	EXPECT_TRUE(timelineHas(run.r, "found again via ")) << "no known feature found it again";
+	EXPECT_TRUE(run.r.success) << run.r.failure;
+	EXPECT_LT(run.report["final_position_error_m"].get<double>(), 0.15);
+	EXPECT_EQ(run.report["lost_events"], run.r.lost_events);
+}
+
+TEST(HonestRun, TheOfficeIsDrivenFromImagesWithItsOwnPlan)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	const std::string office = std::string(MROLR_SOURCE_DIR) + "/maps/office";
+	cfg.write("mission", "seed", "3");
+	const auto run = mission::test::runMission(
+	    cfg, mission::test::planWith({}, office + "/plan.ini"), office + "/world.ini");
+	EXPECT_EQ(run.r.navigation_source, "images");
+	EXPECT_TRUE(run.r.success) << run.r.failure;
+	EXPECT_TRUE(run.report["eval"]["confirms"].get<bool>());
+	EXPECT_LT(run.report["final_position_error_m"].get<double>(), 0.15);
+	EXPECT_TRUE(run.report["eval"]["object_held"].get<bool>());
+	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
+}

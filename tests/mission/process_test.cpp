@@ -1,0 +1,154 @@
+// The robot in its own process: the emulator (mrolr-serial emulate) serves the lab's devices on
+// pseudo-terminals and its camera on a socket, the world's files are then taken away, and the
+// robot side runs the mission from the hardware configuration, its plan and its models; eval
+// checks it from the emulator's T.json. And Ctrl-C (SIGINT) stops a running mission safely with
+// every output written.
+#include "ChildProcess.h"
+#include "MissionTestConfig.h"
+
+#include <mrolr/apps/EvalApp.h>
+#include <mrolr/apps/MissionApp.h>
+#include <mrolr/io/Rawlog.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace mrolr;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kBin = MROLR_BIN_DIR;
+const std::string kRoot = MROLR_SOURCE_DIR;
+
+std::string tempDir(const std::string& name)
+{
+	const auto d = fs::temp_directory_path() / ("mrolr_process_test_" + name);
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+/** The second word of a "name value" line. */
+std::string valueOf(const std::string& line, const std::string& name)
+{
+	std::istringstream s(line);
+	std::string n, v;
+	s >> n >> v;
+	if (n != name) throw std::runtime_error("expected '" + name + " ...', got '" + line + "'");
+	return v;
+}
+
+/** Every world and object definition under @p dir removed: the robot side must not need them. */
+int removeWorldFiles(const std::string& dir)
+{
+	int n = 0;
+	for (const auto& e : fs::recursive_directory_iterator(dir))
+		if (e.path().filename() == "world.ini" ||
+		    (e.path().extension() == ".ini" && e.path().parent_path().filename() == "objects"))
+			fs::remove(e.path()), ++n;
+	return n;
+}
+}  // namespace
+
+TEST(TwoProcesses, TheRobotRunsWithoutTheWorldsFilesAndEvalChecksItFromTJson)
+{
+	const auto tmp = tempDir("two");
+	fs::create_directories(tmp + "/maps");
+	fs::create_directories(tmp + "/datasets");
+	fs::copy(kRoot + "/maps/lab", tmp + "/maps/lab", fs::copy_options::recursive);
+	fs::copy(kRoot + "/datasets/objects", tmp + "/datasets/objects", fs::copy_options::recursive);
+	test::ChildProcess emulator({kBin + "/mrolr-serial", "emulate", "--sim",
+	                             kRoot + "/config/mission_sim.ini", "--world",
+	                             tmp + "/maps/lab/world.ini", "--truth-out", tmp + "/T.json"});
+	const auto base = valueOf(emulator.readLine(30), "base");
+	const auto head = valueOf(emulator.readLine(5), "head");
+	const auto arm = valueOf(emulator.readLine(5), "arm");
+	const auto camera = valueOf(emulator.readLine(5), "camera");
+	EXPECT_GT(removeWorldFiles(tmp), 8);  // the world and its eight object definitions
+	ASSERT_FALSE(fs::exists(tmp + "/maps/lab/world.ini"));
+
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--config", kRoot + "/config/mission_hw.ini", "--plan",
+	                tmp + "/maps/lab/plan.ini", "--set", "files.models_dir=" + tmp + "/datasets/objects",
+	                "--set", "plan.route=W0", "--set", "device.base.port=" + base, "--set",
+	                "device.head.port=" + head, "--set", "device.arm.port=" + arm, "--set",
+	                "device.camera.driver=socket", "--set", "device.camera.address=" + camera,
+	                "--out", tmp + "/out", "--quiet"});
+	std::ostringstream out, progress;
+	EXPECT_EQ(app.run(out, progress), 0) << out.str();
+	EXPECT_TRUE(app.report["eval"].is_null());  // no truth in the robot's process
+	EXPECT_EQ(app.result.links.size(), 3u);
+	emulator.signal(SIGINT);
+	EXPECT_EQ(emulator.wait(20), 0);
+	ASSERT_TRUE(fs::exists(tmp + "/T.json"));
+
+	apps::EvalApp eval;
+	eval.initialize({"mrolr-eval", "--report", tmp + "/out/report.json", "--truth", tmp + "/T.json"});
+	std::ostringstream eval_out;
+	EXPECT_EQ(eval.run(eval_out), 0) << eval_out.str();
+	const auto T = nlohmann::json::parse(std::ifstream(tmp + "/T.json"));
+	const Eigen::Vector2d home = app.options.plan.home.xv_zxphi.head<2>();
+	EXPECT_LT(std::hypot(T["vehicle"]["z_m"].get<double>() - home.x(),
+	                     T["vehicle"]["x_m"].get<double>() - home.y()),
+	          0.15);
+	EXPECT_EQ(T["held"], app.options.target);
+	EXPECT_TRUE(eval.report["eval"]["confirms"].get<bool>());
+	EXPECT_TRUE(eval.report["success"].get<bool>());
+}
+
+TEST(TwoProcesses, ADeadCameraSocketStopsTheMissionSafelyNamingIt)
+{
+	const auto tmp = tempDir("dead_camera");
+	test::ChildProcess emulator({kBin + "/mrolr-serial", "emulate", "--sim",
+	                             kRoot + "/config/mission_sim.ini"});
+	const auto base = valueOf(emulator.readLine(30), "base");
+	const auto head = valueOf(emulator.readLine(5), "head");
+	const auto arm = valueOf(emulator.readLine(5), "arm");
+	const auto camera = valueOf(emulator.readLine(5), "camera");
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--config", kRoot + "/config/mission_hw.ini", "--set",
+	                "device.base.port=" + base, "--set",
+	                "device.head.port=" + head, "--set", "device.arm.port=" + arm, "--set",
+	                "device.camera.driver=socket", "--set", "device.camera.address=" + camera,
+	                "--set", "device.camera.timeout_ms=1000", "--out", tmp + "/out", "--quiet"});
+	std::thread killer([&] {
+		std::this_thread::sleep_for(std::chrono::seconds(3));
+		emulator.signal(SIGKILL);  // the whole emulator dies: ports and camera
+	});
+	std::ostringstream out, progress;
+	EXPECT_EQ(app.run(out, progress), 3) << out.str();
+	killer.join();
+	EXPECT_TRUE(app.result.stopped);
+	EXPECT_NE(app.result.failure.find("device."), std::string::npos) << app.result.failure;
+	EXPECT_TRUE(fs::exists(tmp + "/out/report.json"));
+	EXPECT_NO_THROW(io::readRawlog(tmp + "/out/mission.rawlog"));
+}
+
+TEST(Interrupt, SigintStopsARunningMissionSafelyWithEveryOutputWritten)
+{
+	const auto tmp = tempDir("sigint");
+	test::ChildProcess mission({kBin + "/mrolr-mission", "--config",
+	                            kRoot + "/config/mission_sim.ini", "--out", tmp + "/out",
+	                            "--quiet"});
+	std::this_thread::sleep_for(std::chrono::seconds(4));
+	mission.signal(SIGINT);
+	EXPECT_EQ(mission.wait(60), 130);
+	const auto j = nlohmann::json::parse(std::ifstream(tmp + "/out/report.json"));
+	EXPECT_TRUE(j["interrupted"].get<bool>());
+	EXPECT_TRUE(j["stopped"].get<bool>());
+	EXPECT_FALSE(j["success"].get<bool>());
+	EXPECT_NE(j["failure"].get<std::string>().find("SIGINT"), std::string::npos);
+	bool base_stopped = false;
+	for (const auto& e : j["timeline"]) base_stopped |= e["event"] == "base stopped";
+	EXPECT_TRUE(base_stopped);
+	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene"})
+		EXPECT_TRUE(fs::exists(tmp + "/out/" + f)) << f;
+	const auto records = io::readRawlog(tmp + "/out/mission.rawlog");
+	EXPECT_EQ(records.size(), j["steps"].get<size_t>() + j["stereo_pairs"].get<size_t>());
+	EXPECT_GT(records.size(), 0u);
+}
