@@ -148,21 +148,38 @@ struct RenderedLab
 };
 }  // namespace
 
+namespace
+{
+/** maps/lab_obstacle's box: its near face z, and its right and left edges x (W, m). */
+struct BoxFaces
+{
+	double near_z, right_x, left_x;
+};
+
+BoxFaces boxFaces()
+{
+	const auto w = world::World::load(std::string(MROLR_SOURCE_DIR) + "/maps/lab_obstacle/world.ini");
+	for (const auto& b : w.obstacles)
+		if (b.name == "box")
+			return {b.z_m - b.size_m.z() / 2, b.x_m - b.size_m.x() / 2, b.x_m + b.size_m.x() / 2};
+	throw std::runtime_error("maps/lab_obstacle has no [obstacle.box]");
+}
+}  // namespace
+
 TEST(ObstacleFromStereo, TheBoxOnTheRouteIsSeenMeasuredAndPassedOnItsOpenSide)
 {
 	RenderedLab lab;
-	lab.xv = {-1.4, 0.0, 0.0};  // the box's near face (z = -0.5) 0.9 m ahead, x -0.15..0.35
+	const BoxFaces box = boxFaces();
+	lab.xv = {box.near_z - 0.9, 0.0, 0.0};  // the box's near face 0.9 m ahead, facing +z
 	auto a = lab.avoidance();
 	const auto via = a.check(lab.xv, {0.5, 0.0, 0.0});
 	ASSERT_EQ(a.report().events.size(), 1u);
 	const auto& e = a.report().events[0];
-	std::cerr << "near " << e.sighting.near_m << " far " << e.sighting.far_m << " x "
-	          << e.sighting.right_m << ".." << e.sighting.left_m << " points " << e.sighting.points
-	          << " side " << e.detour.side << " L " << e.detour.points_left << " R "
-	          << e.detour.points_right << "\n";
 	EXPECT_NEAR(e.sighting.near_m, 0.9, 0.05);
-	EXPECT_NEAR(e.sighting.right_m, -0.15, 0.08);
-	EXPECT_NEAR(e.sighting.left_m, 0.35, 0.08);
+	EXPECT_NEAR(e.sighting.right_m, box.right_x, 0.08);
+	EXPECT_NEAR(e.sighting.left_m, box.left_x, 0.08);
+	// the box stands more on the left of the route: it is passed on the right
+	ASSERT_GT(box.left_x + box.right_x, 0);
 	EXPECT_EQ(e.detour.side, -1);
 	ASSERT_EQ(via.size(), 2u);
 	EXPECT_EQ(a.report().looks, 3);
@@ -171,11 +188,12 @@ TEST(ObstacleFromStereo, TheBoxOnTheRouteIsSeenMeasuredAndPassedOnItsOpenSide)
 TEST(ObstacleFromStereo, NoObstacleWhenTheBoxIsBeyondRangeOrOffTheRoute)
 {
 	RenderedLab lab;
+	const BoxFaces box = boxFaces();
 	auto a = lab.avoidance();
-	lab.xv = {-2.0 + 0.45, 0.0, 0.0};  // near face 1.05 m ahead
+	lab.xv = {box.near_z - 1.05, 0.0, 0.0};  // near face 1.05 m ahead, beyond the 1 m range
 	EXPECT_TRUE(a.check(lab.xv, {0.5, 0.0, 0.0}).empty());
-	lab.xv = {-1.4, 0.0, M_PI / 2};  // facing left, open floor
-	EXPECT_TRUE(a.check(lab.xv, {-1.4, 2.0, M_PI / 2}).empty());
+	lab.xv = {box.near_z - 0.9, 0.0, M_PI / 2};  // facing left, open floor
+	EXPECT_TRUE(a.check(lab.xv, {box.near_z - 0.9, 2.0, M_PI / 2}).empty());
 	EXPECT_EQ(a.report().looks, 2);
 	EXPECT_TRUE(a.report().events.empty());
 }

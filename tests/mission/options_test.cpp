@@ -155,11 +155,12 @@ TEST(MissionOptions, BadModeAndATargetThatIsNotInTheModelDatabase)
 	expectError("files", "models_dir", "/no/such/models", "is not a folder");
 }
 
-TEST(MissionOptions, ObstacleModeReadsItsSection)
+TEST(MissionOptions, TheObstacleLookAheadIsTheDefaultAndReadsItsSection)
 {
-	auto cfg = test::defaultMissionConfig();  // obstacle_mode = false and no [obstacle]
-	EXPECT_FALSE(test::optionsFrom(cfg).obstacle_mode);
-	cfg.write("mission", "obstacle_mode", "true");
+	auto cfg = test::defaultMissionConfig();
+	EXPECT_TRUE(test::optionsFrom(cfg).obstacle_mode);
+	EXPECT_TRUE(MissionOptions::load(test::configDir() + "/mission_hw.ini").obstacle_mode);
+	cfg.write("obstacle", "tilt_deg", "steep");
 	EXPECT_NE(errorOf(cfg).find("[obstacle] tilt_deg"), std::string::npos) << errorOf(cfg);
 	const auto o = MissionOptions::load(test::configDir() + "/mission_obstacle.ini");
 	EXPECT_TRUE(o.obstacle_mode);
@@ -218,7 +219,7 @@ TEST(MissionOptions, TurnStepsAndReversingAreOptionalNavigationKeys)
 
 TEST(MissionOptions, TheObstacleMissionNavigatesAsTheDefaultMission)
 {
-	// config/mission_obstacle.ini is mission_sim.ini plus obstacle mode: the same [navigation], so
+	// config/mission_obstacle.ini is mission_sim.ini on the lab with a box: the same [navigation], so
 	// its turns are split into the same measured steps (without them the half-turns at the detour
 	// waypoints ended 20-40 deg off and the estimate jumped). Not compared: reversing, which
 	// obstacle mode never does, and the image-matching margin.

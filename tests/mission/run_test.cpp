@@ -91,9 +91,12 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 	EXPECT_TRUE(written["success"].get<bool>());
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
 		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
-	// One stereo pair per sweep view and one for the visual verification's re-observation,
-	// stored as external images.
-	ASSERT_EQ(r.shots.size(), static_cast<size_t>(r.search.views) + 1);
+	// One stereo pair per sweep view and one for the visual verification's re-observation, and
+	// those of the obstacle looks, stored as external images.
+	ASSERT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Table),
+	          static_cast<size_t>(r.search.views) + 1);
+	EXPECT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Obstacle),
+	          static_cast<size_t>(r.obstacle.looks));
 	size_t images = 0;
 	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
 		images += e.path().extension() == ".png";
@@ -130,7 +133,8 @@ TEST(MissionRun, AbsentTargetIsReportedAndTheRobotReturnsHome)
 	EXPECT_TRUE(r.returned_home);
 	EXPECT_TRUE(run.report["eval"]["returned_home"].get<bool>());
 	EXPECT_NE(r.failure.find("not found"), std::string::npos) << r.failure;
-	EXPECT_EQ(r.shots.size(), 10u);  // five views at each of the two stations
+	// nine views at each of the two stations (five, then four between)
+	EXPECT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Table), 18u);
 }
 
 TEST(MissionRun, LostFeaturesAreDeletedReplacedAndTheRobotStillGetsHome)

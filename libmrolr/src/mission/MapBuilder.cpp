@@ -49,6 +49,18 @@ MapBuildResult MapBuilder::build(const std::vector<SurveyTarget>& targets)
 	{
 		if (on_progress) on_progress(r.timeline.stage(), s);
 	};
+	std::unique_ptr<ObstacleAvoidance> obstacles;
+	if (o_.obstacle_mode)
+	{
+		auto look = [this](const geometry::HeadAngles& a)
+		{
+			dev_.head->moveTo(a);
+			return dev_.head->grab();
+		};
+		obstacles = std::make_unique<ObstacleAvoidance>(geometry::BiSightHead(o_.bisight),
+		                                                o_.obstacle, look, r.timeline);
+		attachObstacleAvoidance(nav, *obstacles, o_);
+	}
 	try
 	{
 		r.timeline.beginStage("survey");

@@ -9,6 +9,7 @@
 #include <mrolr/stereo/HeadCalibration.h>
 #include <mrolr/util/Config.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -55,7 +56,7 @@ struct Mission::Impl
 	{
 		requireSensors(o, sensors);
 	}
-	hw::StereoImages grabStereo();
+	hw::StereoImages grabStereo(StereoShot::Purpose purpose = StereoShot::Purpose::Table);
 	SearchView reconstructedView(const geometry::HeadAngles& angles);
 	SearchView simulatedView(const geometry::HeadAngles& angles);
 	void attachObstacleMode();
@@ -86,11 +87,12 @@ void Mission::Impl::loadTarget()
 	                std::to_string(target.conics.size()) + " conics");
 }
 
-hw::StereoImages Mission::Impl::grabStereo()
+hw::StereoImages Mission::Impl::grabStereo(StereoShot::Purpose purpose)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	auto images = dev.head->grab();
-	StereoShot shot{nav->path().back(), images.angles, images.left, images.right, images.frame};
+	StereoShot shot{nav->path().back(), images.angles, images.left, images.right, images.frame,
+	                purpose};
 	shot.state.time_s = r.timeline.simulatedSeconds();
 	r.shots.push_back(std::move(shot));
 	r.timeline.addRender(
@@ -142,14 +144,11 @@ void Mission::Impl::attachObstacleMode()
 	auto look = [this](const geometry::HeadAngles& a)
 	{
 		dev.head->moveTo(a);
-		return grabStereo();
+		return grabStereo(StereoShot::Purpose::Obstacle);
 	};
 	obstacles = std::make_unique<ObstacleAvoidance>(geometry::BiSightHead(o.bisight), o.obstacle,
 	                                                look, r.timeline);
-	obstacles->setKnownTables(o.plan.tables, o.obstacle.table_margin_m);
-	nav->max_detours_per_leg = o.obstacle.max_detours_per_leg;
-	nav->before_translation = [this](const Eigen::Vector3d& e, const Eigen::Vector3d& goal)
-	{ return obstacles->check(e, goal); };
+	attachObstacleAvoidance(*nav, *obstacles, o);
 }
 
 void Mission::Impl::navigate()
@@ -347,6 +346,12 @@ MissionResult Mission::run()
 	}
 	m.finish();
 	return m.r;
+}
+
+size_t countShots(const std::vector<StereoShot>& shots, StereoShot::Purpose purpose)
+{
+	return static_cast<size_t>(std::count_if(shots.begin(), shots.end(),
+	                                         [&](const StereoShot& s) { return s.purpose == purpose; }));
 }
 
 }  // namespace mrolr::mission

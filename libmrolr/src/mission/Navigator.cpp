@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace mrolr::mission
@@ -103,6 +104,8 @@ namespace
 {
 /** Distances tried, shortest first, for moving straight to where the base can turn (m). */
 constexpr double kStraightSteps_m[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.25, 1.5};
+/** The longest move backwards, where the head does not look (m): about the base's length. */
+constexpr double kMaxBlindBack_m = 0.6;
 /** The approach point of a goal next to a table keeps this much more clearance than a turn
  * needs, so that arriving a little off it still leaves room to turn (m). */
 constexpr double kApproachSlack_m = 0.15;
@@ -153,14 +156,28 @@ void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vec
 	for (const auto& v : via)
 	{
 		const double heading = std::atan2(v.y() - from.y(), v.x() - from.x());
-		driveStraightTo({v.x(), v.y(), heading}, correction_legs);
-		from = v;
+		// A via point (round an obstacle) where the base could not turn next to a plan's table is
+		// drawn back along the way to it until it can; one with no such point is left out.
+		std::optional<Eigen::Vector2d> reachable;
+		if (canTurn({v.x(), v.y(), heading}))
+			reachable = v;
+		else
+			for (double d : kStraightSteps_m)
+				if (const Eigen::Vector2d a = along({v.x(), v.y(), heading}, -d);
+				    (a - from).dot(v - from) > 0 && canTurn({a.x(), a.y(), heading}))
+				{
+					reachable = a;
+					break;
+				}
+		if (!reachable) continue;
+		driveStraightTo({reachable->x(), reachable->y(), heading}, correction_legs);
+		from = *reachable;
 	}
 }
 
 std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
                                                     const Eigen::Vector3d& goal, double reverse_m,
-                                                    bool& backing)
+                                                    bool may_back_off, bool& backing)
 {
 	backing = false;
 	const double margin = tableMargin();
@@ -174,10 +191,13 @@ std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
 		auto straight = planMissionLeg(e, alongHeading(e, goal), model_, o_.trajectory, 1.0);
 		if (!blocked(straight)) return straight;
 	}
-	// ... or straight back (or on) until turning there is clear.
+	// ... or straight back (or on) until turning there is clear; backwards the head does not see,
+	// so never further than kMaxBlindBack_m, and not again once backing off did not help.
+	if (!may_back_off) return plan;
 	for (double d : kStraightSteps_m)
 		for (double sign : {-1.0, 1.0})
-			if (const Eigen::Vector2d b = along(e, sign * d); canTurn({b.x(), b.y(), e.z()}))
+			if (const Eigen::Vector2d b = along(e, sign * d);
+			    (sign > 0 || d <= kMaxBlindBack_m) && canTurn({b.x(), b.y(), e.z()}))
 			{
 				auto move = planMissionLeg(e, {b.x(), b.y(), e.z()}, model_, o_.trajectory, 1.6);
 				if (blocked(move)) continue;
@@ -205,14 +225,17 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs
 			// Obstacle mode looks ahead before each translation: no reversing blind.
 			const double reverse_m =
 			    before_translation || !may_reverse ? 0.0 : o_.navigation.reverse_max_m;
-			plan = clearPlan(e, goal, reverse_m, backing);
+			plan = clearPlan(e, goal, reverse_m, backs < kMaxBackOffs, backing);
 		}
-		if (backing && backs++ < kMaxBackOffs)
+		if (backing)
 		{
+			++backs;
 			timeline_.note("backing away from the table to turn");
 			--leg;  // backing off is not a correction of its own
 		}
-		if (!executeLeg(plan, goal, detours)) leg = -1;  // round an obstacle: plan the leg anew
+		// round an obstacle or off course: plan the leg anew (a back-off is a move of its own, not
+		// a step towards the goal, so it is neither steered nor looked along)
+		if (!executeLeg(plan, goal, detours, !backing)) leg = -1;
 	}
 }
 
@@ -235,13 +258,14 @@ bool offCourse(const Eigen::Vector3d& e, const Eigen::Vector3d& goal, double amo
 }  // namespace
 
 bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
-                           int& detours)
+                           int& detours, bool towards_goal)
 {
 	for (const auto& s : plan)
 	{
 		const bool translation = s.kind == base::PlannedStep::Kind::Translate;
-		const bool check = before_translation && translation && detours < max_detours_per_leg &&
-		                   detour_depth_ < 2;
+		// the look is along the heading: only a forward step towards the goal is looked along
+		const bool check = before_translation && translation && towards_goal && s.amount > 0 &&
+		                   detours < max_detours_per_leg && detour_depth_ < 2;
 		if (check)
 			if (const auto via = before_translation(estimate(), goal); !via.empty())
 			{
@@ -252,7 +276,7 @@ bool Navigator::executeLeg(const std::vector<base::PlannedStep>& plan, const Eig
 				return false;
 			}
 		// closed loop: off course before a translation (a slipped turn, a drift) replans the leg
-		if (translation && steer_replans_ < kMaxSteerReplans &&
+		if (translation && towards_goal && steer_replans_ < kMaxSteerReplans &&
 		    offCourse(estimate(), goal, s.amount))
 		{
 			++steer_replans_;
@@ -287,15 +311,23 @@ void Navigator::execute(const base::PlannedStep& step)
 	const hw::Odometry odo = base_.odometry();
 	const base::WheelControl u = encoderControl(last_odometry_, odo);
 	last_odometry_ = odo;
-	if (o_.mode == NavigationMode::Slam && vslam_)
-		measureInImages(u);
-	else if (o_.mode == NavigationMode::Slam)
+	try
 	{
+		if (o_.mode == NavigationMode::Slam && vslam_)
+			measureInImages(u);
+		else if (o_.mode == NavigationMode::Slam)
 		{
-			ComputeTimer t(timeline_);
-			filter_.predict(u);
+			{
+				ComputeTimer t(timeline_);
+				filter_.predict(u);
+			}
+			if (sensor_) measureWithSensor();
 		}
-		if (sensor_) measureWithSensor();
+	}
+	catch (...)
+	{
+		record(odo);  // the step was driven: it stays in the record when a device fails after it
+		throw;
 	}
 	record(odo);
 	if (odo.bumper)

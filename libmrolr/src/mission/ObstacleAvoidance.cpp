@@ -84,8 +84,10 @@ bool ObstacleAvoidance::onKnownTable(const Eigen::Vector3d& p_inB) const
 
 namespace
 {
-/** A clear look ahead covers the steps that stay this much short of its far end (m) ... */
-constexpr double kLookCoverSlack_m = 0.3;
+/** A clear look ahead (measured from the base's centre) covers the steps whose start stays this
+ * much short of its far end (m): half the base's length and one 20 cm step, so that its front
+ * never enters floor no look has seen ... */
+constexpr double kLookCoverSlack_m = 0.6;
 /** ... on about the same heading (rad). */
 constexpr double kLookCoverTurn_rad = 10.0 * M_PI / 180.0;
 }  // namespace

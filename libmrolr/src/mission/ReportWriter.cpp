@@ -196,6 +196,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"simulated_seconds", r.timeline.simulatedSeconds()},
 	          {"render_seconds", r.timeline.renderSeconds()},
 	          {"stereo_pairs", r.shots.size()},
+	          {"obstacle_pairs", countShots(r.shots, StereoShot::Purpose::Obstacle)},
 	          {"steps", r.path.size()},
 	          {"measurements", r.measurements},
 	          {"measurements_rejected", r.measurements_rejected},

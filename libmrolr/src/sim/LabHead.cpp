@@ -38,7 +38,7 @@ hw::StereoImages LabHead::grab()
 {
 	if (!renderer_)
 	{
-		scene_ = buildLabScene(lab_.options().world);
+		scene_ = buildLabScene(lab_.options().world, lab_.shapes());
 		renderer_ = std::make_unique<StereoRenderer>(head_, lab_.options().render);
 	}
 	for (const auto& [name, T] : lab_.objectPoses())

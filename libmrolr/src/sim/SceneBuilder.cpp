@@ -166,9 +166,16 @@ std::map<std::string, world::ObjectShape> loadObjectShapes(const world::World& w
 
 LabScene buildLabScene(const world::World& w, bool draw_point_landmarks)
 {
+	return buildLabScene(w, loadObjectShapes(w), draw_point_landmarks);
+}
+
+LabScene buildLabScene(const world::World& w,
+                       const std::map<std::string, world::ObjectShape>& shapes,
+                       bool draw_point_landmarks)
+{
 	LabScene lab;
 	lab.scene = mrpt::opengl::COpenGLScene::Create();
-	lab.shapes = loadObjectShapes(w);
+	lab.shapes = shapes;
 	if (w.has_room) addRoom(*lab.scene, w);
 	for (const auto& t : w.tables) addTable(*lab.scene, w, t);
 	for (const auto& o : w.obstacles) addObstacle(*lab.scene, w, o);

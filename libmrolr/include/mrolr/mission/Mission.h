@@ -46,11 +46,22 @@ struct SimulatedSensors
 /** A stereo pair grabbed during a sweep, with the robot's state at that moment. */
 struct StereoShot
 {
+	/** Why the pair was taken: a view of the table (sweep or verification) or a look ahead for
+	 * obstacles. */
+	enum class Purpose
+	{
+		Table,
+		Obstacle
+	};
 	PathSample state;
 	geometry::HeadAngles angles;
 	mrpt::img::CImage left, right;
 	uint64_t frame = 0;
+	Purpose purpose = Purpose::Table;
 };
+
+/** How many of @p shots were taken for @p purpose. */
+size_t countShots(const std::vector<StereoShot>& shots, StereoShot::Purpose purpose);
 
 /** Everything the robot knows after a run. Poses (z, x, φ) in W; mm for object and arm poses. */
 struct MissionResult

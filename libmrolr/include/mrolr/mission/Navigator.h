@@ -125,9 +125,10 @@ class Navigator
 	void addPlanFeatures();
 	/** The leg from @p e to @p goal whose swept footprint keeps clear of the plan's tables: the
 	 * planned one, else along the heading to the goal's projection, else straight back until
-	 * turning is clear (@p backing set); the planned one when nothing is clear. */
+	 * turning is clear (@p backing set, only when @p may_back_off); the planned one when nothing
+	 * is clear. */
 	std::vector<base::PlannedStep> clearPlan(const Eigen::Vector3d& e, const Eigen::Vector3d& goal,
-	                                         double reverse_m, bool& backing);
+	                                         double reverse_m, bool may_back_off, bool& backing);
 	/** A point @p goal's heading leads straight into from where turning is clear, if any. */
 	std::optional<Eigen::Vector2d> approachPoint(const Eigen::Vector3d& goal);
 	/** True when turning in place at @p xv keeps tableMargin() (and @p slack_m) from the tables. */
@@ -140,9 +141,11 @@ class Navigator
 	/** Rotate–translate–rotate to @p goal, repeated up to @p correction_legs times; backwards
 	 * to a goal close behind only when @p may_reverse (not on a straight approach to a table). */
 	void driveStraightTo(const Eigen::Vector3d& goal, int correction_legs, bool may_reverse = true);
-	/** Executes @p plan; false when a detour was driven instead of the rest of it. */
+	/** Executes @p plan; false when a detour was driven instead of the rest of it, or when the
+	 * estimate went off course. With @p towards_goal false (a back-off from a table) the plan's
+	 * translations are neither steered towards @p goal nor looked along. */
 	bool executeLeg(const std::vector<base::PlannedStep>& plan, const Eigen::Vector3d& goal,
-	                int& detours);
+	                int& detours, bool towards_goal = true);
 	void execute(const base::PlannedStep& step);
 	/** The wheel control the encoders measured over the last step (thesis 4.2.6). */
 	base::WheelControl encoderControl(const hw::Odometry& before, const hw::Odometry& after) const;

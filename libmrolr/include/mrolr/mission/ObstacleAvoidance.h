@@ -85,6 +85,13 @@ class ObstacleAvoidance
 	double last_clear_length_m_ = 0;           ///< how far ahead it was clear
 };
 
+class Navigator;
+struct MissionOptions;
+
+/** Obstacle mode on @p nav: before its translations the look of @p avoidance (which must outlive
+ * @p nav's driving) is asked; the plan's tables are no obstacles. */
+void attachObstacleAvoidance(Navigator& nav, ObstacleAvoidance& avoidance, const MissionOptions& o);
+
 /** report.json's "obstacle" block: looks, checks, failed looks and every obstacle seen (B, m) with
  * its side and inserted waypoints (W, m). */
 nlohmann::json obstacleJson(const ObstacleReport& r);

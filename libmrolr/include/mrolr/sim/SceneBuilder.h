@@ -29,5 +29,9 @@ std::map<std::string, world::ObjectShape> loadObjectShapes(const world::World& w
  * are drawn as small white spheres when @p draw_point_landmarks is set (for worlds that have no
  * patches). */
 LabScene buildLabScene(const world::World& w, bool draw_point_landmarks = false);
+/** The same with the object definitions already read (model name → definition). */
+LabScene buildLabScene(const world::World& w,
+                       const std::map<std::string, world::ObjectShape>& shapes,
+                       bool draw_point_landmarks = false);
 
 }  // namespace mrolr::sim

@@ -64,13 +64,19 @@ void MapApp::initialize(const std::vector<std::string>& args)
 	                                 "SECTION.KEY=VALUE", cmd);
 	TCLAP::SwitchArg js("", "json", "print map_report.json", cmd);
 	TCLAP::SwitchArg q("", "quiet", "no progress line", cmd);
+	TCLAP::SwitchArg look("", "look-ahead",
+	                      "look ahead for obstacles on the drive (the mission file's obstacle "
+	                      "mode; off by default: the survey drive keeps its head on the features)",
+	                      cmd);
 	if (!parseTclap(cmd, args))
 	{
 		help_shown = true;
 		return;
 	}
-	world_path = world.getValue(), out_path = out.getValue(), config_path = cfg.getValue();
+	world_path = world.getValue(), out_path = out.getValue();
+	config_path = util::projectFile(cfg.getValue());
 	overrides = set.getValue(), json = js.getValue(), quiet = q.getValue();
+	look_ahead = look.getValue();
 }
 
 int MapApp::run(std::ostream& out, std::ostream& progress)
@@ -83,6 +89,7 @@ int MapApp::run(std::ostream& out, std::ostream& progress)
 	fs::create_directories(fs::absolute(out_path).parent_path());
 	eval::surveyPlanOf(w).save(out_path);
 	auto o = mission::MissionOptions::fromConfig(cfg, dir, {out_path, {}});
+	o.obstacle_mode = look_ahead;
 	SimulatedWorld sim(cfg, dir, o, world_path);
 	mission::MissionDevices devices(o.devices, sim.devices());
 	mission::MapBuilder builder(o, devices.devices());

@@ -130,7 +130,7 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 		help_shown = true;
 		return;
 	}
-	config_path = cfg.getValue();
+	config_path = util::projectFile(cfg.getValue());
 	plan_path = plan.getValue();
 	world_path = world.getValue();
 	out_dir = out.getValue();
@@ -184,6 +184,7 @@ mission::MissionOptions MissionApp::loadOptions() const
 int MissionApp::run(std::ostream& out, std::ostream& progress)
 {
 	if (help_shown) return 0;
+	StopSignals signals;  // from the start: a stop before the mission moves is still a safe stop
 	options = loadOptions();
 	const auto cfg = openWithOverrides(config_path, overrides);
 	const auto dir = std::filesystem::path(config_path).parent_path().string();
@@ -210,7 +211,6 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 			         << " x=" << s.estimate.y() << " features=" << s.features << "   "
 			         << std::flush;
 		};
-	StopSignals signals;
 	m.stop_flag = &signals.flag();
 	result = m.run();
 	stop_signal = signals.received();
