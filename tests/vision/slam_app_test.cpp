@@ -44,12 +44,13 @@ TEST(SlamApp, LiveOnTheRenderedLabBeatsDeadReckoningAndEndsWithinFiveCentimetres
 	                      "decisions.rawlog", "slam.3Dscene"})
 		EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
 	// The fire sign's centre is an edge-only patch; its stored patch is the best corner nearby,
-	// and the stored position is that corner's point on the sign (maps/lab: z = 5.99 m).
+	// and the stored position is the robot's triangulation of it after lock-on: on the sign's
+	// wall (maps/lab: z = 5.99 m) to within the stereo depth error at 6 m, never the world's.
 	const auto known = std::find_if(app.map.begin(), app.map.end(),
 	                                [](const auto& f) { return f.label == "fire_sign"; });
 	ASSERT_NE(known, app.map.end());
 	EXPECT_TRUE(known->known);
-	EXPECT_NEAR(known->p_FinW.z(), 5.99, 1e-6);
+	EXPECT_NEAR(known->p_FinW.z(), 5.99, 0.05);
 	const double off_m = (known->p_FinW - Eigen::Vector3d(1.0, 1.6, 5.99)).norm();
 	EXPECT_GT(off_m, 1e-3);  // not the centre
 	EXPECT_LT(off_m, 0.15);  // within the sign (0.3 m square)
@@ -119,7 +120,9 @@ std::string configWithSelection(const std::string& selection)
 
 TEST(SlamApp, SaccadeSelectionSkipsTheMeasurementsASaccadeCosts)
 {
-	const SlamApp app = runApp({"--head", "synthetic", "--config", configWithSelection("saccade")});
+	// two known features, acquired at the start (thesis 5.6.2 had the fire sign and a poster)
+	const SlamApp app = runApp({"--head", "synthetic", "--config", configWithSelection("saccade"),
+	                            "--known", "fire_sign,poster_left_a"});
 	const auto& s = app.summary;
 	EXPECT_EQ(s.selection, "saccade");
 	EXPECT_LE(s.slam_final_position_error_m, 0.05);

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -36,12 +37,25 @@ fs::path testDir()
 	return dir;
 }
 
+/** config/sim.ini with wheel slip on most steps: the encoders count what the wheels turned, so
+ * only slip (which they do not see) makes the recording's dead reckoning drift. */
+std::string slippyConfig(const fs::path& dir)
+{
+	std::ifstream in(kRoot + "/config/sim.ini");
+	const std::string path = (dir / "sim.ini").string();
+	std::ofstream out(path);
+	for (std::string line; std::getline(in, line);)
+		out << (line.rfind("slip_probability =", 0) == 0 ? "slip_probability = 0.5" : line) << "\n";
+	return path;
+}
+
 std::string record(const fs::path& dir)
 {
 	const std::string path = (dir / "run.rawlog").string();
 	mrolr::apps::SimApp sim;
 	sim.initialize({"mrolr-sim", "--world", kRoot + "/maps/lab/world.ini", "--out", path,
-	                "--max-steps", std::to_string(kRecordedSteps), "--json"});
+	                "--max-steps", std::to_string(kRecordedSteps), "--config",
+	                slippyConfig(dir), "--json"});
 	std::ostringstream out;
 	EXPECT_EQ(sim.run(out), 0);
 	return path;

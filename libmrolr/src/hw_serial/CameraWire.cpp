@@ -80,7 +80,7 @@ StereoImages readPayload(std::string_view payload)
 	auto in = mrpt::serialization::archiveFrom(mem);
 	StereoImages out;
 	in >> out.time_s >> out.angles.pan >> out.angles.tilt >> out.angles.verg_left >>
-	    out.angles.verg_right;
+	    out.angles.verg_right >> out.frame;
 	mrpt::obs::CObservationStereoImages obs;
 	in.ReadObject(&obs);
 	if (mem.getPosition() != payload.size())
@@ -130,7 +130,7 @@ std::string encodeCameraImages(uint32_t seq, const StereoImages& images)
 	mrpt::io::CMemoryStream mem;
 	auto out = mrpt::serialization::archiveFrom(mem);
 	out << images.time_s << images.angles.pan << images.angles.tilt << images.angles.verg_left
-	    << images.angles.verg_right;
+	    << images.angles.verg_right << images.frame;
 	out << obs;
 	const auto n = size_t(mem.getTotalBytesCount());
 	if (n > kCameraMaxPayloadBytes)

@@ -22,10 +22,16 @@ KnownFeature parseEntry(const mrpt::config::CConfigFileBase& cfg, const std::str
 	const std::string where = util::describeKey(cfg, kSection, id);
 	KnownFeature f;
 	f.id = id;
-	if (fields.size() != 4) throw util::ConfigError(where + ": expected 'X Y Z patch.png'");
-	for (int k = 0; k < 3; ++k)
-		if (!util::parseDouble(fields[k], f.p_FinW[k]))
+	if (fields.size() != 4 && fields.size() != 7)
+		throw util::ConfigError(where + ": expected 'X Y Z patch.png [sigmaX sigmaY sigmaZ]'");
+	for (size_t k = 0; k < fields.size(); ++k)
+	{
+		double v = 0;
+		if (k != 3 && !util::parseDouble(fields[k], v))
 			throw util::ConfigError(where + ": '" + fields[k] + "' is not a number");
+		if (k < 3) f.p_FinW[int(k)] = v;
+		if (k > 3 && !(v >= 0)) throw util::ConfigError(where + ": a sigma must be >= 0");
+	}
 	const auto png = dir / fields[3];
 	f.patch = cv::imread(png.string(), cv::IMREAD_GRAYSCALE);
 	if (f.patch.empty()) throw util::ConfigError(where + ": cannot read patch " + png.string());

@@ -4,7 +4,9 @@
  * maps/<name>/known_features.ini plus one PNG per feature:
  *   [known_features]
  *   # id = X Y Z patch.png     (W: x left, y up, z forward, metres; PNG relative to this file)
- *   fire_sign = 1.0 1.6 5.99 known_patches/fire_sign.png */
+ *   fire_sign = 1.0 1.6 5.99 known_patches/fire_sign.png
+ * The [known_features] section of a mission plan (maps/<name>/plan.ini, written by mrolr-map) has
+ * the same lines with three sigmas after the PNG; they are checked and read past here. */
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>

@@ -26,7 +26,9 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	    false, "lab", "KIND", cmd);
 	TCLAP::ValueArg<std::string> knownArg(
 	    "", "known",
-	    "with --acquire-known: comma-separated landmark names (default: the world's known)", false,
+	    "landmarks to acquire as known features at the start (--acquire-known, or --live without "
+	    "<world dir>/known_features.ini); comma-separated names, default: the world's known",
+	    false,
 	    "", "NAMES", cmd);
 	TCLAP::SwitchArg acquireArg("", "acquire-known",
 	                            "fixate the world's known landmarks from the first waypoint and "

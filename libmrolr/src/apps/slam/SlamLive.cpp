@@ -83,7 +83,8 @@ namespace
 {
 void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w, LiveHead& device,
                       const geometry::BiSightHead& head, const SlamSetup& s,
-                      const Eigen::Vector3d& x0, const std::string& head_kind)
+                      const Eigen::Vector3d& x0, const std::string& head_kind,
+                      const std::vector<std::string>& names)
 {
 	const std::string path = knownFeaturesPath(w);
 	std::vector<vision::KnownFeature> known;
@@ -92,8 +93,9 @@ void addKnownFeatures(vision::VisualSlam& vslam, const world::World& w, LiveHead
 	// the same features are re-acquired by fixation from the start pose.
 	if (head_kind != "synthetic" || known.empty())
 	{
-		std::vector<std::string> ids;
-		for (const auto& f : known) ids.push_back(f.id);
+		std::vector<std::string> ids = names;  // --known, else the file's, else the world's
+		if (ids.empty())
+			for (const auto& f : known) ids.push_back(f.id);
 		known = acquireKnown(w, device, head, s, x0, ids);
 	}
 	for (const auto& f : known) vslam.addKnownFeature(f.id, f.p_FinW, f.patch);
@@ -115,7 +117,7 @@ void SlamApp::runLive()
 	filter.reset(x0);
 	device.setVehicle(x0);
 	vision::VisualSlam vslam(filter, head, s.vision, model);
-	addKnownFeatures(vslam, w, device, head, s, x0, head_kind);
+	addKnownFeatures(vslam, w, device, head, s, x0, head_kind, known_names);
 	TrueWheels wheels(s.run);
 	Eigen::Vector3d x_true = x0, x_dr = x0;
 	auto log = [&](vision::CycleRecord rec, bool at_home = false)
