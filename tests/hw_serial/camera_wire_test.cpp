@@ -23,12 +23,13 @@ std::string payloadOf(const std::string& frame)
 	return frame.substr(hw::kCameraHeaderBytes);
 }
 
-/** Five doubles and @p obs, as an MRCI payload would hold them. */
+/** Five doubles, the frame counter and @p obs, as an MRCI payload would hold them. */
 std::string payloadWith(const mrpt::serialization::CSerializable& obs)
 {
 	mrpt::io::CMemoryStream mem;
 	auto out = mrpt::serialization::archiveFrom(mem);
 	for (int i = 0; i < 5; ++i) out << 1.0;
+	out << uint64_t(7);
 	out << obs;
 	return std::string(static_cast<const char*>(mem.getRawBufferData()),
 	                   size_t(mem.getTotalBytesCount()));
@@ -75,8 +76,10 @@ TEST(CameraWire, UnknownMagicOverlongLengthOrARequestWithPayloadAreRefused)
 
 TEST(CameraWire, APairRoundTripsExactlyThroughThePayload)
 {
-	const auto sent = noisePair(33, 17, 4);  // odd sizes: no row padding to hide behind
+	auto sent = noisePair(33, 17, 4);  // odd sizes: no row padding to hide behind
+	sent.frame = 123456789012ull;
 	const auto got = hw::decodeCameraImages(payloadOf(hw::encodeCameraImages(5, sent)));
+	EXPECT_EQ(got.frame, sent.frame);
 	EXPECT_TRUE(sameGreyPixels(got.left, sent.left));
 	EXPECT_TRUE(sameGreyPixels(got.right, sent.right));
 	EXPECT_EQ(got.time_s, sent.time_s);
@@ -93,6 +96,9 @@ TEST(CameraWire, TheObservationHoldsBothImagesAndTheTimestamp)
 	auto in = mrpt::serialization::archiveFrom(mem);
 	double d[5];
 	for (double& x : d) in >> x;
+	uint64_t frame = 0;
+	in >> frame;
+	EXPECT_EQ(frame, sent.frame);
 	const auto obs = in.ReadObject<mrpt::obs::CObservationStereoImages>();
 	ASSERT_TRUE(obs);
 	EXPECT_TRUE(obs->hasImageRight);
