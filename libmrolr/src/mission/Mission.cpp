@@ -350,8 +350,8 @@ MissionResult Mission::run()
 
 size_t countShots(const std::vector<StereoShot>& shots, StereoShot::Purpose purpose)
 {
-	return static_cast<size_t>(std::count_if(shots.begin(), shots.end(),
-	                                         [&](const StereoShot& s) { return s.purpose == purpose; }));
+	const auto of_purpose = [&](const StereoShot& s) { return s.purpose == purpose; };
+	return static_cast<size_t>(std::count_if(shots.begin(), shots.end(), of_purpose));
 }
 
 }  // namespace mrolr::mission

@@ -10,8 +10,8 @@
  * (eval::surveyPlanOf); the simulated robot, starting at the start pose (which defines W), points
  * its head at the world's `known` landmarks, locks on, drives the route once with SLAM from images
  * and saves the features it mapped well (mission::MapBuilder). No landmark position of the world
- * enters the plan. DIR gets plan.ini, one PNG per feature under patches/ and map_report.json, in which eval compares
- * the saved positions with the truth. Exit 0 when the plan was written, 3 when the drive stopped
+ * enters the plan. DIR gets plan.ini, one PNG per feature under patches/ and map_report.json, in
+ * which eval compares the saved positions with the truth. Exit 0 when the plan was written, 3 when the drive stopped
  * (the plan is still written), 1 for an error, 2 for bad arguments. */
 #include <mrolr/mission/MapBuilder.h>
 
