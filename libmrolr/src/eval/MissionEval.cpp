@@ -5,6 +5,7 @@
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/slam/Chi2.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -69,6 +70,19 @@ void heldObject(json& r, const MissionTruth& t)
 		if (o.name == t.held) model = o.model;
 	r["eval"]["held_instance"] = t.held.empty() ? json(nullptr) : json(t.held);
 	r["eval"]["object_held"] = !t.held.empty() && model == need(r, "target").get<std::string>();
+	r["eval"]["gripper_events"] = gripperEventsJson(t.gripper_events);
+	json disturbed = json::array();
+	for (const auto& o : t.objects)
+	{
+		if (o.name == t.held) continue;
+		const double moved_mm = 1000.0 * (o.T_OinW.translation() - o.T_OinW_start.translation()).norm();
+		const double tilt_deg =
+		    std::acos(std::clamp(o.T_OinW.linear().col(2).dot(o.T_OinW_start.linear().col(2)), -1.0, 1.0)) *
+		    180.0 / M_PI;
+		if (moved_mm > 2 || tilt_deg > 5)
+			disturbed.push_back({{"name", o.name}, {"moved_mm", moved_mm}, {"fell", tilt_deg > 45}});
+	}
+	r["eval"]["objects_disturbed"] = disturbed;
 }
 
 const sim::TruthLog::Frame* frameOf(const MissionTruth& t, const json& recognition)

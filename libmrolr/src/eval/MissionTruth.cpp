@@ -35,7 +35,33 @@ Eigen::Isometry3d transform(const json& j, const char* key, const std::string& s
 		throw std::runtime_error(source + ": field '" + key + "': " + e.what());
 	}
 }
+sim::GripperEvent::Kind kindNamed(const std::string& name, const std::string& source)
+{
+	using K = sim::GripperEvent::Kind;
+	for (K k : {K::Held, K::Slipped, K::Pushed, K::KnockedOver, K::Table})
+		if (name == sim::GripperEvent::name(k)) return k;
+	throw std::runtime_error(source + ": unknown gripper event kind '" + name + "'");
+}
+
+std::vector<sim::GripperEvent> gripperEventsFrom(const json& j, const std::string& source)
+{
+	if (!j.is_array()) throw std::runtime_error(source + ": 'gripper_events' is not a list");
+	std::vector<sim::GripperEvent> out;
+	for (const auto& e : j)
+		out.push_back({kindNamed(field(e, "kind", source).get<std::string>(), source),
+		               field(e, "object", source).get<std::string>(),
+		               field(e, "detail", source).get<std::string>()});
+	return out;
+}
 }  // namespace
+
+json gripperEventsJson(const std::vector<sim::GripperEvent>& events)
+{
+	json out = json::array();
+	for (const auto& e : events)
+		out.push_back({{"kind", sim::GripperEvent::name(e.kind)}, {"object", e.object}, {"detail", e.detail}});
+	return out;
+}
 
 MissionTruth truthOf(const sim::Lab& lab)
 {
@@ -45,6 +71,7 @@ MissionTruth truthOf(const sim::Lab& lab)
 	for (const auto& [name, T] : lab.objectPoses())
 		t.objects.push_back({name, lab.modelOf(name), start.at(name), T});
 	t.held = lab.held();
+	t.gripper_events = lab.gripperEvents();
 	if (const auto& c = lab.simBase().lastContact()) t.contact = ContactTruth{c->what, c->p_zx_m};
 	t.steps = lab.truth().steps;
 	t.frames = lab.truth().frames;
@@ -70,7 +97,8 @@ json truthJson(const MissionTruth& t)
 	          {"phi_deg", t.final_zxphi.z() * 180.0 / M_PI}}},
 	        {"objects", objects},
 	        {"held", t.held.empty() ? json(nullptr) : json(t.held)},
-	        {"contact", contact}};
+	        {"contact", contact},
+	        {"gripper_events", gripperEventsJson(t.gripper_events)}};
 }
 
 MissionTruth truthFromJson(const json& j, const std::string& source)
@@ -98,6 +126,7 @@ MissionTruth truthFromJson(const json& j, const std::string& source)
 		t.contact = ContactTruth{field(c, "what", source).get<std::string>(),
 		                         {number(c, "z_m", source), number(c, "x_m", source)}};
 	}
+	if (j.contains("gripper_events")) t.gripper_events = gripperEventsFrom(j.at("gripper_events"), source);
 	return t;
 }
 

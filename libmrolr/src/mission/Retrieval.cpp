@@ -125,8 +125,17 @@ RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table
 	if (!r.feasible) return r;
 	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
 	r.attempted = true;
-	if (!reachAndVerify(r, arm, reobserve, timeline)) return r;
-	closeAndLift(r, arm, timeline);
+	try
+	{
+		if (!reachAndVerify(r, arm, reobserve, timeline)) return r;
+		closeAndLift(r, arm, timeline);
+	}
+	catch (const hw::ArmBlocked& e)
+	{  // the arm stands where it stalled; the mission goes on without the object
+		r.retrieved = false;
+		r.reasons.push_back(std::string("the arm was blocked: ") + e.what());
+		timeline.note(r.reasons.back());
+	}
 	return r;
 }
 
@@ -162,6 +171,11 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 		r.reasons.push_back("no IK solution for the pre-grasp pose");
 		return false;
 	}
+	// come down onto the pre-grasp from above it: the fingers stay clear of the table's edge and
+	// of the neighbours on the way from wherever the arm was
+	if (const auto above = solve(shifted(preGrasp(r.T_GinA, o_.retrieval.approach_mm),
+	                                     {0, 0, o_.retrieval.approach_mm})))
+		moveTo(arm, *above, timeline);
 	moveTo(arm, *pre, timeline);
 	if (o_.retrieval.visual_verification)
 	{
@@ -170,6 +184,9 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 		else
 			timeline.note("verification: the object was not recognised again; first grasp kept");
 	}
+	// a corrected grasp is approached along its own axis, from its own pre-grasp
+	if (const auto corrected_pre = r.correction_applied ? preGraspJoints(r.T_GinA) : std::nullopt)
+		moveTo(arm, *corrected_pre, timeline);
 	moveTo(arm, r.joints, timeline);
 	timeline.note("at grasp pose (correction " + mm(r.correction_mm) +
 	              (r.correction_applied ? ", applied)" : ", not applied)"));

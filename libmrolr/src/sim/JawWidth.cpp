@@ -1,6 +1,7 @@
 // The jaw distance of a gripper closed on an object's solid (sampled along the closing axis).
 #include <mrolr/sim/JawWidth.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -59,24 +60,31 @@ bool insideShape(const world::ObjectShape& shape, const Eigen::Vector3d& p_inO_m
 	return false;
 }
 
-double jawWidthMm(const world::ObjectShape& shape, const Eigen::Isometry3d& T_OinG_mm,
-                  const JawGeometry& jaws)
+double extentAlongYMm(const world::ObjectShape& shape, const Eigen::Isometry3d& T_GinO_mm,
+                      const SlabSampling& s)
 {
-	const Eigen::Isometry3d T_GinO = T_OinG_mm.inverse(Eigen::Isometry);
 	double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-	const int nx = 5, nz = 9;
-	const int ny = static_cast<int>(std::ceil(jaws.opening_mm / kSampleStep_mm));
-	for (int ix = 0; ix < nx; ++ix)
-		for (int iz = 0; iz < nz; ++iz)
+	const int ny = std::max(1, static_cast<int>(std::ceil(2 * s.half_y_mm / kSampleStep_mm)));
+	for (int ix = 0; ix < s.nx; ++ix)
+		for (int iz = 0; iz < s.nz; ++iz)
 			for (int iy = 0; iy <= ny; ++iy)
 			{
-				const Eigen::Vector3d p_inG((ix / double(nx - 1) - 0.5) * jaws.finger_width_mm,
-				                            (iy / double(ny) - 0.5) * jaws.opening_mm,
-				                            (iz / double(nz - 1) - 0.5) * jaws.finger_length_mm);
-				if (!insideShape(shape, T_GinO * p_inG)) continue;
+				const Eigen::Vector3d p_inG(
+				    s.nx > 1 ? (2.0 * ix / (s.nx - 1) - 1) * s.half_x_mm : 0,
+				    (2.0 * iy / ny - 1) * s.half_y_mm,
+				    s.nz > 1 ? (2.0 * iz / (s.nz - 1) - 1) * s.half_z_mm : 0);
+				if (!insideShape(shape, T_GinO_mm * p_inG)) continue;
 				lo = std::min(lo, p_inG.y()), hi = std::max(hi, p_inG.y());
 			}
 	return hi >= lo ? hi - lo + kSampleStep_mm : 0.0;
+}
+
+double jawWidthMm(const world::ObjectShape& shape, const Eigen::Isometry3d& T_OinG_mm,
+                  const JawGeometry& jaws)
+{
+	const SlabSampling s{jaws.finger_width_mm / 2, 5, jaws.opening_mm / 2, jaws.finger_length_mm / 2,
+	                     9};
+	return extentAlongYMm(shape, T_OinG_mm.inverse(Eigen::Isometry), s);
 }
 
 }  // namespace mrolr::sim

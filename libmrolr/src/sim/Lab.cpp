@@ -62,13 +62,11 @@ Lab::Lab(const LabOptions& o)
 	{ return trueC0() * T_AinC0 * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
 	const JawGeometry jaws{o.gripper.gripper_opening_max_mm, o.gripper.finger_length_mm,
 	                       o.gripper.finger_width_mm};
-	auto jaw_width = [this, jaws](const std::string& name, const Eigen::Isometry3d& T_OinG)
-	{
-		Eigen::Isometry3d T_mm = T_OinG;
-		T_mm.translation() *= 1000.0;
-		return jawWidthMm(shapes_.at(modelOf(name)), T_mm, jaws);
-	};
-	arm_ = std::make_unique<SimArm>(T_GinW, o.arm, poses_, nullptr, jaw_width);
+	std::map<std::string, std::string> model_of;
+	for (const auto& p : o.world.objects) model_of[p.name] = p.model;
+	gripper_ = std::make_unique<GripperPhysics>(o_.world, shapes_, model_of, jaws, o.gripper_physics,
+	                                            poses_);
+	arm_ = std::make_unique<SimArm>(T_GinW, o.arm, poses_, nullptr, gripper_.get());
 	log_.steps.push_back({0, base_.truePose()});
 }
 

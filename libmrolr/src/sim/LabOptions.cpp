@@ -60,6 +60,7 @@ LabOptions LabOptions::load(const CConfigFileBase& cfg, const std::string& base_
 	o.base.loadFromConfigFile(cfg, "sim_base");
 	o.arm.open_width_mm = o.gripper.gripper_opening_max_mm;
 	o.arm.loadFromConfigFile(cfg, "sim_arm");
+	o.gripper_physics.loadFromConfigFile(cfg, "sim_gripper");
 	o.render.noise_sigma_grey = 2.0;
 	o.render.seed = o.seed * kRenderSeedStride;
 	o.render.loadFromConfigFile(cfg, "sim_render");

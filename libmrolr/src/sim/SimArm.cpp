@@ -2,6 +2,8 @@
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/util/Config.h>
 
+#include <algorithm>
+#include <cmath>
 #include <ostream>
 #include <stdexcept>
 
@@ -27,7 +29,10 @@ void SimArmOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 			throw util::ConfigError(util::describeKey(cfg, section, "joint_max") + ": " +
 			                        kJointNames[i] + " maximum must exceed its minimum");
 	}
-	grasp_radius_m = util::readDouble(cfg, section, "grasp_radius_m", grasp_radius_m);
+	if (util::hasKey(cfg, section, "grasp_radius_m"))
+		throw util::ConfigError(util::describeKey(cfg, section, "grasp_radius_m") +
+		                        ": removed; the gripper now holds only what its jaws straddle and "
+		                        "fit ([sim_gripper], docs/sim.md)");
 	open_width_mm = util::readDouble(cfg, section, "open_width_mm", open_width_mm);
 	util::requireInRange(cfg, section, "open_width_mm", open_width_mm, 1, 1000);
 }
@@ -38,19 +43,21 @@ void SimArmOptions::dump(std::ostream& out) const
 	for (double v : min) out << " " << v;
 	out << "\njoint_max =";
 	for (double v : max) out << " " << v;
-	out << "\ngrasp_radius_m = " << grasp_radius_m << "\nopen_width_mm = " << open_width_mm << "\n";
+	out << "\nopen_width_mm = " << open_width_mm << "\n";
 }
 
 SimArm::SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW,
                const SimArmOptions& o, std::map<std::string, Eigen::Isometry3d>& objects,
-               mrpt::opengl::COpenGLScene* scene, JawWidth jaw_width)
+               mrpt::opengl::COpenGLScene* scene, GripperPhysics* physics)
     : T_GinW_(std::move(T_GinW)),
       options_(o),
       objects_(objects),
       scene_(scene),
-      jaw_width_(std::move(jaw_width))
+      physics_(physics)
 {
-	for (int i = 0; i < 7; ++i) joints_[i] = std::clamp(0.0, o.min[i], o.max[i]);
+	// parked as B.3.1 starts it: the column at the top, the arm straight, above what it serves
+	joints_[0] = o.max[0];
+	for (int i = 1; i < 7; ++i) joints_[i] = std::clamp(0.0, o.min[i], o.max[i]);
 }
 
 void SimArm::moveTo(const hw::ArmJoints& joints)
@@ -61,31 +68,57 @@ void SimArm::moveTo(const hw::ArmJoints& joints)
 			                        std::to_string(joints[i]) + " outside [" +
 			                        std::to_string(options_.min[i]) + ", " +
 			                        std::to_string(options_.max[i]) + "]");
-	joints_ = joints;
-	carry();
+	const int n = motionSteps(joints);
+	const hw::ArmJoints from = joints_;
+	for (int k = 1; k <= n; ++k)
+	{
+		hw::ArmJoints j;
+		for (int i = 0; i < 7; ++i) j[i] = from[i] + (joints[i] - from[i]) * k / n;
+		const Eigen::Isometry3d T_before = T_GinW_(joints_), T_now = T_GinW_(j);
+		if (physics_)
+			if (const auto table = physics_->step(T_before, T_now, separationMm(), grasped_))
+				throw hw::ArmBlocked("the gripper met table '" + *table + "' after " +
+				                     std::to_string(k - 1) + " of " + std::to_string(n) +
+				                     " steps of the move; the arm stopped there");
+		joints_ = j;
+		carry();
+	}
+}
+
+int SimArm::motionSteps(const hw::ArmJoints& joints) const
+{
+	if (!physics_) return 1;
+	const Eigen::Isometry3d a = T_GinW_(joints_), b = T_GinW_(joints);
+	// a rotation moves the fingertips about 0.3 m from the wrist's axes at most
+	const double travel_mm = 1000.0 * ((b.translation() - a.translation()).norm() +
+	                                   0.3 * Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle());
+	double joint_travel = 0;  // the middle of a joint move can swing wide of both ends
+	for (int i = 1; i < 7; ++i) joint_travel = std::max(joint_travel, std::abs(joints[i] - joints_[i]));
+	const double swing_mm = joint_travel * M_PI / 180.0 * 700.0;
+	const double step = physics_->options().motion_step_mm;
+	return std::clamp(static_cast<int>(std::ceil(std::max(travel_mm, swing_mm) / step)), 1, 4000);
+}
+
+double SimArm::separationMm() const
+{
+	if (!closed_) return physics_ ? physics_->jaws().opening_mm : options_.open_width_mm;
+	return grasped_.empty() ? 0.0 : width_mm_;
 }
 
 void SimArm::setGripper(bool closed)
 {
 	closed_ = closed;
 	grasped_.clear();
-	if (!closed) return;
-	const Eigen::Isometry3d T_GinW = T_GinW_(joints_);
-	double nearest = options_.grasp_radius_m;
-	for (const auto& [name, T_OinW] : objects_)
-	{
-		const double d = (T_OinW.translation() - T_GinW.translation()).norm();
-		const Eigen::Isometry3d T_OinG = T_GinW.inverse() * T_OinW;
-		if (d >= nearest || (jaw_width_ && jaw_width_(name, T_OinG) <= 0)) continue;
-		nearest = d, grasped_ = name, T_OinG_ = T_OinG;
-	}
+	width_mm_ = 0;
+	if (!closed || !physics_) return;
+	const auto grip = physics_->close(T_GinW_(joints_));
+	grasped_ = grip.object, width_mm_ = grip.width_mm, T_OinG_ = grip.T_OinG;
 }
 
 double SimArm::gripperWidthMm() const
 {
 	if (!closed_) return options_.open_width_mm;
-	if (grasped_.empty() || !jaw_width_) return 0;
-	return jaw_width_(grasped_, T_OinG_);
+	return grasped_.empty() ? 0.0 : width_mm_;
 }
 
 void SimArm::carry()

@@ -33,6 +33,8 @@ struct MissionTruth
 	std::vector<ObjectTruth> objects;
 	std::string held;  ///< instance in the gripper, "" for none
 	std::optional<ContactTruth> contact;
+	/** What the gripper did to the world (pushes, falls, grips, a table), in order. */
+	std::vector<sim::GripperEvent> gripper_events;
 	/** In-process only: every step and every camera frame (empty from T.json). */
 	std::vector<sim::TruthLog::Step> steps;
 	std::vector<sim::TruthLog::Frame> frames;
@@ -45,8 +47,11 @@ struct MissionTruth
 /** The truth of @p lab now (after the run). */
 MissionTruth truthOf(const sim::Lab& lab);
 /** T.json: `{"vehicle": {"z_m", "x_m", "phi_deg"}, "objects": [{"name", "model", "T_OinW",
- * "T_OinW_start"}], "held": NAME or null, "contact": {"what", "z_m", "x_m"} or null}`. */
+ * "T_OinW_start"}], "held": NAME or null, "contact": {"what", "z_m", "x_m"} or null,
+ * "gripper_events": [{"kind", "object", "detail"}]}` (the last optional on reading). */
 nlohmann::json truthJson(const MissionTruth& t);
+/** The gripper's events as a JSON list of {"kind", "object", "detail"}. */
+nlohmann::json gripperEventsJson(const std::vector<sim::GripperEvent>& events);
 /** Reads T.json; throws std::runtime_error naming @p source and the field that is wrong. */
 MissionTruth truthFromJson(const nlohmann::json& j, const std::string& source);
 

@@ -10,6 +10,7 @@
 #include <mrpt/img/CImage.h>
 
 #include <array>
+#include <stdexcept>
 #include <cstdint>
 
 namespace mrolr::hw
@@ -73,12 +74,20 @@ class TurntableDevice
 /** Joint vector of the UMI RTX arm: d1 (mm, the vertical column), q1..q6 (degrees). */
 using ArmJoints = std::array<double, 7>;
 
+/** The arm stopped against something before it reached the commanded joints (its motors stalled);
+ * it stands at the last pose it reached. */
+struct ArmBlocked : std::runtime_error
+{
+	using std::runtime_error::runtime_error;
+};
+
 /** The UMI RTX arm (thesis 6.7): joint moves within the workspace limits and the gripper. */
 class ArmDevice
 {
  public:
 	virtual ~ArmDevice() = default;
-	/** Moves to @p joints; throws std::out_of_range naming the joint if a limit is exceeded. */
+	/** Moves to @p joints; throws std::out_of_range naming the joint if a limit is exceeded, and
+	 * ArmBlocked when the arm meets something on the way. */
 	virtual void moveTo(const ArmJoints& joints) = 0;
 	virtual ArmJoints joints() const = 0;
 	virtual void setGripper(bool closed) = 0;

@@ -11,7 +11,7 @@
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/hw/Devices.h>
-#include <mrolr/sim/JawWidth.h>
+#include <mrolr/sim/GripperPhysics.h>
 #include <mrolr/sim/SimArm.h>
 #include <mrolr/sim/SimBase.h>
 #include <mrolr/sim/StereoRenderer.h>
@@ -31,7 +31,7 @@ namespace mrolr::sim
 /** Everything the simulated lab is built from. loadFromConfigFile() reads the world side's
  * sections of a mission file: `[simulator] world_file` (or the one given), the robot's physical
  * build from the files `[files]` names (labmate, bisight, arm) and `[arm_mount] T_C0inA`,
- * `[sim_base]`, `[sim_arm]`, `[sim_render]` (all keys optional) and `[mission] seed`, from which
+ * `[sim_base]`, `[sim_arm]`, `[sim_gripper]`, `[sim_render]` (all keys optional) and `[mission] seed`, from which
  * every random draw of the world follows. */
 struct LabOptions
 {
@@ -44,6 +44,7 @@ struct LabOptions
 	arm::ArmMount mount;                   ///< physical T_C0inA of the arm on the base (mm)
 	SimBaseOptions base;
 	SimArmOptions arm;
+	GripperPhysicsOptions gripper_physics;
 	RenderOptions render;
 	double head_move_time_s = 2.0;  ///< settle time a head move reports
 	unsigned seed = 1;
@@ -97,6 +98,8 @@ class Lab
 	const std::map<std::string, Eigen::Isometry3d>& objectPoses() const { return poses_; }
 	/** Instance in the gripper, "" if none. */
 	const std::string& held() const { return arm_->grasped(); }
+	/** What the gripper did to the world, in order (pushes, falls, grips, the table). */
+	const std::vector<GripperEvent>& gripperEvents() const { return gripper_->events(); }
 	/** The model of instance @p name ("" if unknown). */
 	std::string modelOf(const std::string& name) const;
 	const TruthLog& truth() const { return log_; }
@@ -120,6 +123,7 @@ class Lab
 	TruthLog log_;
 	std::unique_ptr<hw::BaseDevice> base_device_;
 	std::unique_ptr<hw::HeadDevice> head_;
+	std::unique_ptr<GripperPhysics> gripper_;
 	std::unique_ptr<SimArm> arm_;
 };
 

@@ -4,6 +4,7 @@
  * forward kinematics as a function so that it runs with any chain. */
 
 #include <mrolr/hw/Devices.h>
+#include <mrolr/sim/GripperPhysics.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/opengl/COpenGLScene.h>
@@ -17,35 +18,32 @@
 
 namespace mrolr::sim
 {
-/** Section [sim_arm] of config/sim.ini: joint limits (d1 in mm, q1..q6 in degrees) and the grasp
- * capture radius. */
+/** Section [sim_arm] of config/sim.ini: joint limits (d1 in mm, q1..q6 in degrees) and the
+ * open jaw distance. */
 struct SimArmOptions
 {
 	hw::ArmJoints min{0, -180, -90, -160, -110, -90, -180};
 	hw::ArmJoints max{915, 180, 90, 160, 110, 90, 180};
-	/** Closing the gripper catches the nearest object whose origin is this close to the grasp
-	 * point and that the jaws touch (JawWidth callback > 0). */
-	double grasp_radius_m = 0.05;
 	double open_width_mm = 90;  ///< jaw distance of the open gripper (the RTX's 90 mm)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
 
-/** The jaw distance (mm) when the gripper closes on object @p name at @p T_OinG (m); 0 when the
- * jaws meet without touching it. */
-using JawWidth = std::function<double(const std::string& name, const Eigen::Isometry3d& T_OinG)>;
-
 class SimArm : public hw::ArmDevice
 {
  public:
 	/** @p T_GinW: gripper pose in W (thesis axes) for joints; @p objects: name → T_OinW (the arm
 	 * updates the grasped one); @p scene: if given, its "object.<name>" visual follows;
-	 * @p jaw_width: the width the closed jaws report on a caught object (unset: 0). */
+	 * @p physics: what the fingers meet on the way and whether a closing grip holds
+	 * (GripperPhysics.h); without it the gripper closes on nothing. */
 	SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW, const SimArmOptions& o,
 	       std::map<std::string, Eigen::Isometry3d>& objects,
-	       mrpt::opengl::COpenGLScene* scene = nullptr, JawWidth jaw_width = {});
+	       mrpt::opengl::COpenGLScene* scene = nullptr, GripperPhysics* physics = nullptr);
 
+	/** Moves in joint space along the straight line to @p joints, the gripper tested against the
+	 * world every GripperPhysicsOptions::motion_step_mm; throws hw::ArmBlocked (the arm left at
+	 * the last free pose) when a finger meets a table. */
 	void moveTo(const hw::ArmJoints& joints) override;
 	hw::ArmJoints joints() const override { return joints_; }
 	void setGripper(bool closed) override;
@@ -63,10 +61,16 @@ class SimArm : public hw::ArmDevice
 	SimArmOptions options_;
 	std::map<std::string, Eigen::Isometry3d>& objects_;
 	mrpt::opengl::COpenGLScene* scene_;
-	JawWidth jaw_width_;
+	/** Tested poses of the move to @p joints (1 without physics). */
+	int motionSteps(const hw::ArmJoints& joints) const;
+	/** The jaw separation the fingers have now (mm). */
+	double separationMm() const;
+
+	GripperPhysics* physics_;
 	hw::ArmJoints joints_{};
 	bool closed_ = false;
 	std::string grasped_;
+	double width_mm_ = 0;  ///< jaw distance on the caught object
 	Eigen::Isometry3d T_OinG_ = Eigen::Isometry3d::Identity();
 };
 
