@@ -148,6 +148,34 @@ void retrievalErrors(json& r, const Match& m, const MissionTruth& t)
 	        .norm();
 }
 
+/** The estimated table top against the true one under the found object, in C0 at the
+ * recognising frame: the height of the true top's point under the object above the estimate
+ * (mm) and the angle between the normals (deg). */
+void tablePlaneError(json& r, const Match& m, const MissionTruth& t)
+{
+	const json& est = need(need(r, "robot"), "recognition");
+	if (!t.world || !est.contains("table_plane_C0") || est.at("table_plane_C0").is_null()) return;
+	const world::PlacedObject* placed = nullptr;
+	for (const auto& o : t.world->objects)
+		if (o.name == m.instance) placed = &o;
+	const world::Table* table = placed ? t.world->findTable(placed->table) : nullptr;
+	if (!table) return;
+	const json& p = est.at("table_plane_C0");
+	const Eigen::Vector3d n_est(p.at("n")[0].get<double>(), p.at("n")[1].get<double>(),
+	                            p.at("n")[2].get<double>());
+	const double d_est = p.at("d_mm").get<double>();
+	// m.T_true: the object in C0 (mm); its origin is the centre of its footprint on the top
+	const Eigen::Vector3d p_C0 = m.T_true.translation();
+	const double height_mm = n_est.dot(p_C0) + d_est;
+	// the true top is level: its normal in C0 is W's up seen from C0, which stands level too
+	const auto* frame = frameOf(t, need(need(r, "robot"), "recognition"));
+	if (!frame) return;
+	const Eigen::Vector3d n_true = frame->T_C0inW.linear().transpose() * Eigen::Vector3d::UnitY();
+	auto& out = r["recognition"]["table_plane"];
+	out["error_mm"] = std::abs(height_mm);
+	out["error_deg"] = std::acos(std::clamp(n_est.normalized().dot(n_true), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
 void objectErrors(json& r, const MissionTruth& t)
 {
 	if (!need(r, "found").get<bool>()) return;
@@ -158,6 +186,7 @@ void objectErrors(json& r, const MissionTruth& t)
 	r["object_rotation_error_deg"] = m.rotation_deg;
 	r["eval"]["object_pose_frame"] = m.in_C0 ? "C0 at the recognising frame" : "W";
 	if (m.in_C0) r["recognition"]["T_OinC0_true_mm"] = mission::matrix34(m.T_true);
+	if (m.in_C0) tablePlaneError(r, m, t);
 	retrievalErrors(r, m, t);
 }
 

@@ -106,6 +106,10 @@ void readModelFiles(const CConfigFileBase& cfg, const std::string& dir, MissionO
 	o.slam.loadFromConfigFile(openNamed(cfg, "files", "slam_file", dir), "slam");
 	o.recognition.loadFromConfigFile(openNamed(cfg, "files", "recognition_file", dir),
 	                                 "recognition");
+	// single-feature hypotheses on the estimated table top (ObjectSearch), as the recogniser
+	// was measured
+	o.recognition.plane.loadFromConfigFile(openNamed(cfg, "files", "recognition_file", dir),
+	                                       "plane_hypotheses");
 	const auto rtx = openNamed(cfg, "files", "arm_file", dir);
 	o.rtx.loadFromConfigFile(rtx, "rtx");
 	o.grasp.loadFromConfigFile(rtx, "arm_grasp");

@@ -25,7 +25,25 @@ Eigen::Vector3d centreOf(const model::WireFrame& wf)
 	return n ? Eigen::Vector3d(sum / static_cast<double>(n)) : sum;
 }
 
+/** @p plane_L moved into C0 (mm). */
+recog::SupportPlane planeInC0(const recog::SupportPlane& plane_L, const Eigen::Isometry3d& T_LinC0_mm)
+{
+	const Eigen::Vector3d n_C0 = T_LinC0_mm.linear() * plane_L.n_S;
+	recog::SupportPlane out;
+	out.n_S = n_C0;
+	out.d_mm = plane_L.d_mm - n_C0.dot(T_LinC0_mm.translation());
+	return out;
+}
 }  // namespace
+
+std::vector<double> ObjectSearch::expectedTableHeights_mm(const Eigen::Isometry3d& T_LinC0_mm) const
+{
+	// C0 is head_height_m above the floor, +y up; L's origin is T_LinC0's translation from it
+	const double L_above_floor_mm = 1000.0 * o_.bisight.head_height_m + T_LinC0_mm.translation().y();
+	std::vector<double> out;
+	for (const auto& t : o_.plan.tables) out.push_back(1000.0 * t.top_height_m - L_above_floor_mm);
+	return out;
+}
 
 ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& target,
                            ViewSource views)
@@ -61,13 +79,17 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	// C0 stands level on the base: its +y is the scene's up (upright prior, expected-visible
 	// verification; docs/recog.md).
 	const Eigen::Vector3d up_L = head_.up_L(angles);
-	r.recognition = recognizer_.recognize(view.scene, &up_L, view.images.get());
+	const Eigen::Isometry3d T_LinC0_mm = toMm(head_.T_LinC0(angles));
+	r.table_plane = recog::estimateTablePlane(view.scene, up_L, expectedTableHeights_mm(T_LinC0_mm));
+	r.table_plane_C0 = planeInC0(r.table_plane.plane, T_LinC0_mm);
+	const recog::SupportPlane* plane = r.table_plane.found ? &r.table_plane.plane : nullptr;
+	r.recognition = recognizer_.recognize(view.scene, &up_L, view.images.get(), plane);
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found;
 	if (!r.found) return r;
 	r.T_OinL = r.recognition.T_OinS;
-	r.T_OinC0 = toMm(head_.T_LinC0(angles)) * r.T_OinL;
+	r.T_OinC0 = T_LinC0_mm * r.T_OinL;
 	return r;
 }
 

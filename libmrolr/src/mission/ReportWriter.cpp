@@ -118,6 +118,27 @@ json nisJson(const std::vector<NisRecord>& nis)
 	        {"values", values}};
 }
 
+/** The estimated table top in C0 as {"n": [3], "d_mm"} (n·p + d_mm is a point's height), or null. */
+json tablePlaneJson(const SearchResult& s)
+{
+	if (!s.table_plane.found) return nullptr;
+	const auto& n = s.table_plane_C0.n_S;
+	return {{"n", {n.x(), n.y(), n.z()}}, {"d_mm", s.table_plane_C0.d_mm}};
+}
+
+json tablePlaneSummary(const SearchResult& s)
+{
+	const auto& e = s.table_plane;
+	return {{"found", e.found},
+	        {"plane_C0", tablePlaneJson(s)},
+	        {"horizontal_features", e.horizontal},
+	        {"standing_features", e.standing},
+	        {"support_mm", e.support_mm},
+	        {"reason", e.found ? json(nullptr) : json(e.reason)},
+	        {"error_mm", nullptr},
+	        {"error_deg", nullptr}};
+}
+
 json robotJson(const MissionResult& r, const MissionOptions& o)
 {
 	const PathSample last = r.path.empty() ? PathSample{} : r.path.back();
@@ -138,7 +159,8 @@ json robotJson(const MissionResult& r, const MissionOptions& o)
 	if (r.found)
 		j["recognition"] = {{"T_OinC0_mm", matrix34(r.search.T_OinC0)},
 		                    {"frame", r.search.frame ? json(*r.search.frame) : json(nullptr)},
-		                    {"search_estimate_zxphi", vec(r.search_xv_estimate)}};
+		                    {"search_estimate_zxphi", vec(r.search_xv_estimate)},
+		                    {"table_plane_C0", tablePlaneJson(r.search)}};
 	return j;
 }
 }  // namespace
@@ -221,7 +243,8 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"level", r.search.recognition.level},
 		                    {"views", r.search.views},
 		                    {"T_OinC0_mm", matrix34(r.search.T_OinC0)},
-		                    {"T_OinC0_true_mm", nullptr}};
+		                    {"T_OinC0_true_mm", nullptr},
+		                    {"table_plane", tablePlaneSummary(r.search)}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);
 	return j;

@@ -10,6 +10,7 @@
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/TablePlaneEstimate.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -29,6 +30,10 @@ struct SearchResult
 	Eigen::Isometry3d T_OinC0 = Eigen::Isometry3d::Identity();  ///< recognised, mm
 	/** The camera frame of the view (hw::StereoImages::frame); none for a simulated scene. */
 	std::optional<uint64_t> frame;
+	/** The table top estimated from the view's scene (recog/TablePlaneEstimate.h), and the same
+	 * plane in C0 (mm): given to the recogniser with the up direction. */
+	recog::TablePlaneEstimate table_plane;
+	recog::SupportPlane table_plane_C0;
 	int views = 0;
 	double compute_s = 0;
 };
@@ -65,6 +70,10 @@ class ObjectSearch
 	const geometry::BiSightHead& head() const { return head_; }
 
  private:
+	/** The plan's table tops as heights along up from L's origin (mm): the prior of the table
+	 * plane estimate (C0 stands head_height_m above the floor, +y up). */
+	std::vector<double> expectedTableHeights_mm(const Eigen::Isometry3d& T_LinC0_mm) const;
+
 	const MissionOptions& o_;
 	geometry::BiSightHead head_;
 	recog::Recognizer recognizer_;
