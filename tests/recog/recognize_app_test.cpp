@@ -1,5 +1,8 @@
 #include <mrolr/apps/RecognizeApp.h>
+#include <mrolr/model/WireFrameIO.h>
+#include <mrolr/recog/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
+#include <mrolr/recog/WireFrameBuilder.h>
 #include <mrolr/util/Cli.h>
 
 #include <gtest/gtest.h>
@@ -124,4 +127,38 @@ TEST(recognize_app, stereo_inputs_checked)
 	                  std::string(MROLR_SOURCE_DIR) + "/config/calib_mrpt_bumblebee.ini"},
 	                 out),
 	          1);
+}
+
+// An ambiguous answer in --json: "ambiguous": true and every pose with its support, T the best.
+TEST(recognize_app, json_reports_an_ambiguous_pose_with_every_pose)
+{
+	using V = Eigen::Vector3d;
+	const auto dir = fs::temp_directory_path() / "mrolr_recognize_ambiguous";
+	fs::create_directories(dir);
+	mrolr::recog::WireFrameBuilder label("labelled_box"), plain("plain_box");
+	label.box({-60, -30, 0}, {60, 30, 40});
+	label.polyline({{60, -20, 8}, {60, 20, 8}, {60, 20, 33}, {60, -20, 33}}, true);
+	plain.box({-60, -30, 0}, {60, 30, 40});
+	auto scene = mrolr::recog::placeInScene(plain.build(),
+	                                        mrolr::recog::tablePose(30, 25, V(20, -80, 700)));
+	scene.frame = mrolr::model::WireFrameFrame::LeftCamera;
+	mrolr::model::saveWireFrame(label.build(), (dir / "model.wf").string());
+	mrolr::model::saveWireFrame(scene, (dir / "scene.wf").string());
+	std::string out;
+	ASSERT_EQ(runApp({"mrolr-recognize", "--model", (dir / "model.wf").string(), "--scene",
+	                  (dir / "scene.wf").string(), "--json"},
+	                 out),
+	          0)
+	    << out;
+	const auto r = nlohmann::json::parse(out)["results"][0];
+	ASSERT_TRUE(r["found"].get<bool>());
+	EXPECT_TRUE(r["ambiguous"].get<bool>());
+	ASSERT_GE(r["poses"].size(), 2u);
+	EXPECT_EQ(r["poses"][0]["T"], r["T"]);
+	for (const auto& p : r["poses"])
+	{
+		EXPECT_EQ(p["T"].size(), 4u);
+		EXPECT_GT(p["support"].get<double>(), 0.0);
+	}
+	fs::remove_all(dir);
 }

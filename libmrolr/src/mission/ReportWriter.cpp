@@ -126,6 +126,16 @@ json tablePlaneJson(const SearchResult& s)
 	return {{"n", {n.x(), n.y(), n.z()}}, {"d_mm", s.table_plane_C0.d_mm}};
 }
 
+/** Every pose of an ambiguous answer in C0 (mm) with its support; empty when not ambiguous. */
+json posesJson(const SearchResult& s)
+{
+	json out = json::array();
+	const Eigen::Isometry3d T_LinC0 = s.T_OinC0 * s.T_OinL.inverse();
+	for (const auto& p : s.recognition.poses)
+		out.push_back({{"T_OinC0_mm", matrix34(T_LinC0 * p.T_OinS)}, {"support", p.support}});
+	return out;
+}
+
 json tablePlaneSummary(const SearchResult& s)
 {
 	const auto& e = s.table_plane;
@@ -244,7 +254,9 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"views", r.search.views},
 		                    {"T_OinC0_mm", matrix34(r.search.T_OinC0)},
 		                    {"T_OinC0_true_mm", nullptr},
-		                    {"table_plane", tablePlaneSummary(r.search)}};
+		                    {"table_plane", tablePlaneSummary(r.search)},
+		                    {"ambiguous", r.search.recognition.ambiguous},
+		                    {"poses", posesJson(r.search)}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);
 	return j;

@@ -136,6 +136,17 @@ void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	                     10);
 	upright_max_tilt_deg = util::readDouble(cfg, section, "upright_max_tilt_deg", 20.0);
 	util::requireInRange(cfg, section, "upright_max_tilt_deg", upright_max_tilt_deg, 0, 180);
+	ambiguity_margin = util::readDouble(cfg, section, "ambiguity_margin", ambiguity_margin);
+	util::requireInRange(cfg, section, "ambiguity_margin", ambiguity_margin, 0, 1);
+	ambiguity_min_turn_deg =
+	    util::readDouble(cfg, section, "ambiguity_min_turn_deg", ambiguity_min_turn_deg);
+	util::requireInRange(cfg, section, "ambiguity_min_turn_deg", ambiguity_min_turn_deg, 0, 180);
+	ambiguity_symmetry_mm =
+	    util::readDouble(cfg, section, "ambiguity_symmetry_mm", ambiguity_symmetry_mm);
+	util::requireInRange(cfg, section, "ambiguity_symmetry_mm", ambiguity_symmetry_mm, 0, 1000);
+	ambiguity_symmetry_share =
+	    util::readDouble(cfg, section, "ambiguity_symmetry_share", ambiguity_symmetry_share);
+	util::requireInRange(cfg, section, "ambiguity_symmetry_share", ambiguity_symmetry_share, 0, 1);
 }
 
 void RecognitionOptions::dump(std::ostream& out) const
@@ -157,7 +168,11 @@ void RecognitionOptions::dump(std::ostream& out) const
 	    << "\nskip_hopeless_levels = " << (skip_hopeless_levels ? "true" : "false")
 	    << "\nverify_visible_only = " << (verify_visible_only ? "true" : "false")
 	    << "\nvisible_min_score_factor = " << visible_min_score_factor
-	    << "\nupright_max_tilt_deg = " << upright_max_tilt_deg << "\n";
+	    << "\nupright_max_tilt_deg = " << upright_max_tilt_deg
+	    << "\nambiguity_margin = " << ambiguity_margin
+	    << "\nambiguity_min_turn_deg = " << ambiguity_min_turn_deg
+	    << "\nambiguity_symmetry_mm = " << ambiguity_symmetry_mm
+	    << "\nambiguity_symmetry_share = " << ambiguity_symmetry_share << "\n";
 }
 
 }  // namespace mrolr::recog

@@ -199,6 +199,7 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 	}
 	best.found = images ? best.image_score >= images->options().min_score
 	                    : best.score >= minScore(level, up_S);
+	if (best.found) markAmbiguity(best, verified);
 	best.level = best.found ? static_cast<int>(level) + 1 : 0;
 	const double s = images ? std::max(0.0, best.image_score) : best.score;
 	best.confidence = best.found ? confidenceOf(s, level, opts_.levels.size()) : 0.0;

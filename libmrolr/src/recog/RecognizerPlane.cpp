@@ -72,15 +72,18 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	}
 	judgeInImages(poses, images, os.features, p, up_S);
 	double best_rank = -1;
+	std::vector<VerifiedPose> eligible;  // the poses that could be the answer
 	for (const auto& h : poses)
 	{
 		const double rank = detail::rankOf(h.v, h.image);
 		// a pair of vertical lines is common in a scene of boxes and cylinders: edge-pair answers
 		// need more of the images
 		if (hyps[h.cluster].from_edge_pair && h.image < po.edge_pair_min_image_score) continue;
-		if (rank <= best_rank || !upright(h.T, up_S) ||
+		if (!upright(h.T, up_S) ||
 		    std::abs(plane_gen_->baseOffset_mm(h.T, plane)) > po.max_base_offset_mm)
 			continue;
+		eligible.push_back(h);
+		if (rank <= best_rank) continue;
 		best_rank = rank;
 		best.image_score = h.image;
 		best.T_OinS = h.T;
@@ -94,6 +97,7 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	const size_t levels = opts_.levels.size();
 	best.level = best.found ? static_cast<int>(levels) + 1 : 0;
 	best.confidence = best.found ? 0.5 * best.image_score : 0.0;
+	if (best.found) markAmbiguity(best, eligible);
 	return best;
 }
 

@@ -72,6 +72,15 @@ struct RecognitionOptions
 	/** verify_min_score is multiplied by this when the visible-only score is used (such scores
 	 * are about twice the whole-model ones). Optional key, default 1.2. */
 	double visible_min_score_factor = 1.2;
+	/** Ambiguity (beyond the thesis): another verified pose of the recognising level whose rank is
+	 * within this fraction of the best's, turned at least ambiguity_min_turn_deg from it, and not
+	 * a symmetry of the model (fewer than ambiguity_symmetry_share of its edge samples land within
+	 * ambiguity_symmetry_mm of the best pose's), makes the answer ambiguous. Optional keys,
+	 * defaults 0.05, 20, 3, 0.9. */
+	double ambiguity_margin = 0.05;
+	double ambiguity_min_turn_deg = 20;
+	double ambiguity_symmetry_mm = 3;
+	double ambiguity_symmetry_share = 0.9;
 	/** Hypotheses from single features on the support plane: section [plane_hypotheses], read
 	 * by its own loadFromConfigFile (not by this struct's, which reads [recognition] only). */
 	PlaneHypothesisOptions plane;

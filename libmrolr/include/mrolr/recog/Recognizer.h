@@ -24,6 +24,14 @@
 
 namespace mrolr::recog
 {
+/** A pose the scene supports, and how well (the rank the answer was chosen by: image score +
+ * 0.05 × 3D score with images, 3D score + 0.05 × coverage without). */
+struct PoseSupport
+{
+	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();
+	double support = 0;
+};
+
 struct RecognitionResult
 {
 	std::string model;
@@ -49,6 +57,11 @@ struct RecognitionResult
 	/** Found in the second search of mutual occlusion (MutualOcclusion.h): this many recognised
 	 * objects' regions were left out of the image score. 0: found without them. */
 	int occluders = 0;
+	/** Several poses supported about equally (RecognitionOptions::ambiguity_*): a nearly
+	 * symmetric object whose telling part is hidden. poses then lists every one of them, the
+	 * best (T_OinS) first; empty when not ambiguous. */
+	bool ambiguous = false;
+	std::vector<PoseSupport> poses;
 };
 
 class Recognizer
@@ -150,6 +163,10 @@ class Recognizer
 		double image = -1;
 		size_t cluster = 0;
 	};
+	/** Marks @p best ambiguous when another of @p poses is a near-equal rival (not a symmetry). */
+	void markAmbiguity(RecognitionResult& best, const std::vector<VerifiedPose>& poses) const;
+	/** True when the model's edges under @p a and @p b coincide within ambiguity_symmetry_mm. */
+	bool symmetric(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) const;
 	/** Scores @p poses in @p images, refines the best options().refine_candidates in the images
 	 * (ImageVerifier::refine) and re-verifies them in 3D against @p scene at level @p p. */
 	void judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,

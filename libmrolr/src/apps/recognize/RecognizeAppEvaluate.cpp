@@ -37,6 +37,7 @@ nlohmann::json caseJson(const eval::EvalCase& c)
 	        {"level", c.level},
 	        {"from_plane", c.result.from_plane},
 	        {"occluders", c.result.occluders},
+	        {"ambiguous", c.result.ambiguous},
 	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
 	        {"ms", c.ms}};
@@ -140,7 +141,8 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 			    << ": visible " << c.visible_fraction << ", "
 			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found")
 			    << (c.found && c.result.from_plane ? " (plane)" : "")
-			    << (c.found && c.result.occluders ? " (behind found)" : "") << ", score " << c.score
+			    << (c.found && c.result.occluders ? " (behind found)" : "")
+			    << (c.found && c.result.ambiguous ? " (ambiguous)" : "") << ", score " << c.score
 			    << " (at truth " << c.truth_score << "), image " << c.image_score << " (at truth "
 			    << c.truth_image_score << "), level " << c.level << ", err " << c.rot_err_deg
 			    << " deg " << c.trans_err_mm << " mm, " << c.ms << " ms\n";

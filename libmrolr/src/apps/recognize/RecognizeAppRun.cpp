@@ -214,6 +214,8 @@ void RecognizeApp::printText(std::ostream& out) const
 		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
 		    << (r.from_plane ? " (support-plane hypothesis)" : "")
 		    << (r.occluders ? " (behind " + std::to_string(r.occluders) + " found)" : std::string())
+		    << (r.ambiguous ? " (ambiguous: " + std::to_string(r.poses.size()) + " poses)"
+		                    : std::string())
 		    << ", score " << r.score << imageNote(r) << ", confidence " << r.confidence << ", "
 		    << r.matched << " segments matched, " << r.ms << " ms\n  T (model -> scene, mm):\n";
 		printMatrix(out, r.T_OinS.matrix());

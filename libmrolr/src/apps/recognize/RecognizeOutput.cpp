@@ -67,9 +67,15 @@ Eigen::Vector3d rollPitchYawDeg(const Eigen::Matrix3d& R)
 
 nlohmann::json resultJson(const recog::RecognitionResult& r)
 {
-	nlohmann::json T = nlohmann::json::array();
-	for (int i = 0; i < 4; ++i)
-		T.push_back({r.T_OinS(i, 0), r.T_OinS(i, 1), r.T_OinS(i, 2), r.T_OinS(i, 3)});
+	const auto matrix44 = [](const Eigen::Isometry3d& M)
+	{
+		nlohmann::json rows = nlohmann::json::array();
+		for (int i = 0; i < 4; ++i) rows.push_back({M(i, 0), M(i, 1), M(i, 2), M(i, 3)});
+		return rows;
+	};
+	const nlohmann::json T = matrix44(r.T_OinS);
+	nlohmann::json poses = nlohmann::json::array();
+	for (const auto& p : r.poses) poses.push_back({{"T", matrix44(p.T_OinS)}, {"support", p.support}});
 	const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
 	const auto& t = r.T_OinS.translation();
 	return {{"model", r.model},
@@ -88,7 +94,9 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"spread_trans_mm", r.spread_trans_mm},
 	        {"image_score", r.image_score},
 	        {"from_plane", r.from_plane},
-	        {"occluders", r.occluders}};
+	        {"occluders", r.occluders},
+	        {"ambiguous", r.ambiguous},
+	        {"poses", poses}};
 }
 
 std::vector<std::vector<Eigen::Vector3d>> polylinesOf(const model::WireFrame& wf)
