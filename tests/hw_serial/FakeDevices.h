@@ -44,6 +44,7 @@ struct Arm : mrolr::hw::ArmDevice
 	void moveTo(const mrolr::hw::ArmJoints& t) override
 	{
 		if (t[0] < 0) throw std::out_of_range("arm joint d1_mm = -1 outside [0, 915]");
+		if (t[0] > 910) throw mrolr::hw::ArmBlocked("the gripper met table 'main'");
 		j = t;
 	}
 	mrolr::hw::ArmJoints joints() const override { return j; }

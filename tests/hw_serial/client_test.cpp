@@ -212,6 +212,7 @@ TEST(SerialDrivers, LimitRefusalsBecomeTheInterfacesExceptions)
 	SerialArm sarm(std::make_unique<SerialClient>(std::move(host_a), fastLink()));
 	EXPECT_THROW(shead.moveTo({4, 0, 0, 0}), geometry::FixationError);
 	EXPECT_THROW(sarm.moveTo({-1, 0, 0, 0, 0, 0, 0}), std::out_of_range);
+	EXPECT_THROW(sarm.moveTo({911, 0, 0, 0, 0, 0, 0}), hw::ArmBlocked);  // ERR BLOCKED
 	EXPECT_THROW(shead.grab(), std::logic_error);  // no image source
 	EXPECT_DOUBLE_EQ(shead.moveTo({0.1, 0, 0, 0}), 0.5);
 	EXPECT_DOUBLE_EQ(sarm.gripperWidthMm(), 90);

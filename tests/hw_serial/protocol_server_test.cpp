@@ -129,6 +129,7 @@ TEST(ProtocolServer, ArmMovesGripsAndRefusesLimits)
 	EXPECT_EQ(ask(server, "6 GRIP").rfind("6 ERR BADARG", 0), 0u);
 	EXPECT_EQ(ask(server, "7 MOVE -1 0 0 0 0 0 0"),
 	          "7 ERR LIMIT arm joint d1_mm = -1 outside [0, 915]");
+	EXPECT_EQ(ask(server, "8 MOVE 911 0 0 0 0 0 0"), "8 ERR BLOCKED the gripper met table 'main'");
 	EXPECT_EQ(arm.j[0], 500);
 	EXPECT_TRUE(arm.closed);
 }

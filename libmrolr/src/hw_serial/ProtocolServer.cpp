@@ -1,4 +1,5 @@
 #include <mrolr/geometry/GeometryError.h>
+#include <mrolr/hw/Devices.h>
 #include <mrolr/hw_serial/Message.h>
 #include <mrolr/hw_serial/ProtocolServer.h>
 
@@ -62,6 +63,10 @@ std::string ProtocolServer::execute(int seq, const std::string& verb,
 	catch (const geometry::FixationError& e)
 	{
 		return errorReply(seq, errcode::kLimit, e.what());
+	}
+	catch (const ArmBlocked& e)
+	{
+		return errorReply(seq, errcode::kBlocked, e.what());
 	}
 	catch (const std::exception& e)
 	{

@@ -130,13 +130,23 @@ SerialArm::SerialArm(std::unique_ptr<SerialClient> client) : client_(std::move(c
 
 void SerialArm::moveTo(const ArmJoints& j)
 {
-	mapLimit<std::out_of_range>(
-	    *client_,
-	    [&]
-	    {
-		    return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())),
-		                         client_->options().motion_timeout_ms);
-	    });
+	try
+	{
+		mapLimit<std::out_of_range>(
+		    *client_,
+		    [&]
+		    {
+			    return client_->call("MOVE", numberFields(std::vector<double>(j.begin(), j.end())),
+			                         client_->options().motion_timeout_ms);
+		    });
+	}
+	catch (const SerialDeviceError& e)
+	{  // the arm stalled on the way: the same exception as in process, the line still alive
+		if (e.kind() == SerialDeviceError::Kind::Refused &&
+		    client_->lastErrorCode() == errcode::kBlocked)
+			throw ArmBlocked(e.what());
+		throw;
+	}
 }
 
 ArmJoints SerialArm::joints() const

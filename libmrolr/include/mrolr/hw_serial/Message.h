@@ -30,6 +30,7 @@ constexpr const char* kBadCmd = "BADCMD";    ///< unknown verb
 constexpr const char* kBadArg = "BADARG";    ///< wrong field count or a field not a number
 constexpr const char* kLimit = "LIMIT";      ///< the device refused: joint or workspace limit
 constexpr const char* kFault = "FAULT";      ///< the device failed while executing
+constexpr const char* kBlocked = "BLOCKED";  ///< the arm stopped against something on the way
 }  // namespace errcode
 
 /** Result of parsing a body. */
