@@ -134,15 +134,23 @@ void retrievalErrors(json& r, const Match& m, const MissionTruth& t)
 	if (!m.in_C0 || !r.contains("retrieval") || !t.T_C0inA_mm) return;
 	json& g = r["retrieval"];
 	if (!need(g, "feasible").get<bool>()) return;
+	// the grasp was planned in C0 of the retrieval's own view (after docking, not the search's)
+	Eigen::Isometry3d T_true = m.T_true;
+	if (g.contains("frame") && !g.at("frame").is_null())
+	{
+		const auto* fr = frameOf(t, g);
+		if (!fr) return;
+		T_true = mm(fr->T_C0inW.inverse() * fr->T_OinW.at(m.instance));
+	}
 	const auto first = mission::isometryFrom(need(g, "T_OinC0_first_mm"));
-	g["object_error_before_mm"] = (first.translation() - m.T_true.translation()).norm();
+	g["object_error_before_mm"] = (first.translation() - T_true.translation()).norm();
 	if (need(g, "verified").get<bool>())
 		g["object_error_after_mm"] =
 		    (mission::isometryFrom(need(g, "T_OinC0_verified_mm")).translation() -
-		     m.T_true.translation())
+		     T_true.translation())
 		        .norm();
 	const Eigen::Isometry3d T_GinA_true =
-	    *t.T_C0inA_mm * m.T_true * mission::isometryFrom(need(g, "T_GinO_mm"));
+	    *t.T_C0inA_mm * T_true * mission::isometryFrom(need(g, "T_GinO_mm"));
 	g["grasp_error_mm"] =
 	    (mission::isometryFrom(need(g, "T_GinA_mm")).translation() - T_GinA_true.translation())
 	        .norm();

@@ -148,6 +148,7 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 		o.image_verification.loadFromConfigFile(
 		    openNamed(cfg, "files", "recognition_file", base_dir), "image_verification");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
+	o.docking.loadFromConfigFile(cfg, "docking");
 	return o;
 }
 
@@ -172,6 +173,8 @@ void MissionOptions::dump(std::ostream& out) const
 	search.dump(out);
 	out << "\n[retrieval]\n";
 	retrieval.dump(out);
+	out << "\n[docking]\n";
+	docking.dump(out);
 	out << "\n";
 	devices.dump(out);
 }

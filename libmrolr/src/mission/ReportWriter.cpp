@@ -61,6 +61,31 @@ json graspJson(const RetrievalResult& g)
 	return j;
 }
 
+json dockingJson(const DockingResult& d)
+{
+	json j = {{"needed", d.needed},
+	          {"planned", d.planned},
+	          {"reached", d.reached},
+	          {"reasons_before", d.reasons_before},
+	          {"candidates", d.candidates},
+	          {"candidates_checked", d.candidates_checked},
+	          {"reason", d.reason},
+	          {"compute_seconds", d.compute_s},
+	          {"recognised", d.recognised},
+	          {"ambiguous", d.ambiguous},
+	          {"frame", d.frame ? json(*d.frame) : json(nullptr)},
+	          {"pose_zxphi", nullptr}};
+	if (d.planned)
+	{
+		const auto& xv = d.chosen.pose.xv_zxphi;
+		j["pose_zxphi"] = {xv[0], xv[1], xv[2]};
+		j["side"] = d.chosen.side;
+		j["travel_m"] = d.chosen.travel_m;
+		j["lateral_m"] = d.chosen.lateral_m;
+	}
+	return j;
+}
+
 json timelineJson(const Timeline& t)
 {
 	json events = json::array();
@@ -258,6 +283,9 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"ambiguous", r.search.recognition.ambiguous},
 		                    {"poses", posesJson(r.search)}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
+	if (r.found) j["retrieval"]["docking"] = dockingJson(r.docking);
+	if (r.found)
+		j["retrieval"]["frame"] = r.retrieval.frame ? json(*r.retrieval.frame) : json(nullptr);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);
 	return j;
 }

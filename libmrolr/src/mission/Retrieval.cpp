@@ -102,6 +102,16 @@ void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& ti
 	timeline.advance(o_.retrieval.arm_move_time_s);
 }
 
+bool Retrieval::feasibleAt(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
+                           std::vector<std::string>* reasons) const
+{
+	RetrievalResult r;
+	r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
+	const bool ok = planGrasp(r, tableZinA(table_top_height_m));
+	if (reasons) *reasons = r.reasons;
+	return ok;
+}
+
 Eigen::Isometry3d Retrieval::graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const
 {
 	return arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm) * graspInObject(turn_deg);

@@ -86,6 +86,7 @@ struct MissionResult
 	SearchResult search;
 	Eigen::Vector3d search_xv_estimate = Eigen::Vector3d::Zero();  ///< estimate at the search
 	RetrievalResult retrieval;
+	DockingResult docking;  ///< the drive to where the arm reaches, if one was needed
 	std::vector<PathSample> path;
 	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps and obstacle looks
 	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted

@@ -12,6 +12,7 @@
 #include <mrolr/base/TrajectoryPlanner.h>
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/mission/DeviceOptions.h>
+#include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObstacleOptions.h>
 #include <mrolr/mission/Plan.h>
 #include <mrolr/recog/ImageVerifier.h>
@@ -153,6 +154,7 @@ struct MissionOptions
 	NavigationOptions navigation;
 	SearchOptions search;
 	RetrievalOptions retrieval;
+	DockingOptions docking;  ///< [docking]: where to drive when the arm cannot reach
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
 	/** [image_verification] of [files] recognition_file, read for reconstructed scenes with
 	 * search.image_verification. */

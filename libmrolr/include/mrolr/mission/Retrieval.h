@@ -41,6 +41,9 @@ struct RetrievalResult
 	 * error) and the one the verification recognised. */
 	Eigen::Isometry3d T_OinC0_first = Eigen::Isometry3d::Identity();
 	Eigen::Isometry3d T_OinC0_verified = Eigen::Isometry3d::Identity();
+	/** The stereo pair T_OinC0_first was recognised in (C0 of that moment, which the base keeps
+	 * until the lift); none for a simulated scene. */
+	std::optional<uint64_t> frame;
 	double width_closed_mm = 0;  ///< jaw distance right after closing
 	double width_lifted_mm = 0;  ///< jaw distance after the lift
 	bool retrieved = false;      ///< the robot believes it holds the object (jaw width)
@@ -60,6 +63,10 @@ class Retrieval
 	Eigen::Isometry3d graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const;
 	/** The table plane's height in A (mm) for a table top @p top_height_m above the floor. */
 	double tableZinA(double top_height_m) const;
+	/** Whether a grasp of the object at @p T_OinC0_mm (C0 where the base stands, or would stand)
+	 * is feasible, without moving the arm; @p reasons says why not (the docking planner's test). */
+	bool feasibleAt(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
+	                std::vector<std::string>* reasons = nullptr) const;
 
  private:
 	arm::GraspCheck check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
