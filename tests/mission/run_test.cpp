@@ -158,6 +158,7 @@ TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 {
 	auto cfg = mission::test::defaultMissionConfig();
 	cfg.write("arm_mount", "T_C0inA", "0 0 1 -1500    1 0 0 1200    0 1 0 711");
+	cfg.write("docking", "drive_to_reach", "false");  // retrieval_mission_test docks
 	const auto run = mission::test::runMission(cfg, mission::test::shortRoute());
 	const auto& r = run.r;
 	EXPECT_TRUE(r.found);

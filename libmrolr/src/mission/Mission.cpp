@@ -185,7 +185,7 @@ bool Mission::Impl::searchStation(const NamedPose& station)
 	nav->driveTo(station);
 	r.timeline.beginStage("search");
 	++r.stations_searched;
-	r.search = search->sweep(r.timeline);
+	r.search = search->sweep(r.timeline, nav->estimate());
 	r.search_xv_estimate = nav->estimate();
 	r.timeline.note(station.name + ": " + (r.search.found ? "found" : "not found"));
 	if (r.search.found) r.found_at_station = station.name;
@@ -252,8 +252,12 @@ std::optional<Eigen::Isometry3d> Mission::Impl::dockAndReobserve(const Retrieval
 		for (const auto& c : candidates)
 		{
 			++d.candidates_checked;
-			if (!retrieval.feasibleAt(predictedInC0(T_OinW_m, c.pose.xv_zxphi), top_height_m))
+			std::vector<std::string> why;
+			if (!retrieval.feasibleAt(predictedInC0(T_OinW_m, c.pose.xv_zxphi), top_height_m, &why))
+			{
+				if (d.candidates_checked == 1) d.reasons_nearest = why;
 				continue;
+			}
 			d.planned = true, d.chosen = c;
 			break;
 		}

@@ -1,9 +1,12 @@
 // The pan sweep at a station and recognition in each view (thesis 6.4, 7.2.2).
 #include <mrolr/geometry/GeometryError.h>
+#include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObjectSearch.h>
+#include <mrolr/mission/TableCoverage.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace mrolr::mission
 {
@@ -105,18 +108,67 @@ std::vector<double> ObjectSearch::sweepPans() const
 	return pans;
 }
 
-SearchResult ObjectSearch::sweep(Timeline& timeline) const
+std::vector<std::vector<ObjectSearch::SweepView>> ObjectSearch::sweepPasses(
+    const Eigen::Vector3d& xv_estimate) const
 {
-	SearchResult last;
-	int views = 0;
-	for (double pan : sweepPans())
+	auto label = [](const geometry::HeadAngles& a)
 	{
-		timeline.advance(o_.search.head_move_time_s);
-		last = observe(sweepAngles(pan), timeline);
-		last.views = ++views;
-		timeline.note("view at pan " + std::to_string(static_cast<int>(std::lround(pan))) +
-		              " deg: " + (last.found ? "recognised" : "not recognised"));
-		if (last.found) break;
+		char buf[64];
+		std::snprintf(buf, sizeof buf, "pan %.0f deg, tilt %.0f deg", a.pan * 180 / M_PI,
+		              a.tilt * 180 / M_PI);
+		return std::string(buf);
+	};
+	const PlanTable* table =
+	    o_.search.cover_table ? tableInFront(o_.plan.tables, xv_estimate) : nullptr;
+	const double half_fov_deg =
+	    std::atan(0.5 * o_.bisight.image_width_px / o_.bisight.focal_px_u) * 180 / M_PI;
+	if (table)
+	{
+		const double h = o_.bisight.head_height_m;
+		const auto first = tableViews(*table, xv_estimate, h, half_fov_deg, o_.search.pan_step_deg);
+		std::vector<std::vector<SweepView>> out(2);
+		for (const auto& v : first) out[0].push_back({head_.fixate(v.p_fixinC0_m), ""});
+		for (const auto& v : betweenViews(*table, xv_estimate, h, first))
+			out[1].push_back({head_.fixate(v.p_fixinC0_m), ""});
+		for (auto& pass : out)
+			for (auto& v : pass) v.label = label(v.angles);
+		if (!out[0].empty()) return out;
+	}
+	std::vector<std::vector<SweepView>> out(2);
+	const auto pans = sweepPans();
+	const size_t first = static_cast<size_t>(
+	    std::floor((o_.search.pan_to_deg - o_.search.pan_from_deg) / o_.search.pan_step_deg + 1e-9)) + 1;
+	for (size_t i = 0; i < pans.size(); ++i)
+		out[i < first ? 0 : 1].push_back(
+		    {sweepAngles(pans[i]),
+		     "pan " + std::to_string(static_cast<int>(std::lround(pans[i]))) + " deg"});
+	return out;
+}
+
+SearchResult ObjectSearch::sweep(Timeline& timeline, const Eigen::Vector3d& xv_estimate) const
+{
+	SearchResult last, best;
+	int views = 0;
+	for (const auto& pass : sweepPasses(xv_estimate))
+	{
+		for (const auto& v : pass)
+		{
+			timeline.advance(o_.search.head_move_time_s);
+			last = observe(v.angles, timeline);
+			last.views = ++views;
+			timeline.note("view at " + v.label + ": " +
+			              (last.found ? "recognised (confidence " +
+			                                std::to_string(last.recognition.confidence) + ")"
+			                          : std::string("not recognised")));
+			if (last.found && (!best.found || last.recognition.confidence > best.recognition.confidence))
+				best = last;
+			if (best.found && o_.search.stop_at_first) break;
+		}
+		if (best.found)
+		{
+			best.views = views;
+			return best;
+		}
 	}
 	return last;
 }

@@ -67,6 +67,7 @@ json dockingJson(const DockingResult& d)
 	          {"planned", d.planned},
 	          {"reached", d.reached},
 	          {"reasons_before", d.reasons_before},
+	          {"reasons_nearest", d.reasons_nearest},
 	          {"candidates", d.candidates},
 	          {"candidates_checked", d.candidates_checked},
 	          {"reason", d.reason},

@@ -1,5 +1,6 @@
 // Grasp planning, checking, reaching, visual verification and lifting (thesis 6.6–6.7, 7.2.2).
 #include <mrolr/arm/GraspChain.h>
+#include <mrolr/arm/SolidSampling.h>
 #include <mrolr/mission/Retrieval.h>
 
 #include <cmath>
@@ -49,7 +50,7 @@ double Retrieval::tableZinA(double top_height_m) const
 arm::GraspCheck Retrieval::check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
                                  double table_z_mm) const
 {
-	const auto pts = arm::sampleWireFrame(target_, T_OinA, o_.grasp.sample_step_mm);
+	const auto pts = arm::sampleSolid(target_, T_OinA, o_.grasp.sample_step_mm);
 	return arm::checkGrasp(T_GinA, pts, {}, table_z_mm, ik_, o_.grasp);
 }
 

@@ -68,6 +68,8 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	scene_source =
 	    scene_sensor == "reconstructed" ? SceneSource::Reconstructed : SceneSource::Simulated;
 	image_verification = util::readBool(c, s, "image_verification", image_verification);
+	cover_table = util::readBool(c, s, "cover_table", cover_table);
+	stop_at_first = util::readBool(c, s, "stop_at_first", stop_at_first);
 	util::requireInRange(c, s, "pan_step_deg", pan_step_deg, 0.1, 90);
 	util::requireInRange(c, s, "pan_to_deg", pan_to_deg, pan_from_deg, 90);
 }
@@ -78,7 +80,9 @@ void SearchOptions::dump(std::ostream& out) const
 	    << "\npan_to_deg = " << pan_to_deg << "\npan_step_deg = " << pan_step_deg
 	    << "\nhead_move_time_s = " << head_move_time_s << "\nscene_sensor = " << scene_sensor
 	    << "\nrender_stereo = " << (render_stereo ? "true" : "false")
-	    << "\nimage_verification = " << (image_verification ? "true" : "false") << "\n";
+	    << "\nimage_verification = " << (image_verification ? "true" : "false")
+	    << "\ncover_table = " << (cover_table ? "true" : "false")
+	    << "\nstop_at_first = " << (stop_at_first ? "true" : "false") << "\n";
 }
 
 void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

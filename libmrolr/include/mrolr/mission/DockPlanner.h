@@ -53,6 +53,7 @@ struct DockingResult
 	bool planned = false;  ///< a candidate with a feasible grasp was found
 	bool reached = false;  ///< the base drove there and recognised the object again
 	std::vector<std::string> reasons_before;  ///< why the grasp was not feasible before
+	std::vector<std::string> reasons_nearest;  ///< why not from the first candidate, if not
 	DockCandidate chosen;
 	int candidates = 0, candidates_checked = 0;
 	std::string reason;  ///< why there was no docking pose, or what failed on the way

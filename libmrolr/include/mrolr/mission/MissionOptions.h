@@ -101,6 +101,13 @@ struct SearchOptions
 	/** Optional, reconstructed only: the recogniser also verifies in the view's stereo images
 	 * (recog::ImageVerifier, [image_verification] of recognition_file). */
 	bool image_verification = true;
+	/** Optional: the views cover the plan's table in front of the station (TableCoverage.h: the
+	 * pans span its top, tilt and vergence follow it, pan_step_deg apart); false (default): the
+	 * fixed pans pan_from_deg..pan_to_deg at gaze_tilt_deg (thesis 6.4). */
+	bool cover_table = false;
+	/** Optional: the first view that recognises ends the sweep (default, thesis 7.2.2); false:
+	 * every view of the first pass is recognised and the most confident answer wins. */
+	bool stop_at_first = true;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

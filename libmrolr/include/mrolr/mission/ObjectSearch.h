@@ -17,6 +17,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace mrolr::mission
 {
@@ -65,8 +67,20 @@ class ObjectSearch
 	/** The sweep's pans (deg): pan_from_deg to pan_to_deg in pan_step_deg, then, should none of
 	 * those recognise, once more half a step between them. */
 	std::vector<double> sweepPans() const;
-	/** The whole sweep; stops at the first view that recognises. */
-	SearchResult sweep(Timeline& timeline) const;
+	/** One view of a sweep: head angles and how the timeline names it. */
+	struct SweepView
+	{
+		geometry::HeadAngles angles;
+		std::string label;
+	};
+	/** The sweep's two passes from the base at @p xv_estimate: with `cover_table`, the views
+	 * covering the plan's table in front of it (TableCoverage.h) and those between them;
+	 * otherwise (or with no table in front) sweepPans() at gaze_tilt_deg. */
+	std::vector<std::vector<SweepView>> sweepPasses(const Eigen::Vector3d& xv_estimate) const;
+	/** The whole sweep: the first pass, then, should none recognise, the second; with
+	 * stop_at_first the first view that recognises ends it, otherwise the most confident
+	 * answer of the pass wins. */
+	SearchResult sweep(Timeline& timeline, const Eigen::Vector3d& xv_estimate) const;
 	const geometry::BiSightHead& head() const { return head_; }
 
  private:

@@ -1,0 +1,53 @@
+// Retrieval missions on the lab with fixed seeds: an object the arm cannot reach from the search
+// station is retrieved from a docking pose the robot plans and drives to, and when no docking pose
+// reaches, the failure says so and the arm never moves.
+#include "MissionTestConfig.h"
+
+#include <gtest/gtest.h>
+
+using namespace mrolr;
+
+TEST(RetrievalMission, TheDrinkPackageInTheBackRowIsRetrievedFromTheTablesFarSide)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("mission", "target", "drink_package");
+	cfg.write("mission", "seed", "2");
+	const auto run = mission::test::runMission(cfg);
+	const auto& d = run.r.docking;
+	ASSERT_TRUE(run.r.found);
+	// out of reach from the station in front of the table ...
+	EXPECT_TRUE(d.needed);
+	ASSERT_FALSE(d.reasons_before.empty());
+	EXPECT_NE(d.reasons_before.front().find("out of reach"), std::string::npos)
+	    << d.reasons_before.front();
+	// ... in reach from behind it, where the robot drove and recognised it again
+	EXPECT_TRUE(d.planned);
+	EXPECT_EQ(d.chosen.side, "table.main +z side");
+	EXPECT_TRUE(d.reached) << d.reason;
+	EXPECT_TRUE(run.r.success) << run.r.failure;
+	const auto& g = run.report["retrieval"];
+	EXPECT_EQ(g["docking"]["side"], "table.main +z side");
+	EXPECT_EQ(g["frame"], g["docking"]["frame"]);
+	EXPECT_TRUE(run.report["eval"]["object_held"].get<bool>());
+	EXPECT_LT(g["grasp_error_mm"].get<double>(), 10.0);
+	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
+	EXPECT_TRUE(run.report["eval"]["objects_disturbed"].empty());
+}
+
+TEST(RetrievalMission, WhenNoDockingPoseReachesTheFailureSaysSoAndTheArmStays)
+{
+	auto cfg = mission::test::defaultMissionConfig();
+	// the arm's column 1.5 m behind the head: no pose round the table brings the cube in reach
+	cfg.write("arm_mount", "T_C0inA", "0 0 1 1500    1 0 0 100    0 1 0 711");
+	const auto run = mission::test::runMission(cfg, mission::test::shortRoute());
+	const auto& d = run.r.docking;
+	ASSERT_TRUE(run.r.found);
+	EXPECT_TRUE(d.needed);
+	EXPECT_FALSE(d.planned);
+	EXPECT_GT(d.candidates, 0);
+	EXPECT_EQ(d.candidates_checked, d.candidates);
+	EXPECT_FALSE(run.r.retrieval.attempted);
+	EXPECT_NE(run.r.failure.find("docking: none of"), std::string::npos) << run.r.failure;
+	EXPECT_EQ(run.report["retrieval"]["docking"]["planned"], false);
+	EXPECT_TRUE(run.r.returned_home);
+}
