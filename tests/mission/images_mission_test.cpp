@@ -27,10 +27,14 @@ TEST(MissionImages, DefaultMissionLocalisesFromItsOwnImageFeatures)
 	EXPECT_LT(run.report["final_estimate_error_m"].get<double>(), 0.1);
 	// Rendering is the simulator's time, kept out of the robot's compute.
 	EXPECT_GT(r.timeline.renderSeconds(), 0);
-	// Navigation pairs are not recorded; the table's views and the obstacle looks' pairs are.
+	// Navigation pairs are not recorded; the table's views, the obstacle looks' and the dock
+	// calibration's pairs are.
 	EXPECT_EQ(r.shots.size(),
 	          mission::countShots(r.shots, mission::StereoShot::Purpose::Obstacle) +
+	              mission::countShots(r.shots, mission::StereoShot::Purpose::Calibration) +
 	              static_cast<size_t>(r.search.views) + 1);
+	EXPECT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Calibration),
+	          r.dock_calibration.frames.size());
 }
 
 // [navigation] image_nssd_ambiguity_margin reaches the vision options of the images mode only;

@@ -184,8 +184,27 @@ void tablePlaneError(json& r, const Match& m, const MissionTruth& t)
 	out["error_deg"] = std::acos(std::clamp(n_est.normalized().dot(n_true), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+/** The mount the grasp chain used against the true one: where the arm base stands in C0 (mm)
+ * and the angle between the rotations (deg); the nominal's error too (the dock's). */
+void dockCalibrationErrors(json& r, const MissionTruth& t)
+{
+	if (!t.T_C0inA_mm || !r.contains("retrieval")) return;
+	json& g = r["retrieval"];
+	if (!g.contains("dock_calibration")) return;
+	const auto used = mission::isometryFrom(need(g["dock_calibration"], "T_C0inA_mm"));
+	const auto nominal = mission::isometryFrom(need(need(r, "robot"), "dock_T_C0inA_mm"));
+	auto error = [&t](const Eigen::Isometry3d& T, const char* mm_key, const char* deg_key, json& out)
+	{
+		out[mm_key] = (T.inverse().translation() - t.T_C0inA_mm->inverse().translation()).norm();
+		out[deg_key] = angleDeg(T.linear().transpose() * t.T_C0inA_mm->linear());
+	};
+	error(used, "dock_calibration_error_mm", "dock_calibration_error_deg", g);
+	error(nominal, "dock_error_mm", "dock_error_deg", g);
+}
+
 void objectErrors(json& r, const MissionTruth& t)
 {
+	dockCalibrationErrors(r, t);
 	if (!need(r, "found").get<bool>()) return;
 	const Match m = matchObject(r, t);
 	if (m.instance.empty()) return;

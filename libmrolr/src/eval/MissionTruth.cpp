@@ -76,7 +76,7 @@ MissionTruth truthOf(const sim::Lab& lab)
 	t.steps = lab.truth().steps;
 	t.frames = lab.truth().frames;
 	t.world = std::make_shared<world::World>(lab.options().world);
-	t.T_C0inA_mm = lab.options().mount.T_C0inA;
+	t.T_C0inA_mm = lab.trueMount();  // the nominal mount off by the dock's error
 	return t;
 }
 
@@ -98,7 +98,8 @@ json truthJson(const MissionTruth& t)
 	        {"objects", objects},
 	        {"held", t.held.empty() ? json(nullptr) : json(t.held)},
 	        {"contact", contact},
-	        {"gripper_events", gripperEventsJson(t.gripper_events)}};
+	        {"gripper_events", gripperEventsJson(t.gripper_events)},
+	        {"T_C0inA_mm", t.T_C0inA_mm ? mission::matrix34(*t.T_C0inA_mm) : json(nullptr)}};
 }
 
 MissionTruth truthFromJson(const json& j, const std::string& source)
@@ -127,6 +128,8 @@ MissionTruth truthFromJson(const json& j, const std::string& source)
 		                         {number(c, "z_m", source), number(c, "x_m", source)}};
 	}
 	if (j.contains("gripper_events")) t.gripper_events = gripperEventsFrom(j.at("gripper_events"), source);
+	if (j.contains("T_C0inA_mm") && !j.at("T_C0inA_mm").is_null())
+		t.T_C0inA_mm = transform(j, "T_C0inA_mm", source);
 	return t;
 }
 

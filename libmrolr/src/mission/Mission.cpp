@@ -3,6 +3,7 @@
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/hw_serial/SerialError.h>
 #include <mrolr/mission/Mission.h>
+#include "MissionImpl.h"
 #include <mrolr/mission/MissionStereoHead.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/model/WireFrameIO.h>
@@ -36,46 +37,11 @@ void requireSensors(const MissionOptions& o, const SimulatedSensors& s)
 }
 }  // namespace
 
-struct Mission::Impl
+Mission::Impl::Impl(const MissionOptions& opts, RobotDevices d, SimulatedSensors s)
+    : o(opts), dev(checked(std::move(d))), sensors(s)
 {
-	const MissionOptions& o;
-	MissionResult r;
-	RobotDevices dev;
-	SimulatedSensors sensors;
-	model::WireFrame target;
-	std::unique_ptr<Navigator> nav;
-	std::unique_ptr<ObjectSearch> search;
-	std::unique_ptr<ObstacleAvoidance> obstacles;  ///< obstacle mode
-	std::unique_ptr<MissionStereoHead> nav_head;   ///< landmark_sensor = images
-	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
-	std::atomic<bool>* stop_flag = nullptr;
-	bool render_failed = false;
-
-	Impl(const MissionOptions& opts, RobotDevices d, SimulatedSensors s)
-	    : o(opts), dev(checked(std::move(d))), sensors(s)
-	{
-		requireSensors(o, sensors);
-	}
-	hw::StereoImages grabStereo(StereoShot::Purpose purpose = StereoShot::Purpose::Table);
-	SearchView reconstructedView(const geometry::HeadAngles& angles);
-	SearchView simulatedView(const geometry::HeadAngles& angles);
-	void attachObstacleMode();
-	void stopSafely(const std::string& why);
-	void runStages();
-	void loadTarget();
-	void navigate();
-	bool searchStation(const NamedPose& station);
-	void retrieve();
-	void goHome();
-	void finish();
-	Eigen::Isometry3d predictedInC0(const Eigen::Isometry3d& T_OinW_m,
-	                                const Eigen::Vector3d& xv) const;
-	std::optional<Eigen::Isometry3d> dockAndReobserve(const Retrieval& retrieval,
-	                                                  const PlanTable& table,
-	                                                  const Eigen::Isometry3d& T_OinW_m,
-	                                                  double top_height_m);
-	std::optional<Eigen::Isometry3d> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
-};
+	requireSensors(o, sensors);
+}
 
 void Mission::Impl::loadTarget()
 {
@@ -153,6 +119,7 @@ void Mission::Impl::attachObstacleMode()
 	};
 	obstacles = std::make_unique<ObstacleAvoidance>(geometry::BiSightHead(o.bisight), o.obstacle,
 	                                                look, r.timeline);
+	obstacles->ignoreSelf(*self);
 	attachObstacleAvoidance(*nav, *obstacles, o);
 }
 
@@ -160,6 +127,9 @@ void Mission::Impl::navigate()
 {
 	r.timeline.beginStage("navigate");
 	nav = std::make_unique<Navigator>(o, *dev.base, r.timeline);
+	self = std::make_unique<SelfModel>(o.rtx, o.grasp, o.marker, o.dock.T_C0inA,
+	                                   geometry::BiSightHead(o.bisight));
+	self->setJoints(dev.arm->joints());
 	nav->on_step = [this](const PathSample& s)
 	{
 		if (progress && *progress) (*progress)(r.timeline.stage(), s);
@@ -171,6 +141,7 @@ void Mission::Impl::navigate()
 	{
 		nav_head = std::make_unique<MissionStereoHead>(*dev.head);
 		nav->useImages(*nav_head, [this] { return nav_head->grabSeconds(); });
+		nav->ignoreSelf(*self);
 	}
 	else if (o.mode == NavigationMode::Slam)
 		nav->useSensor(*sensors.landmarks);
@@ -192,136 +163,10 @@ bool Mission::Impl::searchStation(const NamedPose& station)
 	return r.search.found;
 }
 
-/** The object at @p T_OinW_m seen from C0 of the base at @p xv (mm). */
-Eigen::Isometry3d Mission::Impl::predictedInC0(const Eigen::Isometry3d& T_OinW_m,
-                                               const Eigen::Vector3d& xv) const
-{
-	Eigen::Isometry3d T = geometry::T_C0inW(xv, o.bisight.head_height_m).inverse() * T_OinW_m;
-	T.translation() *= 1000.0;
-	return T;
-}
-
-void Mission::Impl::retrieve()
-{
-	r.timeline.beginStage("retrieve");
-	auto reobserve = [&](const Eigen::Isometry3d& T_OinC0_mm) { return reobserveAt(T_OinC0_mm); };
-	Eigen::Isometry3d T_OinW = r.search.T_OinC0;
-	T_OinW.translation() /= 1000.0;
-	T_OinW = geometry::T_C0inW(r.search_xv_estimate, o.bisight.head_height_m) * T_OinW;
-	const PlanTable* table = tableUnder(o.plan.tables, T_OinW.translation());
-	const double top_height_m = table ? table->top_height_m : 0.0;
-	Retrieval retrieval(o, target);
-	Eigen::Isometry3d T_OinC0_mm = r.search.T_OinC0;
-	std::optional<uint64_t> frame = r.search.frame;
-	if (o.docking.drive_to_reach &&
-	    !retrieval.feasibleAt(T_OinC0_mm, top_height_m, &r.docking.reasons_before))
-	{
-		r.docking.needed = true;
-		if (!table)
-			r.docking.reason = "the plan has no table to dock at";
-		else if (const auto T = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
-			T_OinC0_mm = *T, frame = r.docking.frame;
-	}
-	r.retrieval = retrieval.run(T_OinC0_mm, top_height_m, *dev.arm, reobserve, r.timeline);
-	r.retrieval.frame = frame;
-	r.retrieved = r.retrieval.retrieved;
-	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
-	if (!r.retrieval.feasible && r.docking.needed && !r.docking.planned)
-		r.failure += " (docking: " + r.docking.reason + ")";
-	if (r.retrieved) r.timeline.note("object held (jaws " + std::to_string(r.retrieval.width_lifted_mm) + " mm apart)");
-}
-
-/** The first candidate docking pose (DockPlanner.h) from which the grasp is feasible, driven to;
- * the object is recognised again from there. Returns its pose in C0 there (mm): recognised, or
- * predicted from the search and the navigation's estimate when not recognised; nothing when no
- * candidate gives a feasible grasp (the base has not moved). */
-std::optional<Eigen::Isometry3d> Mission::Impl::dockAndReobserve(const Retrieval& retrieval,
-                                                                 const PlanTable& table,
-                                                                 const Eigen::Isometry3d& T_OinW_m,
-                                                                 double top_height_m)
-{
-	auto& d = r.docking;
-	const auto t0 = std::chrono::steady_clock::now();
-	{
-		ComputeTimer timer(r.timeline);
-		const auto candidates =
-		    dockCandidates(o.plan.tables, table, T_OinW_m.translation(), nav->estimate(),
-		                   o.dock.T_C0inA, o.bisight.head_height_m,
-		                   o.navigation.table_clearance_m, o.docking);
-		d.candidates = static_cast<int>(candidates.size());
-		for (const auto& c : candidates)
-		{
-			++d.candidates_checked;
-			std::vector<std::string> why;
-			if (!retrieval.feasibleAt(predictedInC0(T_OinW_m, c.pose.xv_zxphi), top_height_m, &why))
-			{
-				if (d.candidates_checked == 1) d.reasons_nearest = why;
-				continue;
-			}
-			d.planned = true, d.chosen = c;
-			break;
-		}
-	}
-	d.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-	if (!d.planned)
-	{
-		d.reason = "none of " + std::to_string(d.candidates) + " docking poses round table." +
-		           table.name + " gives a feasible grasp";
-		r.timeline.note("docking: " + d.reason);
-		return std::nullopt;
-	}
-	const auto& xv = d.chosen.pose.xv_zxphi;
-	r.timeline.note("docking at " + d.chosen.side + " (z " + std::to_string(xv[0]) + " m, x " +
-	                std::to_string(xv[1]) + " m, " + std::to_string(xv[2] * 180 / M_PI) +
-	                " deg), " + std::to_string(d.chosen.travel_m) + " m to drive");
-	r.timeline.beginStage("dock");
-	nav->driveTo(d.chosen.pose);
-	r.timeline.beginStage("retrieve");
-	const Eigen::Isometry3d predicted = predictedInC0(T_OinW_m, nav->estimate());
-	SearchResult s;
-	try
-	{
-		r.timeline.advance(o.search.head_move_time_s);
-		s = search->observe(search->fixationAngles(predicted), r.timeline);
-	}
-	catch (const geometry::GeometryError& e)
-	{
-		r.timeline.note(std::string("docking: cannot fixate the object: ") + e.what());
-	}
-	d.frame = s.frame;
-	d.recognised = d.reached = s.found;
-	d.ambiguous = s.found && s.recognition.ambiguous;
-	r.timeline.note(std::string("docking view: ") + (s.found ? "recognised" : "not recognised"));
-	if (s.found) return s.T_OinC0;
-	d.reason = "not recognised again at the docking pose: grasp planned on the pose predicted "
-	           "from the search and the navigation's estimate";
-	return predicted;
-}
-
-/** The visual verification's view: the head fixates the object's estimated centre and a new
- * stereo pair is recognised as in the sweep. */
-std::optional<Eigen::Isometry3d> Mission::Impl::reobserveAt(const Eigen::Isometry3d& T_OinC0_mm)
-{
-	geometry::HeadAngles angles;
-	try
-	{
-		angles = search->fixationAngles(T_OinC0_mm);
-	}
-	catch (const geometry::GeometryError& e)
-	{
-		r.timeline.note(std::string("verification: cannot fixate the object: ") + e.what());
-		return std::nullopt;
-	}
-	r.timeline.advance(o.search.head_move_time_s);
-	const auto s = search->observe(angles, r.timeline);
-	r.timeline.note(std::string("verification view (object fixated): ") +
-	                (s.found ? "recognised" : "not recognised"));
-	return s.found ? std::optional(s.T_OinC0) : std::nullopt;
-}
-
 void Mission::Impl::goHome()
 {
 	r.timeline.beginStage("return_home");
+	self->setJoints(dev.arm->joints());  // the arm holds the object up, or stands parked
 	nav->driveTo(o.plan.home);
 	r.timeline.endStage();
 }

@@ -113,6 +113,7 @@ void readModelFiles(const CConfigFileBase& cfg, const std::string& dir, MissionO
 	const auto rtx = openNamed(cfg, "files", "arm_file", dir);
 	o.rtx.loadFromConfigFile(rtx, "rtx");
 	o.grasp.loadFromConfigFile(rtx, "arm_grasp");
+	o.marker.loadFromConfigFile(rtx, "arm_marker");
 }
 /** measurement_source = images: the vision area's [vision] and its filter ([slam], with the
  * covariance R of image measurements) from [files] vision_file; the head constants stay. */
@@ -149,6 +150,7 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 		    openNamed(cfg, "files", "recognition_file", base_dir), "image_verification");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
 	o.docking.loadFromConfigFile(cfg, "docking");
+	o.dock_calibration.loadFromConfigFile(cfg, "dock_calibration");
 	return o;
 }
 
@@ -175,6 +177,8 @@ void MissionOptions::dump(std::ostream& out) const
 	retrieval.dump(out);
 	out << "\n[docking]\n";
 	docking.dump(out);
+	out << "\n[dock_calibration]\n";
+	dock_calibration.dump(out);
 	out << "\n";
 	devices.dump(out);
 }

@@ -61,6 +61,12 @@ void Navigator::useImages(vision::StereoHeadDevice& head,
 	addPlanFeatures();
 }
 
+void Navigator::ignoreSelf(const SelfModel& self)
+{
+	if (vslam_)
+		vslam_->self_occludes = [&self](const Eigen::Vector3d& p_inC0_m) { return self.isSelf(p_inC0_m); };
+}
+
 void Navigator::useSensor(hw::LandmarkSensor& sensor)
 {
 	sensor_ = &sensor;

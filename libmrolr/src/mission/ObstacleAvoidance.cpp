@@ -38,6 +38,12 @@ std::vector<Eigen::Vector3d> ObstacleAvoidance::look(double pan_deg)
 	auto p = stereo_.pointsAboveFloor(images.left.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
 	                                  images.right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY),
 	                                  images.angles);
+	const double h = head_.options().head_height_m;
+	if (self_)  // B → C0: the head centre is h above B
+		p.erase(std::remove_if(p.begin(), p.end(),
+		                       [this, h](const Eigen::Vector3d& q)
+		                       { return self_->isOnArm(q - Eigen::Vector3d(0, h, 0)); }),
+		        p.end());
 	if (!tables_.empty())
 		p.erase(std::remove_if(p.begin(), p.end(),
 		                       [this](const Eigen::Vector3d& q) { return onKnownTable(q); }),

@@ -87,6 +87,23 @@ json dockingJson(const DockingResult& d)
 	return j;
 }
 
+json dockCalibrationJson(const DockCalibrationResult& c)
+{
+	return {{"attempted", c.attempted},
+	        {"calibrated", c.calibrated},
+	        {"reason", c.reason},
+	        {"poses_planned", c.poses_planned},
+	        {"sightings", c.sightings},
+	        {"rms_mm", c.fit.points ? json(c.fit.rms_mm) : json(nullptr)},
+	        {"max_residual_mm", c.fit.points ? json(c.fit.max_mm) : json(nullptr)},
+	        {"change_from_nominal_mm", c.calibrated ? json(c.change_mm) : json(nullptr)},
+	        {"change_from_nominal_deg", c.calibrated ? json(c.change_deg) : json(nullptr)},
+	        {"T_C0inA_mm", matrix34(c.T_C0inA)},
+	        {"frames", c.frames},
+	        {"seconds", c.time_s},
+	        {"compute_seconds", c.compute_s}};
+}
+
 json timelineJson(const Timeline& t)
 {
 	json events = json::array();
@@ -285,6 +302,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"poses", posesJson(r.search)}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["retrieval"]["docking"] = dockingJson(r.docking);
+	if (r.found) j["retrieval"]["dock_calibration"] = dockCalibrationJson(r.dock_calibration);
 	if (r.found)
 		j["retrieval"]["frame"] = r.retrieval.frame ? json(*r.retrieval.frame) : json(nullptr);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);

@@ -37,14 +37,14 @@ std::string mm(double v)
 }  // namespace
 
 Retrieval::Retrieval(const MissionOptions& o, const model::WireFrame& target)
-    : o_(o), target_(target), ik_(o.rtx)
+    : o_(o), target_(target), ik_(o.rtx), T_C0inA_(o.dock.T_C0inA)
 {
 }
 
-double Retrieval::tableZinA(double top_height_m) const
+double Retrieval::tableZinA(double top_height_m, const Eigen::Vector3d& p_OinC0_mm) const
 {
 	const double y_mm = 1000.0 * (top_height_m - o_.bisight.head_height_m);
-	return (o_.dock.T_C0inA * Eigen::Vector3d(0, y_mm, 0)).z();
+	return (T_C0inA_ * Eigen::Vector3d(p_OinC0_mm.x(), y_mm, p_OinC0_mm.z())).z();
 }
 
 arm::GraspCheck Retrieval::check(const Eigen::Isometry3d& T_OinA, const Eigen::Isometry3d& T_GinA,
@@ -107,15 +107,15 @@ bool Retrieval::feasibleAt(const Eigen::Isometry3d& T_OinC0_mm, double table_top
                            std::vector<std::string>* reasons) const
 {
 	RetrievalResult r;
-	r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
-	const bool ok = planGrasp(r, tableZinA(table_top_height_m));
+	r.T_OinA = arm::objectInArm(T_C0inA_, T_OinC0_mm);
+	const bool ok = planGrasp(r, tableZinA(table_top_height_m, T_OinC0_mm.translation()));
 	if (reasons) *reasons = r.reasons;
 	return ok;
 }
 
 Eigen::Isometry3d Retrieval::graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const
 {
-	return arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm) * graspInObject(turn_deg);
+	return arm::objectInArm(T_C0inA_, T_OinC0_mm) * graspInObject(turn_deg);
 }
 
 RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
@@ -130,8 +130,8 @@ RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table
 		              " along C0's x");
 	{
 		ComputeTimer t(timeline);
-		r.T_OinA = arm::objectInArm(o_.dock.T_C0inA, r.T_OinC0_first);
-		r.feasible = planGrasp(r, tableZinA(table_top_height_m));
+		r.T_OinA = arm::objectInArm(T_C0inA_, r.T_OinC0_first);
+		r.feasible = planGrasp(r, tableZinA(table_top_height_m, r.T_OinC0_first.translation()));
 	}
 	if (!r.feasible) return r;
 	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
@@ -172,6 +172,20 @@ void Retrieval::closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& t
 		                    mm(r.width_lifted_mm) + " apart)");
 }
 
+arm::RtxJoints Retrieval::viewingJoints(const RetrievalResult& r, const arm::RtxJoints& pre) const
+{
+	if (!self_) return pre;
+	const Eigen::Vector3d p_inC0_m = r.T_OinC0_first * Eigen::Vector3d(0, 0, 30) / 1000.0;
+	const double step = std::max(20.0, o_.retrieval.approach_mm);
+	for (double up = 0; pre.d1_mm + up <= o_.rtx.d1_top_mm; up += step)
+	{
+		arm::RtxJoints j = pre;
+		j.d1_mm += up;  // the column up: the hand rises straight above the pre-grasp
+		if (!self_->isSelfAt(j.toMmDeg(), p_inC0_m)) return j;
+	}
+	return pre;
+}
+
 bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reobserve& reobserve,
                                Timeline& timeline) const
 {
@@ -187,10 +201,18 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 	if (const auto above = solve(shifted(preGrasp(r.T_GinA, o_.retrieval.approach_mm),
 	                                     {0, 0, o_.retrieval.approach_mm})))
 		moveTo(arm, *above, timeline);
-	moveTo(arm, *pre, timeline);
+	if (!o_.retrieval.visual_verification) moveTo(arm, *pre, timeline);
 	if (o_.retrieval.visual_verification)
 	{
-		if (const auto T_OinC0 = reobserve(r.T_OinC0_first))
+		// the head looks from where the arm leaves the object in view, then the arm comes down
+		const auto view = viewingJoints(r, *pre);
+		if (view.d1_mm != pre->d1_mm)
+			timeline.note("verification view with the hand " + mm(view.d1_mm - pre->d1_mm) +
+			              " above the pre-grasp, the arm clear of the object");
+		moveTo(arm, view, timeline);
+		const auto T_OinC0 = reobserve(r.T_OinC0_first);
+		if (view.d1_mm != pre->d1_mm) moveTo(arm, *pre, timeline);
+		if (T_OinC0)
 			correct(r, *T_OinC0, timeline);
 		else
 			timeline.note("verification: the object was not recognised again; first grasp kept");
@@ -224,7 +246,7 @@ void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
 	ComputeTimer t(timeline);
 	r.verified = true;
 	r.T_OinC0_verified = T_OinC0_mm;
-	const Eigen::Isometry3d T_OinA = arm::objectInArm(o_.dock.T_C0inA, T_OinC0_mm);
+	const Eigen::Isometry3d T_OinA = arm::objectInArm(T_C0inA_, T_OinC0_mm);
 	const double turn = nearestTurn(r, T_OinA);
 	const Eigen::Isometry3d T_GinA = T_OinA * graspInObject(turn);
 	r.correction_mm = (T_GinA.translation() - r.T_GinA.translation()).norm();

@@ -5,6 +5,8 @@
 #include <mrolr/sim/Placement.h>
 #include <mrolr/sim/SceneBuilder.h>
 
+#include <random>
+
 namespace mrolr::sim
 {
 namespace
@@ -13,6 +15,23 @@ Eigen::Isometry3d metres(Eigen::Isometry3d T_mm)
 {
 	T_mm.translation() /= 1000.0;
 	return T_mm;
+}
+
+/** The nominal mount off by one draw of the dock's error (SimArmOptions::mount_error_*). */
+Eigen::Isometry3d dockedMount(const LabOptions& o)
+{
+	std::mt19937 rng(o.seed * 7919u + 17u);
+	std::uniform_real_distribution<double> u(-1.0, 1.0);
+	Eigen::Vector3d t, r;
+	for (int i = 0; i < 3; ++i) t[i] = o.arm.mount_error_mm * u(rng);
+	for (int i = 0; i < 3; ++i) r[i] = o.arm.mount_error_deg * M_PI / 180.0 * u(rng);
+	const Eigen::Matrix3d R = (Eigen::AngleAxisd(r[2], Eigen::Vector3d::UnitZ()) *
+	                           Eigen::AngleAxisd(r[1], Eigen::Vector3d::UnitY()) *
+	                           Eigen::AngleAxisd(r[0], Eigen::Vector3d::UnitX()))
+	                              .toRotationMatrix();
+	Eigen::Isometry3d D = Eigen::Isometry3d::Identity();
+	D.linear() = R, D.translation() = t;
+	return D * o.mount.T_C0inA;
 }
 
 Eigen::Vector3d startPose(const world::World& w)
@@ -47,6 +66,7 @@ class Lab::LabBase : public hw::BaseDevice
 
 Lab::Lab(const LabOptions& o)
     : o_(o),
+      T_C0inA_true_mm_(dockedMount(o)),
       base_(base::LabmateModel(o.labmate), o.base, startPose(o.world)),
       poses_(placedObjectPoses(o.world)),
       shapes_(loadObjectShapes(o.world))
@@ -57,9 +77,8 @@ Lab::Lab(const LabOptions& o)
 	base_device_ = std::make_unique<LabBase>(*this);
 	head_ = makeHead();
 	const arm::RtxKinematics kin(o.rtx);
-	const Eigen::Isometry3d T_AinC0 = metres(o.mount.T_C0inA.inverse());
-	auto T_GinW = [this, kin, T_AinC0](const hw::ArmJoints& j)
-	{ return trueC0() * T_AinC0 * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
+	auto T_GinW = [this, kin](const hw::ArmJoints& j)
+	{ return T_AinW() * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
 	const JawGeometry jaws{o.gripper.gripper_opening_max_mm, o.gripper.finger_length_mm,
 	                       o.gripper.finger_width_mm};
 	std::map<std::string, std::string> model_of;
@@ -90,6 +109,11 @@ hw::ArmDevice& Lab::arm()
 Eigen::Isometry3d Lab::trueC0() const
 {
 	return geometry::T_C0inW(base_.truePose(), o_.bisight.head_height_m);
+}
+
+Eigen::Isometry3d Lab::T_AinW() const
+{
+	return trueC0() * metres(T_C0inA_true_mm_.inverse());
 }
 
 std::string Lab::modelOf(const std::string& name) const

@@ -1,5 +1,6 @@
 // The simulated lab's head: joint limits of the BiSight model and rendered stereo pairs.
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/sim/ArmVisual.h>
 #include <mrolr/sim/Lab.h>
 #include <mrolr/sim/SceneBuilder.h>
 
@@ -31,6 +32,7 @@ class LabHead : public hw::HeadDevice
 	double time_s_ = 0;
 	uint64_t frames_ = 0;
 	std::unique_ptr<StereoRenderer> renderer_;
+	std::unique_ptr<ArmVisual> arm_visual_;
 	LabScene scene_;
 };
 
@@ -40,7 +42,17 @@ hw::StereoImages LabHead::grab()
 	{
 		scene_ = buildLabScene(lab_.options().world, lab_.shapes());
 		renderer_ = std::make_unique<StereoRenderer>(head_, lab_.options().render);
+		const auto& o = lab_.options();
+		if (o.arm.drawn)
+		{
+			arm_visual_ = std::make_unique<ArmVisual>(o.rtx, o.gripper,
+			                                          o.gripper_physics.finger_thickness_mm, o.marker);
+			scene_.scene->insert(arm_visual_->object());
+		}
 	}
+	if (arm_visual_)
+		arm_visual_->update(lab_.T_AinW(), arm::RtxJoints::fromMmDeg(lab_.simArm().joints()),
+		                    lab_.simArm().separationMm());
 	for (const auto& [name, T] : lab_.objectPoses())
 		if (auto gl = scene_.scene->getByName("object." + name))
 			gl->setPose(geometry::cameraPoseToMrpt(T));

@@ -54,6 +54,7 @@ LabOptions LabOptions::load(const CConfigFileBase& cfg, const std::string& base_
 	const auto arm_file = openNamed(cfg, "arm_file", base_dir);
 	o.rtx.loadFromConfigFile(arm_file, "rtx");
 	o.gripper.loadFromConfigFile(arm_file, "arm_grasp");
+	o.marker.loadFromConfigFile(arm_file, "arm_marker");
 	o.mount.loadFromConfigFile(cfg, "arm_mount");
 	o.seed = static_cast<unsigned>(util::readInt(cfg, "mission", "seed"));
 	o.base.seed = o.seed;

@@ -35,6 +35,11 @@ void SimArmOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 		                        "fit ([sim_gripper], docs/sim.md)");
 	open_width_mm = util::readDouble(cfg, section, "open_width_mm", open_width_mm);
 	util::requireInRange(cfg, section, "open_width_mm", open_width_mm, 1, 1000);
+	mount_error_mm = util::readDouble(cfg, section, "mount_error_mm", mount_error_mm);
+	util::requireInRange(cfg, section, "mount_error_mm", mount_error_mm, 0, 200);
+	mount_error_deg = util::readDouble(cfg, section, "mount_error_deg", mount_error_deg);
+	util::requireInRange(cfg, section, "mount_error_deg", mount_error_deg, 0, 20);
+	drawn = util::readBool(cfg, section, "draw_arm", drawn);
 }
 
 void SimArmOptions::dump(std::ostream& out) const
@@ -43,7 +48,9 @@ void SimArmOptions::dump(std::ostream& out) const
 	for (double v : min) out << " " << v;
 	out << "\njoint_max =";
 	for (double v : max) out << " " << v;
-	out << "\nopen_width_mm = " << open_width_mm << "\n";
+	out << "\nopen_width_mm = " << open_width_mm << "\nmount_error_mm = " << mount_error_mm
+	    << "\nmount_error_deg = " << mount_error_deg << "\ndraw_arm = " << (drawn ? "true" : "false")
+	    << "\n";
 }
 
 SimArm::SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW,

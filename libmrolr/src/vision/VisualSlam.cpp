@@ -1,4 +1,5 @@
 #include <mrolr/geometry/GeometryError.h>
+#include <mrolr/geometry/Frames.h>
 #include <mrolr/geometry/IdealHead.h>
 #include <mrolr/slam/FeatureSelection.h>
 #include <mrolr/slam/FeatureVisibility.h>
@@ -116,9 +117,12 @@ std::vector<size_t> VisualSlam::visibleFeatures()
 {
 	std::vector<size_t> out;
 	const Eigen::Vector3d x_v = filter_.vehicle();
+	const Eigen::Isometry3d T_WinC0 =
+	    geometry::T_C0inW(x_v, head_.options().head_height_m).inverse();
 	for (size_t i = 0; i < filter_.numFeatures(); ++i)
 		if (slam::assessVisibility(x_v, filter_.feature(i), filter_.info(i).p_C0atInitInW,
-		                           filter_.options()) == slam::Visibility::Visible)
+		                           filter_.options()) == slam::Visibility::Visible &&
+		    !(self_occludes && self_occludes(T_WinC0 * filter_.feature(i))))
 			out.push_back(i);
 	return out;
 }
@@ -154,6 +158,7 @@ void VisualSlam::acquireFeatures(StereoHeadDevice& device, CycleRecord& r)
 bool VisualSlam::addFeature(const Eigen::Vector3d& p_GinC0, const cv::Mat& patch, CycleRecord& r,
                             const std::string& name)
 {
+	if (self_occludes && self_occludes(p_GinC0)) return false;  // on the robot's own arm
 	const Eigen::Vector3d h = geometry::idealHeadMeasure(p_GinC0, head_.options().interocular_m);
 	const auto init =
 	    slam::initialiseFromMeasurement(filter_.vehicle(), h, filter_.options().head.constants);

@@ -38,7 +38,8 @@ struct MissionTruth
 	/** In-process only: every step and every camera frame (empty from T.json). */
 	std::vector<sim::TruthLog::Step> steps;
 	std::vector<sim::TruthLog::Frame> frames;
-	/** In-process only: the arm's physical mount T_C0inA (mm), for the true grasp. */
+	/** The arm's physical mount T_C0inA (mm): the nominal off by the dock's error; for the true
+	 * grasp and the dock calibration's error. */
 	std::optional<Eigen::Isometry3d> T_C0inA_mm;
 	/** In-process only: the world, for the pictures. */
 	std::shared_ptr<const world::World> world;

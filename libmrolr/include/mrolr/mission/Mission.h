@@ -51,7 +51,8 @@ struct StereoShot
 	enum class Purpose
 	{
 		Table,
-		Obstacle
+		Obstacle,
+		Calibration  ///< the arm presenting its marker (DockCalibration.h)
 	};
 	PathSample state;
 	geometry::HeadAngles angles;
@@ -87,6 +88,7 @@ struct MissionResult
 	Eigen::Vector3d search_xv_estimate = Eigen::Vector3d::Zero();  ///< estimate at the search
 	RetrievalResult retrieval;
 	DockingResult docking;  ///< the drive to where the arm reaches, if one was needed
+	DockCalibrationResult dock_calibration;  ///< T_C0inA measured before the grasp
 	std::vector<PathSample> path;
 	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps and obstacle looks
 	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted

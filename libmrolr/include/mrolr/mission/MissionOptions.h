@@ -12,6 +12,7 @@
 #include <mrolr/base/TrajectoryPlanner.h>
 #include <mrolr/geometry/BiSightOptions.h>
 #include <mrolr/mission/DeviceOptions.h>
+#include <mrolr/mission/DockCalibration.h>
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObstacleOptions.h>
 #include <mrolr/mission/Plan.h>
@@ -156,12 +157,14 @@ struct MissionOptions
 	recog::RecognitionOptions recognition = recog::RecognitionOptions::defaults();
 	arm::RtxOptions rtx;
 	arm::GraspFeasibilityOptions grasp;
-	arm::ArmMount dock;     ///< calibrated T_C0inA of the docked arm (section [arm_mount])
+	arm::ArmMount dock;     ///< nominal T_C0inA of the docked arm (section [arm_mount])
+	arm::MarkerOptions marker;  ///< the hand's calibration marker ([arm_marker] of the arm file)
 	DeviceOptions devices;  ///< [device.base|head|arm|camera]
 	NavigationOptions navigation;
 	SearchOptions search;
 	RetrievalOptions retrieval;
 	DockingOptions docking;  ///< [docking]: where to drive when the arm cannot reach
+	DockCalibrationOptions dock_calibration;  ///< [dock_calibration]: T_C0inA measured, eq 6.7.2
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
 	/** [image_verification] of [files] recognition_file, read for reconstructed scenes with
 	 * search.image_verification. */

@@ -9,6 +9,7 @@
 #include <mrolr/hw/Devices.h>
 #include <mrolr/hw/SimulatedSensors.h>
 #include <mrolr/mission/MissionOptions.h>
+#include <mrolr/mission/SelfModel.h>
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/slam/ActiveSlamFilter.h>
 #include <mrolr/vision/VisualSlam.h>
@@ -87,6 +88,9 @@ class Navigator
 	 * pairs of @p head (the plan's known features with their patches, then features of its own;
 	 * the grabbing time goes to the timeline's render time, the rest to compute). */
 	void useImages(vision::StereoHeadDevice& head, const std::function<double()>& grab_seconds);
+	/** Features the robot's own arm hides, or on it, are neither measured nor added (useImages()
+	 * first; @p self must outlive the navigator). */
+	void ignoreSelf(const SelfModel& self);
 	/** A simulated landmark sensor (tests): measurements of named landmarks; the plan's known
 	 * features are measured by their ids. */
 	void useSensor(hw::LandmarkSensor& sensor);

@@ -8,6 +8,7 @@
  * The waypoints are returned in W (z, x) from the robot's current estimate. */
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/ObstacleDetour.h>
+#include <mrolr/mission/SelfModel.h>
 #include <mrolr/mission/ObstacleStereo.h>
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/mission/Plan.h>
@@ -62,6 +63,8 @@ class ObstacleAvoidance
 	/** Tables of the map (W): points within @p margin_m of their footprints are no obstacles (the
 	 * route planning goes round them already, TableDetour.cpp). Placed from the estimate. */
 	void setKnownTables(const std::vector<PlanTable>& tables, double margin_m);
+	/** Points on the robot's own arm are no obstacles (@p self outlives this). */
+	void ignoreSelf(const SelfModel& self) { self_ = &self; }
 
  private:
 	std::vector<Eigen::Vector3d> look(double pan_deg);
@@ -76,6 +79,7 @@ class ObstacleAvoidance
 	ObstacleStereo stereo_;
 	ObstacleReport report_;
 	std::vector<PlanTable> tables_;
+	const SelfModel* self_ = nullptr;
 	double table_margin_m_ = 0;
 	Eigen::Vector3d xv_ = Eigen::Vector3d::Zero();  ///< estimate at the current check
 	bool onKnownTable(const Eigen::Vector3d& p_inB) const;

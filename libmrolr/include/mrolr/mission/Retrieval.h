@@ -1,6 +1,7 @@
 #pragma once
 /** Retrieval of a recognised object with the docked RTX arm (thesis 6.6–6.7, 7.2.2):
- *   T_OinA = T_C0inA · T_OinC0 (eq 6.7.1, T_C0inA known from the docking),
+ *   T_OinA = T_C0inA · T_OinC0 (eq 6.7.1, T_C0inA the nominal [arm_mount] until setMount() gives
+ *   the one calibrated where the robot stands, DockCalibration.h),
  *   T_GinA = T_OinA · T_GinO (the model's grasp line),
  * the grasp is checked (reach, opening, table, arm/GraspFeasibility.h, and a reachable pre-grasp
  * pose) before the arm moves; the arm goes to a pre-grasp pose approach_mm back along z_G (or above
@@ -16,6 +17,7 @@
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/ObjectSearch.h>
+#include <mrolr/mission/SelfModel.h>
 
 #include <cmath>
 #include <functional>
@@ -61,8 +63,16 @@ class Retrieval
 	/** The grasp (A, mm) of the model's grasp line turned by @p turn_deg, object at
 	 * @p T_OinC0_mm (eq 6.7.1). */
 	Eigen::Isometry3d graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const;
-	/** The table plane's height in A (mm) for a table top @p top_height_m above the floor. */
-	double tableZinA(double top_height_m) const;
+	/** The verification view is taken from the first of the pre-grasp pose and poses above it
+	 * (every approach_mm up to the column's top) from which @p self says the arm leaves the
+	 * object in view (@p self outlives this). */
+	void viewPast(const SelfModel& self) { self_ = &self; }
+	/** From now on the grasp chain uses @p T_C0inA_mm (the calibrated mount). */
+	void setMount(const Eigen::Isometry3d& T_C0inA_mm) { T_C0inA_ = T_C0inA_mm; }
+	const Eigen::Isometry3d& mount() const { return T_C0inA_; }
+	/** The table top's height in A (mm) under the object at @p p_OinC0_mm, for a top
+	 * @p top_height_m above the floor (A may stand tilted on the base: the dock's error). */
+	double tableZinA(double top_height_m, const Eigen::Vector3d& p_OinC0_mm) const;
 	/** Whether a grasp of the object at @p T_OinC0_mm (C0 where the base stands, or would stand)
 	 * is feasible, without moving the arm; @p reasons says why not (the docking planner's test). */
 	bool feasibleAt(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
@@ -91,6 +101,10 @@ class Retrieval
 	void closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& timeline) const;
 	const model::WireFrame& target_;
 	arm::AnalyticIk ik_;
+	Eigen::Isometry3d T_C0inA_;
+	const SelfModel* self_ = nullptr;
+	/** Joints of the verification view: the pre-grasp @p pre, or a pose above it. */
+	arm::RtxJoints viewingJoints(const RetrievalResult& r, const arm::RtxJoints& pre) const;
 };
 
 }  // namespace mrolr::mission

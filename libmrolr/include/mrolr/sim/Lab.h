@@ -7,6 +7,7 @@
  * these devices. W: x left, y up, z forward, metres. */
 #include <mrolr/arm/GraspChain.h>
 #include <mrolr/arm/GraspFeasibility.h>
+#include <mrolr/arm/MountCalibration.h>
 #include <mrolr/arm/RtxOptions.h>
 #include <mrolr/base/LabmateModel.h>
 #include <mrolr/geometry/BiSightOptions.h>
@@ -41,7 +42,8 @@ struct LabOptions
 	geometry::BiSightOptions bisight;
 	arm::RtxOptions rtx;
 	arm::GraspFeasibilityOptions gripper;  ///< the gripper's opening and fingers
-	arm::ArmMount mount;                   ///< physical T_C0inA of the arm on the base (mm)
+	arm::ArmMount mount;                   ///< nominal T_C0inA of the arm on the base (mm)
+	arm::MarkerOptions marker;             ///< the hand's calibration ball, drawn ([arm_marker])
 	SimBaseOptions base;
 	SimArmOptions arm;
 	GripperPhysicsOptions gripper_physics;
@@ -95,6 +97,11 @@ class Lab
 	/** Truth, world side only. */
 	Eigen::Vector3d truePose() const { return base_.truePose(); }
 	Eigen::Isometry3d trueC0() const;
+	/** The arm base's true place: the nominal T_C0inA off by the dock's error (mm). */
+	const Eigen::Isometry3d& trueMount() const { return T_C0inA_true_mm_; }
+	/** The arm base A in W now (thesis axes, metres). */
+	Eigen::Isometry3d T_AinW() const;
+	const SimArm& simArm() const { return *arm_; }
 	const std::map<std::string, Eigen::Isometry3d>& objectPoses() const { return poses_; }
 	/** Instance in the gripper, "" if none. */
 	const std::string& held() const { return arm_->grasped(); }
@@ -117,6 +124,7 @@ class Lab
 	void afterStep();
 
 	LabOptions o_;
+	Eigen::Isometry3d T_C0inA_true_mm_;
 	SimBase base_;
 	std::map<std::string, Eigen::Isometry3d> poses_;
 	std::map<std::string, world::ObjectShape> shapes_;

@@ -25,6 +25,12 @@ struct SimArmOptions
 	hw::ArmJoints min{0, -180, -90, -160, -110, -90, -180};
 	hw::ArmJoints max{915, 180, 90, 160, 110, 90, 180};
 	double open_width_mm = 90;  ///< jaw distance of the open gripper (the RTX's 90 mm)
+	/** The dock's error: the arm base stands off the nominal [arm_mount] T_C0inA by a rigid offset
+	 * drawn once per run from [mission] seed, each translation within ±mount_error_mm and each
+	 * rotation (about A's axes) within ±mount_error_deg. The robot does not know it. */
+	double mount_error_mm = 0;
+	double mount_error_deg = 0;
+	bool drawn = false;  ///< key draw_arm: the arm appears in the rendered pairs (ArmVisual.h)
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
@@ -54,6 +60,9 @@ class SimArm : public hw::ArmDevice
 	/** The arm's base moved (it is mounted on the robot): the grasped object follows the gripper. */
 	void baseMoved() { carry(); }
 
+	/** The jaw separation the fingers have now (mm). */
+	double separationMm() const;
+
  private:
 	void carry();
 
@@ -63,9 +72,6 @@ class SimArm : public hw::ArmDevice
 	mrpt::opengl::COpenGLScene* scene_;
 	/** Tested poses of the move to @p joints (1 without physics). */
 	int motionSteps(const hw::ArmJoints& joints) const;
-	/** The jaw separation the fingers have now (mm). */
-	double separationMm() const;
-
 	GripperPhysics* physics_;
 	hw::ArmJoints joints_{};
 	bool closed_ = false;

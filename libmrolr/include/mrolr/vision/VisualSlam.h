@@ -17,6 +17,7 @@
 
 #include <optional>
 #include <string>
+#include <functional>
 #include <vector>
 
 namespace mrolr::vision
@@ -124,6 +125,11 @@ class VisualSlam
 
 	/** Indices of the features the head could measure from the current estimate (5.2.1, 5.7). */
 	std::vector<size_t> visibleFeatures();
+
+	/** When set: true for a point (C0, m) the robot's own body hides or lies on (mission's
+	 * SelfModel). Such a feature is not visible (not selected, not searched, no failure counted)
+	 * and no feature is added there. */
+	std::function<bool(const Eigen::Vector3d&)> self_occludes;
 
 	const std::vector<cv::Mat>& patches() const { return patches_; }
 	int featuresAdded() const { return added_; }

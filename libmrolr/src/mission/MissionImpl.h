@@ -1,0 +1,57 @@
+#pragma once
+// The mission's state (private to the mission area): Mission.cpp runs the stages,
+// MissionRetrieve.cpp the retrieval (docking, dock calibration, grasp).
+#include <mrolr/mission/Mission.h>
+#include <mrolr/mission/MissionStereoHead.h>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace mrolr::mission
+{
+struct Mission::Impl
+{
+	const MissionOptions& o;
+	MissionResult r;
+	RobotDevices dev;
+	SimulatedSensors sensors;
+	model::WireFrame target;
+	std::unique_ptr<Navigator> nav;
+	std::unique_ptr<ObjectSearch> search;
+	std::unique_ptr<ObstacleAvoidance> obstacles;  ///< obstacle mode
+	std::unique_ptr<MissionStereoHead> nav_head;   ///< landmark_sensor = images
+	std::unique_ptr<SelfModel> self;               ///< the arm in the head's view
+	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
+	std::atomic<bool>* stop_flag = nullptr;
+	bool render_failed = false;
+
+	Impl(const MissionOptions& opts, RobotDevices d, SimulatedSensors s);
+	hw::StereoImages grabStereo(StereoShot::Purpose purpose = StereoShot::Purpose::Table);
+	SearchView reconstructedView(const geometry::HeadAngles& angles);
+	SearchView simulatedView(const geometry::HeadAngles& angles);
+	void attachObstacleMode();
+	void stopSafely(const std::string& why);
+	void runStages();
+	void loadTarget();
+	void navigate();
+	bool searchStation(const NamedPose& station);
+	void retrieve();
+	void goHome();
+	void finish();
+	Eigen::Isometry3d predictedInC0(const Eigen::Isometry3d& T_OinW_m,
+	                                const Eigen::Vector3d& xv) const;
+	std::optional<Eigen::Isometry3d> dockAndReobserve(const Retrieval& retrieval,
+	                                                  const PlanTable& table,
+	                                                  const Eigen::Isometry3d& T_OinW_m,
+	                                                  double top_height_m);
+	std::optional<Eigen::Isometry3d> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
+	/** T_C0inA measured with the hand's marker where the base stands (DockCalibration.h). */
+	void calibrateDock(Retrieval& retrieval, const Eigen::Isometry3d& T_OinC0_mm,
+	                   double top_height_m);
+};
+
+
+}  // namespace mrolr::mission
