@@ -40,8 +40,10 @@ void Mission::Impl::retrieve()
 		else if (const auto T = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
 			T_OinC0_mm = *T, frame = r.docking.frame;
 	}
-	if (o.dock_calibration.enabled && (!r.docking.needed || r.docking.planned))
-		calibrateDock(retrieval, T_OinC0_mm, top_height_m);
+	// the arm moves only for a grasp it will attempt (its mount within the refusal bounds)
+	const bool may_grasp =
+	    r.docking.needed ? r.docking.planned : retrieval.feasibleAt(T_OinC0_mm, top_height_m);
+	if (o.dock_calibration.enabled && may_grasp) calibrateDock(retrieval, T_OinC0_mm, top_height_m);
 	r.retrieval = retrieval.run(T_OinC0_mm, top_height_m, *dev.arm, reobserve, r.timeline);
 	r.retrieval.frame = frame;
 	r.retrieved = r.retrieval.retrieved;
