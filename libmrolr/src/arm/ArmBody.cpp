@@ -18,7 +18,7 @@ std::vector<BodyBox> rtxBody(const RtxOptions& rtx, const GraspFeasibilityOption
 	const double c = kColumnHalf_mm, l = kLinkHalf_mm, s = kStemHalf_mm;
 	const double back = -grip.finger_length_mm / 2;
 	const double half_open = grip.gripper_opening_max_mm / 2 + 10;
-	const double plate = m.side_mm * 8.0 / 6.0 / 2.0;  // the code and its white quiet zone
+	const double plate = m.plateHalfMm();  // the code and its white quiet zone
 	const Eigen::Vector3d& p = m.p_MinG_mm;
 	return {
 	    {0, {-c, -c, 0}, {c, c, rtx.d1_top_mm + 60}},                 // column

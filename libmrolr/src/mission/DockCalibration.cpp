@@ -102,7 +102,7 @@ bool DockCalibrator::markerInView(const arm::RtxJoints& j, const Eigen::Isometry
 	}
 	// the arm's own boxes (the hand's excepted: the plate faces the head in front of it) must
 	// leave the lines of sight to the plate clear
-	const double clear_mm = marker_.side_mm * 8.0 / 6.0 / 2.0;
+	const double clear_mm = marker_.plateHalfMm();
 	const auto boxes = arm::placeBody(body_, kin_, j, T_AinC0);
 	for (size_t b = 0; b < boxes.size(); ++b)
 	{

@@ -44,7 +44,7 @@ mrpt::img::CImage markerTexture(int id)
 /** The marker plate in G: its plane x_G = p.x, local x along y_G, local y along z_G. */
 mrpt::opengl::CTexturedPlane::Ptr markerPlate(const arm::MarkerOptions& m)
 {
-	const double half_m = m.side_mm * 8.0 / 6.0 / 2.0 * kMm;
+	const double half_m = m.plateHalfMm() * kMm;
 	auto p = mrpt::opengl::CTexturedPlane::Create(-half_m, half_m, -half_m, half_m);
 	p->assignImage(markerTexture(m.aruco_id));
 	// the pose within G itself (the set it joins is posed in G's own axes)

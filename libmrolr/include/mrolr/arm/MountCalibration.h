@@ -27,6 +27,8 @@ struct MarkerOptions
 	Eigen::Vector3d p_MinG_mm{60, 0, -50};  ///< the marker square's centre in the gripper frame G
 	double side_mm = 40;                      ///< side of the black square (the code's outer edge)
 	int aruco_id = 7;                         ///< its id in DICT_4X4_50
+	/** Half the plate's side: the code (6 cells) inside a one-cell white quiet zone (8 cells). */
+	double plateHalfMm() const { return side_mm * 8.0 / 6.0 / 2.0; }
 
 	/** Every key required; throws util::ConfigError naming the key. */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
