@@ -183,9 +183,9 @@ void Navigator::driveThrough(const std::vector<Eigen::Vector2d>& via, Eigen::Vec
 
 std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
                                                     const Eigen::Vector3d& goal, double reverse_m,
-                                                    bool may_back_off, bool& backing)
+                                                    bool may_back_off, std::string& away)
 {
-	backing = false;
+	away.clear();
 	const double margin = tableMargin();
 	auto blocked = [&](const std::vector<base::PlannedStep>& p)
 	{ return firstBlockedStep(o_.plan.tables, o_.labmate, e, p, margin).has_value(); };
@@ -197,9 +197,20 @@ std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
 		auto straight = planMissionLeg(e, alongHeading(e, goal), model_, o_.trajectory, 1.0);
 		if (!blocked(straight)) return straight;
 	}
+	if (!may_back_off) return plan;
+	// ... or back to where the goal's heading leads straight in from, lined up with it: driving
+	// in askew sweeps the footprint's corner further ahead than its front ...
+	if (const auto a = approachPoint(goal))
+	{
+		auto line_up = planMissionLeg(e, {a->x(), a->y(), goal.z()}, model_, o_.trajectory, 1.6);
+		if (!blocked(line_up))
+		{
+			away = "lining up with the goal's heading away from the table";
+			return line_up;
+		}
+	}
 	// ... or straight back (or on) until turning there is clear; backwards the head does not see,
 	// so never further than kMaxBlindBack_m, and not again once backing off did not help.
-	if (!may_back_off) return plan;
 	for (double d : kStraightSteps_m)
 		for (double sign : {-1.0, 1.0})
 			if (const Eigen::Vector2d b = along(e, sign * d);
@@ -207,7 +218,7 @@ std::vector<base::PlannedStep> Navigator::clearPlan(const Eigen::Vector3d& e,
 			{
 				auto move = planMissionLeg(e, {b.x(), b.y(), e.z()}, model_, o_.trajectory, 1.6);
 				if (blocked(move)) continue;
-				backing = true;
+				away = "backing away from the table to turn";
 				return move;
 			}
 	return plan;  // nothing clear from here: the bumper will say so
@@ -225,19 +236,20 @@ void Navigator::driveStraightTo(const Eigen::Vector3d& goal, int correction_legs
 		    (e.head<2>() - goal.head<2>()).norm() < o_.navigation.waypoint_tolerance_m;
 		if (leg > 0 && close && std::abs(base::wrapAngle(e.z() - goal.z())) < 0.02) return;
 		std::vector<base::PlannedStep> plan;
-		bool backing = false;
+		std::string away;
 		{
 			ComputeTimer t(timeline_);
 			// Obstacle mode looks ahead before each translation: no reversing blind.
 			const double reverse_m =
 			    before_translation || !may_reverse ? 0.0 : o_.navigation.reverse_max_m;
-			plan = clearPlan(e, goal, reverse_m, backs < kMaxBackOffs, backing);
+			plan = clearPlan(e, goal, reverse_m, backs < kMaxBackOffs, away);
 		}
+		const bool backing = !away.empty();
 		if (backing)
 		{
 			++backs;
-			timeline_.note("backing away from the table to turn");
-			--leg;  // backing off is not a correction of its own
+			timeline_.note(away);
+			--leg;  // moving away to come in again is not a correction of its own
 		}
 		// round an obstacle or off course: plan the leg anew (a back-off is a move of its own, not
 		// a step towards the goal, so it is neither steered nor looked along)

@@ -128,11 +128,13 @@ class Navigator
  private:
 	void addPlanFeatures();
 	/** The leg from @p e to @p goal whose swept footprint keeps clear of the plan's tables: the
-	 * planned one, else along the heading to the goal's projection, else straight back until
-	 * turning is clear (@p backing set, only when @p may_back_off); the planned one when nothing
-	 * is clear. */
+	 * planned one, else along the heading to the goal's projection; only when @p may_back_off,
+	 * else back to the goal's approach point lined up with its heading, else straight back until
+	 * turning is clear (@p away names such a move away from the goal); the planned one when
+	 * nothing is clear. */
 	std::vector<base::PlannedStep> clearPlan(const Eigen::Vector3d& e, const Eigen::Vector3d& goal,
-	                                         double reverse_m, bool may_back_off, bool& backing);
+	                                         double reverse_m, bool may_back_off,
+	                                         std::string& away);
 	/** A point @p goal's heading leads straight into from where turning is clear, if any. */
 	std::optional<Eigen::Vector2d> approachPoint(const Eigen::Vector3d& goal);
 	/** True when turning in place at @p xv keeps tableMargin() (and @p slack_m) from the tables. */
