@@ -58,6 +58,33 @@ TEST(ArmAnalyticIk, RoundTripOnTenThousandRandomReachablePoses)
 	EXPECT_GE(total, 10000u);
 }
 
+// At q5 = 0 or 180° (the wrist's singularity) only q4 ∓ q6 is defined; the flipped wrist is then
+// solved afresh instead of being derived from the regular one, and every answer must still reach
+// the pose, including just off the singularity where the derivation takes over.
+TEST(ArmAnalyticIk, RoundTripAtAndNearTheWristSingularity)
+{
+	std::mt19937 rng(7);
+	const RtxKinematics kin;
+	const AnalyticIk ik;
+	int solved = 0;
+	for (int n = 0; n < 600; ++n)
+	{
+		RtxJoints j = test::randomReachableJoints(rng);
+		const double offsets[] = {0.0, 1e-13, -1e-13, 1e-7};
+		j.q_rad[4] = (n % 2 ? M_PI : 0.0) + offsets[n % 4];
+		const Eigen::Isometry3d T = kin.T06(j);
+		const IkResult r = ik.solve(T);
+		solved += !r.solutions.empty();
+		for (const auto& s : r.solutions)
+		{
+			const Eigen::Isometry3d Ts = kin.T06(s.joints);
+			ASSERT_LT(test::positionError(Ts, T), 1e-6) << "pose " << n;
+			ASSERT_LT(test::rotationError(Ts, T), 1e-9) << "pose " << n;
+		}
+	}
+	EXPECT_GT(solved, 300);  // most of them are within the wrist motors' limits
+}
+
 TEST(ArmAnalyticIk, ReturnsBothElbowConfigurations)
 {
 	// Wrist 131.5 mm out along x (θ = 75°), gripper level along x: q2 = ±75°, q3 = ∓150°, q4 =

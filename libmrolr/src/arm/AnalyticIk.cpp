@@ -9,6 +9,10 @@
 #include <cmath>
 #include <sstream>
 
+// The solve allocates nothing but the result's vectors and formats no text: every quantity below
+// is closed form (no rotation matrices built from angles), the turns of a joint are a fixed-size
+// list, and a rejected branch is kept as numbers (IkRejection) until reason() is asked for.
+
 namespace mrolr::arm
 {
 namespace
@@ -21,7 +25,7 @@ struct WristCentre
 WristCentre wristCentre(const Eigen::Isometry3d& T06, double d6_mm)
 {
 	const Eigen::Vector3d pw = T06.translation() - d6_mm * T06.linear().col(2);
-	return {pw.z(), std::hypot(pw.x(), pw.y()), std::atan2(pw.y(), pw.x())};
+	return {pw.z(), std::sqrt(pw.x() * pw.x() + pw.y() * pw.y()), std::atan2(pw.y(), pw.x())};
 }
 
 std::string describe(const std::string& what, double value, double lo, double hi, const char* unit)
@@ -46,65 +50,127 @@ std::string wristCentreViolation(const WristCentre& w, const RtxOptions& o)
 	return {};
 }
 
-/** (q2, q3) of the planar pair for one elbow configuration (sign of q3). */
-std::pair<double, double> shoulderElbow(const WristCentre& w, const RtxOptions& o, double sign)
+/** q2, q3 of the planar pair for one elbow configuration, and cos/sin of q1 + q2 + q3. */
+struct ShoulderElbow
+{
+	double q2 = 0, q3 = 0, c123 = 1, s123 = 0;
+};
+
+/** The planar pair for one elbow configuration (@p sign of q3): c3 by the cosine rule, s3 =
+ * ±√(1 − c3²), q2 from the wrist's azimuth. */
+ShoulderElbow shoulderElbow(const WristCentre& w, const RtxOptions& o, double sign)
 {
 	const double a2 = o.a2_mm, a3 = o.a3_mm, r = w.radius_mm;
 	const double c3 = std::clamp((r * r - a2 * a2 - a3 * a3) / (2 * a2 * a3), -1.0, 1.0);
+	const double s3 = sign * std::sqrt(std::max(0.0, 1 - c3 * c3));
+	const double q1 = mrpt::DEG2RAD(o.q1_fixed_deg);
 	const double q3 = sign * std::acos(c3);
-	const double q2 = w.azimuth_rad - std::atan2(a3 * std::sin(q3), a2 + a3 * std::cos(q3));
-	return {q2 - mrpt::DEG2RAD(o.q1_fixed_deg), q3};
+	const double q2 = w.azimuth_rad - std::atan2(a3 * s3, a2 + a3 * c3) - q1;
+	const double q123 = q1 + q2 + q3;
+	return {q2, q3, std::cos(q123), std::sin(q123)};
+}
+
+/** R36 = Rz(q1 + q2 + q3)ᵀ · R06 without forming the rotation. */
+Eigen::Matrix3d wristRotation(const Eigen::Matrix3d& R06, double c, double s)
+{
+	Eigen::Matrix3d R36;
+	R36.row(0) = c * R06.row(0) + s * R06.row(1);
+	R36.row(1) = -s * R06.row(0) + c * R06.row(1);
+	R36.row(2) = R06.row(2);
+	return R36;
 }
 
 /** Wrist angles q4, q5, q6 for R36 = Rz(q4)·Rx(90°)·Rz(q5)·Rx(90°)·Rz(q6); q5 >= 0 unless
- * @p flipped. At q5 = 0 or 180° only q4 ∓ q6 matters: q4 = 0 is chosen. */
+ * @p flipped. With A = Rz(q4)·Rx(90°)·Rz(q5)·Rx(90°) = [c4c5 s4 c4s5; s4c5 −c4 s4s5; s5 0 −c5],
+ * Rz(q6) = Aᵀ·R36 gives q6 = atan2(s4·r00 − c4·r10, c4c5·r00 + s4c5·r10 + s5·r20). At q5 = 0 or
+ * 180° only q4 ∓ q6 matters: q4 = 0 is chosen. */
 std::array<double, 3> wristAngles(const Eigen::Matrix3d& R36, bool flipped)
 {
 	const Eigen::Vector3d a = R36.col(2);  // (c4 s5, s4 s5, −c5)
-	const double s5_abs = std::hypot(a.x(), a.y());
+	const double s5_abs = std::sqrt(a.x() * a.x() + a.y() * a.y());
 	const double s5 = flipped ? -s5_abs : s5_abs;
 	const double q5 = std::atan2(s5, -a.z());
-	const double q4 = s5_abs > 1e-12 ? std::atan2(a.y() / s5, a.x() / s5) : 0.0;
-	// q6 from what is left: Rz(q6) = (Rz(q4) Rx(90) Rz(q5) Rx(90))ᵀ R36
-	const Eigen::Matrix3d Rx90 = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).matrix();
-	const Eigen::Matrix3d R35 = Eigen::AngleAxisd(q4, Eigen::Vector3d::UnitZ()).matrix() * Rx90 *
-	                            Eigen::AngleAxisd(q5, Eigen::Vector3d::UnitZ()).matrix() * Rx90;
-	const Eigen::Matrix3d R56 = R35.transpose() * R36;
-	return {q4, q5, std::atan2(R56(1, 0), R56(0, 0))};
+	const bool regular = s5_abs > 1e-12;
+	const double q4 = regular ? std::atan2(a.y() / s5, a.x() / s5) : 0.0;
+	const double c4 = regular ? a.x() / s5 : 1.0, s4 = regular ? a.y() / s5 : 0.0;
+	const double n5 = std::sqrt(s5 * s5 + a.z() * a.z());
+	const double c5 = -a.z() / n5, sn5 = s5 / n5;
+	const double y = s4 * R36(0, 0) - c4 * R36(1, 0);
+	const double x = c4 * c5 * R36(0, 0) + s4 * c5 * R36(1, 0) + sn5 * R36(2, 0);
+	return {q4, q5, std::atan2(y, x)};
 }
 
-/** a + 2πk, k ∈ {−1, 0, 1}, with a normalised to (−π, π], whose count lies within @p r. */
-std::vector<double> turnsWithin(double a, double deg_per_count, const CountRange& r)
+/** The flipped wrist (q5 < 0) of a regular one: (q4 + π, −q5, q6 + π) gives the same R36, since
+ * c4, s4 and s5 change sign and c5 does not. At q5 = 0 or 180° it is solved afresh. */
+std::array<double, 3> flippedWrist(const std::array<double, 3>& normal, const Eigen::Matrix3d& R36)
 {
-	std::vector<double> out;
-	const double base = mrpt::math::wrapToPi(a);
+	const Eigen::Vector3d a = R36.col(2);
+	if (a.x() * a.x() + a.y() * a.y() <= 1e-24) return wristAngles(R36, true);
+	return {normal[0] + M_PI, -normal[1], normal[2] + M_PI};
+}
+
+/** mrpt::math::wrapToPi into [−π, π), without its fmod for an angle within one turn of it. */
+double wrapToPi(double a)
+{
+	if (a >= -M_PI && a < M_PI) return a;
+	if (a >= M_PI && a < 3 * M_PI) return a - 2 * M_PI;
+	if (a < -M_PI && a >= -3 * M_PI) return a + 2 * M_PI;
+	return mrpt::math::wrapToPi(a);
+}
+
+/** Up to three values of one joint. */
+struct Turns
+{
+	std::array<double, 3> v{};
+	int n = 0;
+	bool empty() const { return n == 0; }
+	const double* begin() const { return v.data(); }
+	const double* end() const { return v.data() + n; }
+};
+
+/** a + 2πk, k ∈ {−1, 0, 1}, with a normalised to (−π, π], whose count lies within @p r. */
+Turns turnsWithin(double a, double deg_per_count, const CountRange& r)
+{
+	Turns out;
+	const double base = wrapToPi(a);
 	for (int k = -1; k <= 1; ++k)
 	{
 		const double v = base + 2 * M_PI * k;
 		const double c = mrpt::RAD2DEG(v) / deg_per_count;
-		if (c >= r.min - 1e-9 && c <= r.max + 1e-9) out.push_back(v);
+		if (c >= r.min - 1e-9 && c <= r.max + 1e-9) out.v[static_cast<size_t>(out.n++)] = v;
 	}
 	return out;
 }
 
-/** (q5, q6) pairs, each turned by 0 or ±360°, within both differential wrist motors' limits. */
-std::vector<std::pair<double, double>> wristTurnsWithin(double q5, double q6, const RtxOptions& o)
+/** Up to nine (q5, q6) pairs. */
+struct WristTurns
 {
-	std::vector<std::pair<double, double>> out;
-	for (double a5 : turnsWithin(q5, 1.0, {-1e9, 1e9}))
-		for (double a6 : turnsWithin(q6, 1.0, {-1e9, 1e9}))
+	std::array<std::pair<double, double>, 9> v{};
+	int n = 0;
+	bool empty() const { return n == 0; }
+	const std::pair<double, double>* begin() const { return v.data(); }
+	const std::pair<double, double>* end() const { return v.data() + n; }
+};
+
+bool inLimit(double count, const CountRange& r)
+{
+	return count >= r.min - 1e-9 && count <= r.max + 1e-9;
+}
+
+/** (q5, q6) pairs, each turned by 0 or ±360°, within both differential wrist motors' limits
+ * (the counts as jointsToCounts computes them). */
+WristTurns wristTurnsWithin(double q5, double q6, const RtxOptions& o)
+{
+	WristTurns out;
+	const double b5 = wrapToPi(q5), b6 = wrapToPi(q6);
+	for (int k5 = -1; k5 <= 1; ++k5)
+		for (int k6 = -1; k6 <= 1; ++k6)
 		{
-			RtxJoints j;
-			j.q_rad[4] = a5;
-			j.q_rad[5] = a6;
-			const MotorCounts c = jointsToCounts(j, o);
-			const auto in = [&](Motor m)
-			{
-				const auto& r = o.limit(m);
-				const double v = c[static_cast<size_t>(m)];
-				return v >= r.min - 1e-9 && v <= r.max + 1e-9;
-			};
-			if (in(Motor::Wrist1) && in(Motor::Wrist2)) out.emplace_back(a5, a6);
+			const double a5 = b5 + 2 * M_PI * k5, a6 = b6 + 2 * M_PI * k6;
+			const double pitch = 90.0 - mrpt::RAD2DEG(a5), roll = mrpt::RAD2DEG(a6);
+			if (inLimit((-pitch + roll) / o.wrist_deg_per_count, o.limit(Motor::Wrist1)) &&
+			    inLimit((-pitch - roll) / o.wrist_deg_per_count, o.limit(Motor::Wrist2)))
+				out.v[static_cast<size_t>(out.n++)] = {a5, a6};
 		}
 	return out;
 }
@@ -123,13 +189,21 @@ bool sameJoints(const RtxJoints& a, const RtxJoints& b)
 	return true;
 }
 
-/** Adds every turn of @p j within the limits, or the reason none is. */
+void addSolution(const IkSolution& s, IkResult& res)
+{
+	for (const auto& t : res.solutions)
+		if (sameJoints(t.joints, s.joints)) return;
+	if (res.solutions.empty()) res.solutions.reserve(8);
+	res.solutions.push_back(s);
+}
+
+/** Adds every turn of @p j within the limits, or why none is. */
 void addWithinLimits(const RtxJoints& j, const RtxOptions& o, IkSolution proto, IkResult& res)
 {
-	const auto q2s = turnsWithin(j.q(2), o.shoulder_deg_per_count, o.limit(Motor::Shoulder));
-	const auto q3s = turnsWithin(j.q(3), o.elbow_deg_per_count, o.limit(Motor::Elbow));
-	const auto q4s = turnsWithin(j.q(4), o.yaw_deg_per_count, o.limit(Motor::Yaw));
-	const auto w56 = wristTurnsWithin(j.q(5), j.q(6), o);
+	const Turns q2s = turnsWithin(j.q(2), o.shoulder_deg_per_count, o.limit(Motor::Shoulder));
+	const Turns q3s = turnsWithin(j.q(3), o.elbow_deg_per_count, o.limit(Motor::Elbow));
+	const Turns q4s = turnsWithin(j.q(4), o.yaw_deg_per_count, o.limit(Motor::Yaw));
+	const WristTurns w56 = wristTurnsWithin(j.q(5), j.q(6), o);
 	const size_t before = res.solutions.size();
 	for (double q2 : q2s)
 		for (double q3 : q3s)
@@ -139,26 +213,48 @@ void addWithinLimits(const RtxJoints& j, const RtxOptions& o, IkSolution proto, 
 					proto.joints = j;
 					proto.joints.q_rad = {j.q(1), q2, q3, q4, q5, q6};
 					proto.counts = jointsToCounts(proto.joints, o);
-					bool dup = false;
-					for (const auto& s : res.solutions)
-						dup = dup || sameJoints(s.joints, proto.joints);
-					if (!dup) res.solutions.push_back(proto);
+					addSolution(proto, res);
 				}
-	if (res.solutions.size() > before ||
-	    !(q2s.empty() || q3s.empty() || q4s.empty() || w56.empty()))
+	if (res.solutions.size() > before || !(q2s.empty() || q3s.empty() || q4s.empty() || w56.empty()))
 		return;
 	RtxJoints wrapped = j;
 	for (size_t i = 1; i < 6; ++i) wrapped.q_rad[i] = mrpt::math::wrapToPi(j.q_rad[i]);
-	res.rejected.push_back(branchName(proto.elbow_left, proto.wrist_flipped) + ": " +
-	                       limitViolation(jointsToCounts(wrapped, o), o));
+	const MotorCounts c = jointsToCounts(wrapped, o);
+	const int m = firstViolatedMotor(c, o);
+	IkRejection r;
+	r.elbow_left = proto.elbow_left;
+	r.wrist_flipped = proto.wrist_flipped;
+	if (m >= 0)
+	{
+		r.motor = static_cast<Motor>(m);
+		r.count = c[static_cast<size_t>(m)];
+		r.limit = o.limits[m];
+	}
+	else  // every wrapped count is within its limit, yet no turn is: cannot happen, said plainly
+		r.pose_reason = branchName(r.elbow_left, r.wrist_flipped) + ": no turn within the limits";
+	if (res.rejected.empty()) res.rejected.reserve(4);
+	res.rejected.push_back(std::move(r));
+}
+
+IkRejection poseRejection(std::string why)
+{
+	IkRejection r;
+	r.pose_reason = std::move(why);
+	return r;
 }
 }  // namespace
+
+std::string IkRejection::text() const
+{
+	if (!pose_reason.empty()) return pose_reason;
+	return branchName(elbow_left, wrist_flipped) + ": " + describeViolation(motor, count, limit);
+}
 
 std::string IkResult::reason() const
 {
 	if (!solutions.empty()) return {};
 	std::string out;
-	for (const auto& r : rejected) out += (out.empty() ? "" : "; ") + r;
+	for (const auto& r : rejected) out += (out.empty() ? "" : "; ") + r.text();
 	return out.empty() ? "no solution" : out;
 }
 
@@ -169,29 +265,28 @@ IkResult AnalyticIk::solve(const Eigen::Isometry3d& T06) const
 	IkResult res;
 	if (!T06.matrix().allFinite())
 	{
-		res.rejected.push_back("the requested pose has a non-finite element");
+		res.rejected.push_back(poseRejection("the requested pose has a non-finite element"));
 		return res;
 	}
 	const WristCentre w = wristCentre(T06, o_.d6_mm);
-	const std::string violation = wristCentreViolation(w, o_);
+	std::string violation = wristCentreViolation(w, o_);
 	if (!violation.empty())
 	{
-		res.rejected.push_back(violation);
+		res.rejected.push_back(poseRejection(std::move(violation)));
 		return res;
 	}
 	const double q1 = mrpt::DEG2RAD(o_.q1_fixed_deg);
 	for (double elbow_sign : {-1.0, 1.0})
 	{
-		const auto [q2, q3] = shoulderElbow(w, o_, elbow_sign);
-		const Eigen::Matrix3d R03 =
-		    Eigen::AngleAxisd(q1 + q2 + q3, Eigen::Vector3d::UnitZ()).matrix();
-		const Eigen::Matrix3d R36 = R03.transpose() * T06.linear();
+		const ShoulderElbow se = shoulderElbow(w, o_, elbow_sign);
+		const Eigen::Matrix3d R36 = wristRotation(T06.linear(), se.c123, se.s123);
+		const std::array<double, 3> normal = wristAngles(R36, false);
 		for (bool flipped : {false, true})
 		{
-			const auto [q4, q5, q6] = wristAngles(R36, flipped);
+			const auto [q4, q5, q6] = flipped ? flippedWrist(normal, R36) : normal;
 			RtxJoints j;
 			j.d1_mm = w.d1_mm;
-			j.q_rad = {q1, q2, q3, q4, q5, q6};
+			j.q_rad = {q1, se.q2, se.q3, q4, q5, q6};
 			IkSolution proto;
 			proto.elbow_left = elbow_sign < 0;
 			proto.wrist_flipped = flipped;

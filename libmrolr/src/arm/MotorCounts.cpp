@@ -44,20 +44,31 @@ std::array<long, kMotorCount> roundCounts(const MotorCounts& c)
 	return r;
 }
 
-std::string limitViolation(const MotorCounts& c, const RtxOptions& o)
+int firstViolatedMotor(const MotorCounts& c, const RtxOptions& o)
 {
 	constexpr double tol = 1e-9;
 	for (int i = 0; i < kMotorCount; ++i)
 	{
 		const auto& r = o.limits[i];
-		if (c[static_cast<size_t>(i)] >= r.min - tol && c[static_cast<size_t>(i)] <= r.max + tol)
-			continue;
-		std::ostringstream s;
-		s << motorName(static_cast<Motor>(i)) << " count " << c[static_cast<size_t>(i)]
-		  << " outside limit [" << r.min << ", " << r.max << "]";
-		return s.str();
+		const double v = c[static_cast<size_t>(i)];
+		if (!(v >= r.min - tol && v <= r.max + tol)) return i;
 	}
-	return {};
+	return -1;
+}
+
+std::string describeViolation(Motor m, double count, const CountRange& limit)
+{
+	std::ostringstream s;
+	s << motorName(m) << " count " << count << " outside limit [" << limit.min << ", "
+	  << limit.max << "]";
+	return s.str();
+}
+
+std::string limitViolation(const MotorCounts& c, const RtxOptions& o)
+{
+	const int i = firstViolatedMotor(c, o);
+	if (i < 0) return {};
+	return describeViolation(static_cast<Motor>(i), c[static_cast<size_t>(i)], o.limits[i]);
 }
 
 void requireWithinLimits(const RtxJoints& j, const RtxOptions& o)

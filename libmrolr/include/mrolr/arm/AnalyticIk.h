@@ -25,12 +25,27 @@ struct IkSolution
 	bool wrist_flipped = false;  ///< q5 < 0
 };
 
+/** Why a candidate was rejected: either the pose itself (@ref pose_reason set, no branch), or one
+ * elbow/wrist branch whose first motor out of range is @ref motor. Kept as values and formatted
+ * only on demand, so that a solve with rejected branches costs no text. */
+struct IkRejection
+{
+	std::string pose_reason;  ///< "wrist radius 510 mm outside limit [...]"; empty for a branch
+	bool elbow_left = true;
+	bool wrist_flipped = false;
+	Motor motor = Motor::Column;  ///< the first motor out of range (of the turn nearest zero)
+	double count = 0;             ///< its count
+	CountRange limit;             ///< and its limit
+	/** "elbow right, wrist normal: elbow count 1700.2 outside limit [-1490, 1490]". */
+	std::string text() const;
+};
+
 /** Every solution, and why the rejected candidates were rejected. */
 struct IkResult
 {
 	std::vector<IkSolution> solutions;
-	std::vector<std::string> rejected;  ///< "elbow right, wrist up: elbow count ... outside ..."
-	/** "" when solutions exist; otherwise all reasons joined by "; ". */
+	std::vector<IkRejection> rejected;
+	/** "" when solutions exist; otherwise every rejection's text() joined by "; ". */
 	std::string reason() const;
 };
 

@@ -26,6 +26,12 @@ RtxJoints countsToJoints(const MotorCounts& c, const RtxOptions& o);
 /** Counts rounded to the nearest integer, as the controller takes them. */
 std::array<long, kMotorCount> roundCounts(const MotorCounts& c);
 
+/** Index of the first motor whose count is outside its limit (1e-9 count tolerance), or −1. */
+int firstViolatedMotor(const MotorCounts& c, const RtxOptions& o);
+
+/** "shoulder count 2700.3 outside limit [-2630, 2630]". */
+std::string describeViolation(Motor m, double count, const CountRange& limit);
+
 /** Empty when every count is within its limit; otherwise "shoulder count 2700.3 outside limit
  * [-2630, 2630]" for the first motor out of range (with a 1e-9 count tolerance). */
 std::string limitViolation(const MotorCounts& c, const RtxOptions& o);
