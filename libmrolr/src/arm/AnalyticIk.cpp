@@ -118,17 +118,26 @@ double wrapToPi(double a)
 	return mrpt::math::wrapToPi(a);
 }
 
-/** Up to three values of one joint. */
-struct Turns
+/** Up to N values, without the heap. */
+template <class T, size_t N>
+struct SmallList
 {
-	std::array<double, 3> v{};
-	int n = 0;
+	std::array<T, N> v{};
+	size_t n = 0;
+	void push(const T& x) { v[n++] = x; }
 	bool empty() const { return n == 0; }
-	const double* begin() const { return v.data(); }
-	const double* end() const { return v.data() + n; }
+	const T* begin() const { return v.data(); }
+	const T* end() const { return v.data() + n; }
 };
+using Turns = SmallList<double, 3>;                       ///< the turns of one joint
+using WristTurns = SmallList<std::pair<double, double>, 9>;  ///< (q5, q6) pairs
 
-/** a + 2πk, k ∈ {−1, 0, 1}, with a normalised to (−π, π], whose count lies within @p r. */
+bool inLimit(double count, const CountRange& r)
+{
+	return count >= r.min - 1e-9 && count <= r.max + 1e-9;
+}
+
+/** a + 2πk, k ∈ {−1, 0, 1}, with a normalised to [−π, π), whose count lies within @p r. */
 Turns turnsWithin(double a, double deg_per_count, const CountRange& r)
 {
 	Turns out;
@@ -136,29 +145,12 @@ Turns turnsWithin(double a, double deg_per_count, const CountRange& r)
 	for (int k = -1; k <= 1; ++k)
 	{
 		const double v = base + 2 * M_PI * k;
-		const double c = mrpt::RAD2DEG(v) / deg_per_count;
-		if (c >= r.min - 1e-9 && c <= r.max + 1e-9) out.v[static_cast<size_t>(out.n++)] = v;
+		if (inLimit(mrpt::RAD2DEG(v) / deg_per_count, r)) out.push(v);
 	}
 	return out;
 }
 
-/** Up to nine (q5, q6) pairs. */
-struct WristTurns
-{
-	std::array<std::pair<double, double>, 9> v{};
-	int n = 0;
-	bool empty() const { return n == 0; }
-	const std::pair<double, double>* begin() const { return v.data(); }
-	const std::pair<double, double>* end() const { return v.data() + n; }
-};
-
-bool inLimit(double count, const CountRange& r)
-{
-	return count >= r.min - 1e-9 && count <= r.max + 1e-9;
-}
-
-/** (q5, q6) pairs, each turned by 0 or ±360°, within both differential wrist motors' limits
- * (the counts as jointsToCounts computes them). */
+/** (q5, q6) pairs, each turned by 0 or ±360°, within both differential wrist motors' limits. */
 WristTurns wristTurnsWithin(double q5, double q6, const RtxOptions& o)
 {
 	WristTurns out;
@@ -167,10 +159,9 @@ WristTurns wristTurnsWithin(double q5, double q6, const RtxOptions& o)
 		for (int k6 = -1; k6 <= 1; ++k6)
 		{
 			const double a5 = b5 + 2 * M_PI * k5, a6 = b6 + 2 * M_PI * k6;
-			const double pitch = 90.0 - mrpt::RAD2DEG(a5), roll = mrpt::RAD2DEG(a6);
-			if (inLimit((-pitch + roll) / o.wrist_deg_per_count, o.limit(Motor::Wrist1)) &&
-			    inLimit((-pitch - roll) / o.wrist_deg_per_count, o.limit(Motor::Wrist2)))
-				out.v[static_cast<size_t>(out.n++)] = {a5, a6};
+			const auto [w1, w2] = wristCounts(a5, a6, o);
+			if (inLimit(w1, o.limit(Motor::Wrist1)) && inLimit(w2, o.limit(Motor::Wrist2)))
+				out.push({a5, a6});
 		}
 	return out;
 }

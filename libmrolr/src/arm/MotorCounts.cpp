@@ -5,20 +5,25 @@
 
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 namespace mrolr::arm
 {
+std::pair<double, double> wristCounts(double q5_rad, double q6_rad, const RtxOptions& o)
+{
+	const double pitch = 90.0 - mrpt::RAD2DEG(q5_rad);
+	const double roll = mrpt::RAD2DEG(q6_rad);
+	return {(-pitch + roll) / o.wrist_deg_per_count, (-pitch - roll) / o.wrist_deg_per_count};
+}
+
 MotorCounts jointsToCounts(const RtxJoints& j, const RtxOptions& o)
 {
-	const double pitch = 90.0 - mrpt::RAD2DEG(j.q(5));
-	const double roll = mrpt::RAD2DEG(j.q(6));
 	MotorCounts c{};
 	c[0] = (j.d1_mm - o.d1_top_mm) / o.column_mm_per_count;
 	c[1] = mrpt::RAD2DEG(j.q(2)) / o.shoulder_deg_per_count;
 	c[2] = mrpt::RAD2DEG(j.q(3)) / o.elbow_deg_per_count;
 	c[3] = mrpt::RAD2DEG(j.q(4)) / o.yaw_deg_per_count;
-	c[4] = (-pitch + roll) / o.wrist_deg_per_count;
-	c[5] = (-pitch - roll) / o.wrist_deg_per_count;
+	std::tie(c[4], c[5]) = wristCounts(j.q(5), j.q(6), o);
 	return c;
 }
 

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 
 namespace mrolr::arm
 {
@@ -19,6 +20,9 @@ using MotorCounts = std::array<double, kMotorCount>;
 
 /** Counts of joint values @p j (q1 is not a motor and is ignored). */
 MotorCounts jointsToCounts(const RtxJoints& j, const RtxOptions& o);
+
+/** The two differential wrist motors' counts of q5, q6 (radians), as jointsToCounts gives them. */
+std::pair<double, double> wristCounts(double q5_rad, double q6_rad, const RtxOptions& o);
 
 /** Joint values of counts @p c; q1 = o.q1_fixed_deg. */
 RtxJoints countsToJoints(const MotorCounts& c, const RtxOptions& o);
