@@ -39,8 +39,8 @@ bool better(const ImageScore& a, const ImageScore& b)
 /** The pattern search from @p start (its score @p start_s): steps of kStartStep along the 6
  * parameters (rotations about @p axis_O's image), halved when none lowers the cost. */
 std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::patternSearch(
-    const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& start,
-    const ImageScore& start_s, const SelfOcclusion* occ, const Eigen::Vector3d& axis_O) const
+    const SightedSamples& samples, const Eigen::Isometry3d& start, const ImageScore& start_s,
+    const Eigen::Vector3d& axis_O) const
 {
 	Eigen::Isometry3d best = start;
 	ImageScore best_s = start_s;
@@ -54,7 +54,7 @@ std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::patternSearch(
 			{
 				const Eigen::Isometry3d T =
 				    moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
-				const ImageScore s = score(samples_O, T, occ);
+				const ImageScore s = score(samples, T);
 				++evals;
 				if (s.cost >= best_s.cost) continue;
 				best = T, best_s = s, improved = true;
@@ -69,6 +69,13 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
                                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
                                         const std::vector<Eigen::Vector3d>& axes_O) const
 {
+	return refine(SightedSamples(samples_O, occ), T_OinL, axes_O);
+}
+
+Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,
+                                        const Eigen::Isometry3d& T_OinL,
+                                        const std::vector<Eigen::Vector3d>& axes_O) const
+{
 	// the sweep keeps the yaw with the most supported samples and the one with the highest
 	// fraction; each is scored unrefined, so both (and the start) are refined and compared then
 	struct Seed
@@ -78,25 +85,25 @@ Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O
 		Eigen::Vector3d axis_O;
 	};
 	const Eigen::Vector3d axis0_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
-	const Seed start{T_OinL, score(samples_O, T_OinL, occ), axis0_O};
+	const Seed start{T_OinL, score(samples, T_OinL), axis0_O};
 	Seed by_count = start, by_fraction = start;
 	const double yaw_step = opts_.yaw_step_deg * M_PI / 180;
 	for (const auto& a_O : axes_O)
 		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
 		{
 			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
-			const ImageScore s = score(samples_O, T, occ);
+			const ImageScore s = score(samples, T);
 			if (better(s, by_count.s)) by_count = {T, s, a_O};
 			if (s.score > by_fraction.s.score) by_fraction = {T, s, a_O};
 		}
-	auto [best, best_s] = patternSearch(samples_O, by_count.T, by_count.s, occ, by_count.axis_O);
+	auto [best, best_s] = patternSearch(samples, by_count.T, by_count.s, by_count.axis_O);
 	std::vector<const Seed*> others;  // each distinct seed refined once
 	if (!start.T.isApprox(by_count.T)) others.push_back(&start);
 	if (!by_fraction.T.isApprox(by_count.T) && !by_fraction.T.isApprox(start.T))
 		others.push_back(&by_fraction);
 	for (const Seed* o : others)
 	{
-		const auto [T, s] = patternSearch(samples_O, o->T, o->s, occ, o->axis_O);
+		const auto [T, s] = patternSearch(samples, o->T, o->s, o->axis_O);
 		if (better(s, best_s)) best = T, best_s = s;
 	}
 	return best_s.supported >= by_count.s.supported ? best : by_count.T;

@@ -205,16 +205,33 @@ bool crossesFrustum(const ProfileSegment& s, double cz, double dz, const Eigen::
 }
 }  // namespace
 
+BodySight bodySight(const RevolutionBody& body, const Eigen::Vector3d& c_O)
+{
+	const Eigen::Vector3d& d = body.axis_dir;
+	BodySight s;
+	s.c_O = c_O;
+	s.e1 = d.unitOrthogonal(), s.e2 = d.cross(s.e1);
+	const Eigen::Vector3d c = c_O - body.axis_point;
+	s.w0 = Eigen::Vector2d(c.dot(s.e1), c.dot(s.e2));
+	s.cz = c.dot(d);
+	return s;
+}
+
+bool crossesSolid(const RevolutionBody& body, const BodySight& sight, const Eigen::Vector3d& p_O,
+                  double margin_mm)
+{
+	const Eigen::Vector3d v = p_O - sight.c_O;
+	const Eigen::Vector2d w1(v.dot(sight.e1), v.dot(sight.e2));
+	const double dz = v.dot(body.axis_dir);
+	for (const auto& s : body.profile)
+		if (crossesFrustum(s, sight.cz, dz, sight.w0, w1, margin_mm)) return true;
+	return false;
+}
+
 bool crossesSolid(const RevolutionBody& body, const Eigen::Vector3d& c_O,
                   const Eigen::Vector3d& p_O, double margin_mm)
 {
-	const Eigen::Vector3d& d = body.axis_dir;
-	const Eigen::Vector3d e1 = d.unitOrthogonal(), e2 = d.cross(e1);
-	const Eigen::Vector3d c = c_O - body.axis_point, v = p_O - c_O;
-	const Eigen::Vector2d w0(c.dot(e1), c.dot(e2)), w1(v.dot(e1), v.dot(e2));
-	for (const auto& s : body.profile)
-		if (crossesFrustum(s, c.dot(d), v.dot(d), w0, w1, margin_mm)) return true;
-	return false;
+	return crossesSolid(body, bodySight(body, c_O), p_O, margin_mm);
 }
 
 }  // namespace mrolr::recog

@@ -126,6 +126,7 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	for (const auto& f : table_.features()) centroid_O_ += f.m;
 	centroid_O_ /= static_cast<double>(table_.features().size());
 	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
+	samples_ = newSampleCache();
 	plane_gen_ = std::make_shared<PlaneHypothesisGenerator>(table_.features(),
 	                                                        modelBaseZ_mm(model), opts_.plane);
 	if (!opts_.verify_visible_only) return;

@@ -13,8 +13,8 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
                                const Eigen::Vector3d* up_S) const
 {
 	const auto& o = images.options();
-	const auto samples = edgeSamples(o.sample_spacing_mm);
-	for (auto& h : poses) h.image = images.score(samples, h.T, occlusion_.get()).score;
+	const SightedSamples& samples = sightedSamples(o.sample_spacing_mm);
+	for (auto& h : poses) h.image = images.score(samples, h.T).score;
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });
 	const std::vector<Eigen::Vector3d> axes_O = upAxisPoints(table_.features());
@@ -23,10 +23,10 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	{
 		auto& h = poses[k];
 		if (h.image < 0.5 * o.min_score) break;
-		const Eigen::Isometry3d T = images.refine(samples, h.T, occlusion_.get(), axes_O);
+		const Eigen::Isometry3d T = images.refine(samples, h.T, axes_O);
 		if (!upright(T, up_S)) continue;
 		h.T = T;
-		h.image = images.score(samples, T, occlusion_.get()).score;
+		h.image = images.score(samples, T).score;
 		h.v = verifyPose(table_, scene, T, beta, theta, p.length_threshold_mm, occlusionFor(up_S));
 	}
 }

@@ -52,10 +52,10 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	best.image_score = 0;
 	best.from_plane = true;
 	const std::vector<PlaneHypothesis> hyps = plane_gen_->generate(scene, plane);
-	const auto coarse = edgeSamples(po.prerank_spacing_mm);
+	const SightedSamples& coarse = sightedSamples(po.prerank_spacing_mm);
 	std::vector<double> quick(hyps.size());
 	for (size_t k = 0; k < hyps.size(); ++k)
-		quick[k] = images.score(coarse, hyps[k].T_OinS, occlusion_.get()).score;
+		quick[k] = images.score(coarse, hyps[k].T_OinS).score;
 	const Eigen::Vector3d* up_S = &plane.n_S;
 	const LevelParams& p = opts_.levels.back();
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace mrolr::recog
 {
@@ -47,8 +49,20 @@ SelfOcclusion::SelfOcclusion(const std::vector<Feature>& features_O, double marg
       bodies_(revolutionBodiesOf(features_O)),
       margin_mm_(margin_mm)
 {
+	if (directions > 128)
+		throw std::invalid_argument("SelfOcclusion: " + std::to_string(directions) +
+		                            " face directions, at most 128");
+	for (const auto& n : normals_) nx_.push_back(n.x()), ny_.push_back(n.y()), nz_.push_back(n.z());
+	if (bodies_.size() > 64)
+		throw std::invalid_argument("SelfOcclusion: " + std::to_string(bodies_.size()) +
+		                            " bodies of revolution, at most 64");
 	for (const auto& f : features_O) samples_.push_back(samplesOf(f, kSamplesPerFeature));
 	offsets_ = offsetsOf(samples_, margin_mm);
+	for (const auto& fs : samples_)
+	{
+		samples_outside_.emplace_back();
+		for (const auto& p : fs) samples_outside_.back().push_back(outsideFaces(offsets_, p));
+	}
 	if (bodies_.empty()) return;
 	// the features off the bodies' surfaces (a cup's handle): they can hide a limb
 	std::vector<std::vector<Eigen::Vector3d>> rest;
@@ -78,9 +92,64 @@ std::vector<double> SelfOcclusion::offsetsOf(const std::vector<std::vector<Eigen
 	return out;
 }
 
+SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& offsets,
+                                                     const std::vector<double>& nc) const
+{
+	View::Faces f;
+	for (size_t i = 0; i < nc.size(); ++i)
+	{
+		if (nc[i] <= offsets[i]) continue;
+		f.outside[i >> 6] |= std::uint64_t{1} << (i & 63);
+		f.nx.push_back(nx_[i]), f.ny.push_back(ny_[i]), f.nz.push_back(nz_[i]);
+		f.nc.push_back(nc[i]), f.gap.push_back(nc[i] - offsets[i]);
+	}
+	return f;
+}
+
+SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
+{
+	View v;
+	v.c_O_ = c_O;
+	for (const auto& n : normals_) v.nc_.push_back(n.dot(c_O));
+	v.all_ = facesFrom(offsets_, v.nc_);
+	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
+	for (const auto& b : bodies_) v.bodies_.push_back(bodySight(b, c_O));
+	return v;
+}
+
 bool SelfOcclusion::hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
 {
-	return crossesPolytope(offsets_, c_O, p_O);
+	return hidden(viewFrom(c_O), p_O);
+}
+
+bool SelfOcclusion::hidden(const View& v, const Eigen::Vector3d& p_O) const
+{
+	return crossesPolytope(offsets_, v.all_, v.nc_, p_O, outsideFaces(offsets_, p_O));
+}
+
+bool SelfOcclusion::hidden(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const
+{
+	return crossesPolytope(offsets_, v.all_, v.nc_, p_O, ps.outside_all);
+}
+
+SelfOcclusion::PointSight SelfOcclusion::pointSight(const Eigen::Vector3d& p_O) const
+{
+	PointSight ps;
+	ps.outside_all = outsideFaces(offsets_, p_O);
+	if (!rest_offsets_.empty()) ps.outside_rest = outsideFaces(rest_offsets_, p_O);
+	for (size_t k = 0; k < bodies_.size(); ++k)
+		if (onSurface(bodies_[k], p_O, margin_mm_)) ps.on_bodies |= std::uint64_t{1} << k;
+	return ps;
+}
+
+std::array<std::uint64_t, 2> SelfOcclusion::outsideFaces(const std::vector<double>& offsets,
+                                                         const Eigen::Vector3d& p_O) const
+{
+	std::array<std::uint64_t, 2> out = {0, 0};
+	for (size_t i = 0; i < offsets.size(); ++i)
+		if (nx_[i] * p_O.x() + ny_[i] * p_O.y() + nz_[i] * p_O.z() > offsets[i])
+			out[i >> 6] |= std::uint64_t{1} << (i & 63);
+	return out;
 }
 
 bool SelfOcclusion::contains(const Eigen::Vector3d& p_O) const
@@ -92,50 +161,73 @@ bool SelfOcclusion::contains(const Eigen::Vector3d& p_O) const
 
 bool SelfOcclusion::hiddenLimb(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
 {
-	return !rest_offsets_.empty() && crossesPolytope(rest_offsets_, c_O, p_O);
+	return hiddenLimb(viewFrom(c_O), p_O);
 }
 
-bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const Eigen::Vector3d& c_O,
-                                    const Eigen::Vector3d& p_O) const
+bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 {
-	// Cyrus–Beck clipping of x(t) = c + t (p − c), t in [0, 1], against n·x <= d.
-	const Eigen::Vector3d v = p_O - c_O;
-	double t0 = 0, t1 = 1;
-	for (size_t i = 0; i < normals_.size() && t0 < t1; ++i)
-	{
-		const double den = normals_[i].dot(v), num = offsets[i] - normals_[i].dot(c_O);
-		if (std::abs(den) < 1e-12)
+	return !rest_offsets_.empty() &&
+	       crossesPolytope(rest_offsets_, v.rest_, v.nc_, p_O, outsideFaces(rest_offsets_, p_O));
+}
+
+bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
+                                    const std::vector<double>& nc, const Eigen::Vector3d& p_O,
+                                    const std::array<std::uint64_t, 2>& p_outside) const
+{
+	// Cyrus–Beck clipping of x(t) = c + t (p − c), t in [0, 1], against n·x <= d, face by face
+	// according to which end is outside it: a face both ends are outside of proves a miss, one
+	// both are inside of bounds nothing, the segment leaves through those only p is outside of
+	// (t1, the least of their t) and crosses when it has entered all those only c is outside of
+	// by then.
+	if ((p_outside[0] & f.outside[0]) | (p_outside[1] & f.outside[1])) return false;
+	const auto np = [&](int i) { return nx_[i] * p_O.x() + ny_[i] * p_O.y() + nz_[i] * p_O.z(); };
+	double t1 = 1;
+	for (int w = 0; w < 2; ++w)
+		for (std::uint64_t bits = p_outside[w]; bits; bits &= bits - 1)
 		{
-			if (num < 0) return false;
-			continue;
+			const int i = 64 * w + __builtin_ctzll(bits);
+			t1 = std::min(t1, (offsets[i] - nc[i]) / (np(i) - nc[i]));
 		}
-		if (den > 0)
-			t1 = std::min(t1, num / den);
-		else
-			t0 = std::max(t0, num / den);
-	}
-	return t0 < t1;
+	if (t1 <= 0) return false;
+	// it enters face k at (nc − d) / (nc − np) (np <= d < nc there): all of them before t1? (no
+	// early exit: the loop is vectorised, and a hidden point has to try every face anyway)
+	const double px = p_O.x(), py = p_O.y(), pz = p_O.z();
+	bool late = false;
+	for (size_t k = 0; k < f.gap.size(); ++k)
+		late |= f.gap[k] >= t1 * (f.nc[k] - (f.nx[k] * px + f.ny[k] * py + f.nz[k] * pz));
+	return !late;
 }
 
 bool SelfOcclusion::hiddenOnBodies(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const
 {
-	bool on_body = false;
-	for (const auto& b : bodies_)
-	{
-		if (!onSurface(b, p_O, margin_mm_)) continue;
-		on_body = true;
-		if (crossesSolid(b, c_O, p_O, margin_mm_)) return true;
-	}
-	return on_body ? false : hidden(c_O, p_O);
+	return hiddenOnBodies(viewFrom(c_O), p_O);
+}
+
+bool SelfOcclusion::hiddenOnBodies(const View& v, const Eigen::Vector3d& p_O) const
+{
+	return hiddenOnBodies(v, pointSight(p_O), p_O);
+}
+
+bool SelfOcclusion::hiddenOnBodies(const View& v, const PointSight& ps,
+                                   const Eigen::Vector3d& p_O) const
+{
+	if (!ps.on_bodies) return hidden(v, ps, p_O);
+	for (size_t k = 0; k < bodies_.size(); ++k)
+		if (((ps.on_bodies >> k) & 1u) && crossesSolid(bodies_[k], v.bodies_[k], p_O, margin_mm_))
+			return true;
+	return false;
 }
 
 std::vector<double> SelfOcclusion::visibleFractions(const Eigen::Vector3d& c_O) const
 {
+	const View v = viewFrom(c_O);
 	std::vector<double> out;
-	for (const auto& fs : samples_)
+	for (size_t k = 0; k < samples_.size(); ++k)
 	{
+		const auto& fs = samples_[k];
 		int seen = 0;
-		for (const auto& p : fs) seen += hidden(c_O, p) ? 0 : 1;
+		for (size_t j = 0; j < fs.size(); ++j)
+			seen += crossesPolytope(offsets_, v.all_, v.nc_, fs[j], samples_outside_[k][j]) ? 0 : 1;
 		out.push_back(fs.empty() ? 1.0 : static_cast<double>(seen) / fs.size());
 	}
 	return out;

@@ -90,6 +90,16 @@ std::vector<EdgeSample> edgeSamplesOf(const std::vector<Feature>& features, doub
  * of @p wf (model::sampleWireFrame); feature indices as featuresOf(wf): lines, then conics. */
 std::vector<EdgeSample> edgeSamplesOf(const model::WireFrame& wf, double spacing_mm);
 
+/** A model's edge samples with the SelfOcclusion::PointSight of each against @p occ (may be
+ * null: nothing hidden), computed once per model and spacing and shared by every pose scored. */
+struct SightedSamples
+{
+	SightedSamples(std::vector<EdgeSample> samples, const SelfOcclusion* occlusion);
+	std::vector<EdgeSample> samples_O;
+	const SelfOcclusion* occ = nullptr;
+	std::vector<SelfOcclusion::PointSight> sights;  ///< per sample; empty without occ
+};
+
 /** Result of one hypothesis in the images. */
 struct ImageScore
 {
@@ -136,6 +146,10 @@ class EdgeImage
 	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
 	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
 	           double& cost_px2, int& occluded, int* outside = nullptr) const;
+	/** The same on samples whose sight is known. */
+	void count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL, double truncate_px,
+	           int& considered, int& supported, double& cost_px2, int& occluded,
+	           int* outside = nullptr) const;
 
 	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
 	 * without distortion (those outside the image too; the hull of a cylinder's rims is its
@@ -163,10 +177,11 @@ class EdgeImage
  private:
 	/** Projects the samples of @p s_O (and the limbs seen from this camera when enabled) at
 	 * @p T_OinL; calls @p fn(pixel, tangent pixel, hidden, limb, depth in this camera mm) for
-	 * those in the image; @p outside (may be null) counts those not hidden by @p occ outside it. */
-	template <class Fn>
-	void forEachInViewWithDepth(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	                            const SelfOcclusion* occ, Fn fn, int* outside = nullptr) const;
+	 * those in the image (the hidden ones only when @p kHiddenToo); @p outside (may be null)
+	 * counts those not hidden by @p occ outside it. */
+	template <bool kHiddenToo, class Fn>
+	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL, Fn fn,
+	                            int* outside = nullptr) const;
 	bool occludedAt(const cv::Point2d& px, double depth_mm) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
 	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
@@ -174,7 +189,7 @@ class EdgeImage
 
 	cv::Matx33d K_;
 	cv::Vec<double, 5> D_;
-	Eigen::Isometry3d T_CcvInL_;
+	Eigen::Isometry3d T_CcvInL_, T_LinCcv_;
 	double dist_px_, sin_tol_;
 	bool limbs_, revolution_visibility_;
 	double limb_spacing_mm_;
@@ -205,6 +220,8 @@ class ImageVerifier
 	/** The same on samples already taken (edgeSamplesOf with options().sample_spacing_mm). */
 	ImageScore score(const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& T_OinL,
 	                 const SelfOcclusion* occ) const;
+	/** The same on samples whose sight is known (what the Recognizer scores with). */
+	ImageScore score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL) const;
 
 	/** Refines @p T_OinL in the images: an options().yaw_step_deg sweep about the model's z axis
 	 * through each of @p axes_O, then the pattern search from the yaw with the most supported
@@ -213,6 +230,9 @@ class ImageVerifier
 	 * returned if it has no fewer than the swept one, else the swept one. */
 	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
 	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
+	                         const std::vector<Eigen::Vector3d>& axes_O) const;
+	/** The same on samples whose sight is known. */
+	Eigen::Isometry3d refine(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
 	                         const std::vector<Eigen::Vector3d>& axes_O) const;
 
 	/** A copy whose images know the regions hidden by @p occluders (EdgeImage::setOccluders,
@@ -223,10 +243,9 @@ class ImageVerifier
 	const EdgeImage& image(int i) const { return images_.at(i); }
 
  private:
-	std::pair<Eigen::Isometry3d, ImageScore> patternSearch(const std::vector<EdgeSample>& samples_O,
+	std::pair<Eigen::Isometry3d, ImageScore> patternSearch(const SightedSamples& samples,
 	                                                       const Eigen::Isometry3d& start,
 	                                                       const ImageScore& start_s,
-	                                                       const SelfOcclusion* occ,
 	                                                       const Eigen::Vector3d& axis_O) const;
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right

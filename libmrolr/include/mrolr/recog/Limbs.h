@@ -71,6 +71,19 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> limbLines(const Revolut
  * at p's axial position, that position within the frustum's extent (± tol_mm). */
 bool onSurface(const RevolutionBody& body, const Eigen::Vector3d& p_O, double tol_mm);
 
+/** The terms of crossesSolid that depend only on the camera centre (model frame, mm). */
+struct BodySight
+{
+	Eigen::Vector3d c_O, e1, e2;  ///< camera centre; two unit vectors normal to the axis
+	Eigen::Vector2d w0;           ///< camera relative to the axis point, along e1, e2
+	double cz = 0;                ///< ... and along the axis
+};
+BodySight bodySight(const RevolutionBody& body, const Eigen::Vector3d& c_O);
+
+/** crossesSolid() with the camera's terms computed once (bodySight of the same body). */
+bool crossesSolid(const RevolutionBody& body, const BodySight& sight, const Eigen::Vector3d& p_O,
+                  double margin_mm);
+
 /** True when the segment from @p c_O to @p p_O passes through the solid of @p body (the union of
  * its frusta, each shrunk by @p margin_mm radially): seen from @p c_O, @p p_O is behind it. Exact
  * for a body that is not convex (a bottle's neck above its shoulder), unlike a convex hull. */

@@ -146,6 +146,9 @@ class Recognizer
 	{
 		return edgeSamplesOf(model_, spacing_mm);
 	}
+	/** edgeSamples(@p spacing_mm) with their sight against selfOcclusion(): built on the first
+	 * call for each spacing and kept (thread-safe; shared by copies of this Recognizer). */
+	const SightedSamples& sightedSamples(double spacing_mm) const;
 	/** The self-occlusion verification uses with the scene up direction @p up_S: the model's
 	 * when options().verify_visible_only and an upright prior is set, else nullptr. */
 	const SelfOcclusion* occlusion(const Eigen::Vector3d* up_S) const { return occlusionFor(up_S); }
@@ -201,6 +204,9 @@ class Recognizer
 	 * occlusion): scales the support a level needs when skipping hopeless levels. */
 	double min_visible_share_ = 1.0;
 	std::shared_ptr<const PlaneHypothesisGenerator> plane_gen_;
+	struct SampleCache;
+	static std::shared_ptr<SampleCache> newSampleCache();
+	std::shared_ptr<SampleCache> samples_;  ///< sightedSamples() per spacing
 };
 
 }  // namespace mrolr::recog

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace mrolr::recog
@@ -48,6 +50,48 @@ class SelfOcclusion
 	 * there, and the polytope does not follow its round surface.) */
 	bool hiddenLimb(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const;
 
+	/** The terms of the sight tests that depend only on the camera centre c_O (model frame, mm):
+	 * built once per pose and camera, then asked for every sample (hidden(const View&, ...)). */
+	class View
+	{
+	 public:
+		const Eigen::Vector3d& centre_O() const { return c_O_; }
+
+	 private:
+		friend class SelfOcclusion;
+		/** Per polytope (whole, off the bodies): the faces the camera is outside of. */
+		struct Faces
+		{
+			std::array<std::uint64_t, 2> outside = {0, 0};  ///< bit i: n_i·c_O > offset_i
+			/** The same faces, one array per term: normal, n·c, n·c − offset. */
+			std::vector<double> nx, ny, nz, nc, gap;
+		};
+		Eigen::Vector3d c_O_;
+		std::vector<double> nc_;  ///< n_i·c_O per face direction
+		Faces all_, rest_;
+		std::vector<BodySight> bodies_;
+	};
+	/** The camera-side terms for a camera at @p c_O. */
+	View viewFrom(const Eigen::Vector3d& c_O) const;
+
+	/** What the sight tests need to know of one point whatever the camera: the faces of the
+	 * shrunk polytopes it lies outside of and the bodies of revolution it lies on. */
+	struct PointSight
+	{
+		std::array<std::uint64_t, 2> outside_all = {0, 0}, outside_rest = {0, 0};
+		std::uint64_t on_bodies = 0;  ///< bit k: on the surface of revolutionBodies()[k]
+	};
+	/** The PointSight of @p p_O (model frame, mm): computed once per model sample. */
+	PointSight pointSight(const Eigen::Vector3d& p_O) const;
+
+	/** hidden(), hiddenOnBodies(), hiddenLimb() from a View (and the point's PointSight): the
+	 * same answers, faster. */
+	bool hidden(const View& v, const Eigen::Vector3d& p_O) const;
+	bool hidden(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const;
+	bool hiddenOnBodies(const View& v, const Eigen::Vector3d& p_O) const;
+	bool hiddenOnBodies(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const;
+	bool hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const;
+
 	/** The model's bodies of revolution (revolutionBodiesOf the constructor's features), whose
 	 * limbs the verification in the images adds at each pose (Limbs.h); the 3D verification
 	 * does not use them. */
@@ -56,13 +100,19 @@ class SelfOcclusion
  private:
 	std::vector<double> offsetsOf(const std::vector<std::vector<Eigen::Vector3d>>& pts,
 	                              double margin_mm) const;
-	bool crossesPolytope(const std::vector<double>& offsets, const Eigen::Vector3d& c_O,
-	                     const Eigen::Vector3d& p_O) const;
+	View::Faces facesFrom(const std::vector<double>& offsets, const std::vector<double>& nc) const;
+	std::array<std::uint64_t, 2> outsideFaces(const std::vector<double>& offsets,
+	                                          const Eigen::Vector3d& p_O) const;
+	bool crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
+	                     const std::vector<double>& nc, const Eigen::Vector3d& p_O,
+	                     const std::array<std::uint64_t, 2>& p_outside) const;
 
-	std::vector<Eigen::Vector3d> normals_;
+	std::vector<Eigen::Vector3d> normals_;  ///< at most 128 (View::Faces::outside)
+	std::vector<double> nx_, ny_, nz_;      ///< the same, one array per coordinate
 	std::vector<double> offsets_;  ///< plane offsets, already shrunk by the margin
 	std::vector<std::vector<Eigen::Vector3d>> samples_;  ///< per feature
-	std::vector<RevolutionBody> bodies_;
+	std::vector<std::vector<std::array<std::uint64_t, 2>>> samples_outside_;  ///< their faces
+	std::vector<RevolutionBody> bodies_;  ///< at most 64 (PointSight::on_bodies)
 	std::vector<double> rest_offsets_;  ///< polytope of the features off the bodies (may be empty)
 	double margin_mm_;
 };
