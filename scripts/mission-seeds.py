@@ -57,7 +57,7 @@ def line(seed, r):
     col = e.get("collision")
     return "%4d  %-4s  home %6s m  estimate %6s m  held %-3s  %-22s  NIS %5s  compute %6s s  %s" % (
         seed, "ok" if r["success"] else "FAIL", fmt(r.get("final_position_error_m")),
-        fmt(r.get("final_estimate_error_m")), "yes" if e.get("object_held") else "no",
+        fmt(r.get("final_estimate_error_m")), "yes" if e.get("object_retrieved") else "no",
         ("hit " + col["what"]) if col else "no collision",
         fmt(r["nis"].get("fraction_inside_95"), "%.2f"), fmt(r["compute_seconds"], "%.2f"),
         r["failure"][:70])

@@ -68,6 +68,26 @@ TEST(MissionEval, TheRobotsClaimIsNotEnoughWhenTheTruthDisagrees)
 	eval::evaluateMission(hit, t);
 	EXPECT_FALSE(hit["success"].get<bool>());
 	EXPECT_EQ(hit["eval"]["collision"]["what"], "obstacle.crate");
+	auto cup_aboard = claimedSuccess();
+	auto u = truthAt(0.0, "");
+	u.on_board = {"cup"};  // something rode home on the deck, not the target
+	eval::evaluateMission(cup_aboard, u);
+	EXPECT_FALSE(cup_aboard["success"].get<bool>());
+	EXPECT_FALSE(cup_aboard["eval"]["object_retrieved"].get<bool>());
+}
+
+TEST(MissionEval, TheTargetOnTheDeckIsRetrieved)
+{
+	auto r = claimedSuccess();
+	auto t = truthAt(0.02, "");
+	t.on_board = {"alphabet_cube"};
+	eval::evaluateMission(r, t);
+	EXPECT_TRUE(r["success"].get<bool>());
+	EXPECT_FALSE(r["eval"]["object_held"].get<bool>());
+	EXPECT_TRUE(r["eval"]["object_on_board"].get<bool>());
+	EXPECT_EQ(r["eval"]["on_board_instance"], "alphabet_cube");
+	const auto back = eval::truthFromJson(eval::truthJson(t), "T.json");
+	EXPECT_EQ(back.on_board, t.on_board);
 }
 
 TEST(MissionEval, TJsonReadsBackAndAMalformedOneNamesTheField)

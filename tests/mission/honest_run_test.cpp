@@ -85,6 +85,6 @@ TEST(HonestRun, TheOfficeIsDrivenFromImagesWithItsOwnPlan)
 	EXPECT_TRUE(run.r.success) << run.r.failure;
 	EXPECT_TRUE(run.report["eval"]["confirms"].get<bool>());
 	EXPECT_LT(run.report["final_position_error_m"].get<double>(), 0.15);
-	EXPECT_TRUE(run.report["eval"]["object_held"].get<bool>());
+	EXPECT_TRUE(run.report["eval"]["object_retrieved"].get<bool>());
 	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
 }

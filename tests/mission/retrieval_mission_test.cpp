@@ -28,7 +28,7 @@ TEST(RetrievalMission, TheDrinkPackageInTheBackRowIsRetrievedFromTheTablesFarSid
 	const auto& g = run.report["retrieval"];
 	EXPECT_EQ(g["docking"]["side"], "table.main +z side");
 	EXPECT_EQ(g["frame"], g["docking"]["frame"]);
-	EXPECT_TRUE(run.report["eval"]["object_held"].get<bool>());
+	EXPECT_TRUE(run.report["eval"]["object_retrieved"].get<bool>());
 	EXPECT_LT(g["grasp_error_mm"].get<double>(), 10.0);
 	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
 	EXPECT_TRUE(run.report["eval"]["objects_disturbed"].empty());

@@ -70,7 +70,8 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 	EXPECT_GT(app.options.plan.route.size(), 3u);  // the lap, not a straight line
 	EXPECT_TRUE(r.found);
 	EXPECT_TRUE(r.retrieved);
-	EXPECT_GT(r.held_width_mm, app.options.retrieval.min_held_width_mm);
+	EXPECT_TRUE(r.place.placed) << r.place.reason;  // put down on its deck, the arm parked
+	EXPECT_GT(r.place.width_before_mm, app.options.retrieval.min_held_width_mm);
 	EXPECT_TRUE(r.returned_home);
 	EXPECT_TRUE(r.retrieval.verified);
 	// ... and what eval found
@@ -78,8 +79,8 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 	EXPECT_EQ(j["found_instance"], app.options.target);
 	EXPECT_LT(j["final_position_error_m"].get<double>(), app.options.home_tolerance_m);
 	EXPECT_LT(j["object_translation_error_mm"].get<double>(), 15.0);
-	EXPECT_TRUE(j["eval"]["object_held"].get<bool>());
-	EXPECT_EQ(j["eval"]["held_instance"], app.options.target);
+	EXPECT_TRUE(j["eval"]["object_on_board"].get<bool>());  // it rode home on the deck
+	EXPECT_EQ(j["eval"]["on_board_instance"], app.options.target);
 	EXPECT_GT(j["nis"]["count"].get<int>(), 100);
 	const auto written = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	for (const char* key :

@@ -60,7 +60,7 @@ TEST(VisualVerification, InjectedPoseErrorIsCorrectedFromTheFixatedView)
 	EXPECT_LT(number(e, "grasp_error_mm"), 4.0)
 	    << "the corrected grasp is not back near the true grasp";
 	EXPECT_TRUE(r.retrieved);
-	EXPECT_TRUE(run.report["eval"]["object_held"].get<bool>());
+	EXPECT_TRUE(run.report["eval"]["object_retrieved"].get<bool>());
 }
 
 TEST(VisualVerification, WithoutVerificationTheInjectedErrorReachesTheGrasp)

@@ -188,3 +188,48 @@ TEST(SimArm, ApproachesClosesLiftsAndCarriesWhatItHolds)
 	EXPECT_GT(arm.joints()[0], 5.0) << "the fingers (10 mm below the grasp point) entered the bench";
 	EXPECT_EQ(arm.grasped(), "target");
 }
+
+namespace
+{
+/** A deck 0.3 m high whose top centre stands at (x, z) (m), 0.7 × 0.8 m. */
+sim::DeckSupport deckAt(double x, double z)
+{
+	sim::DeckSupport d;
+	d.T_TopInW.translation() = Eigen::Vector3d(x, 0.3, z);
+	d.half_x_m = 0.35, d.half_z_m = 0.4;
+	return d;
+}
+
+/** Instance @p name lifted to @p y_m (its origin, the bottom centre) over (x, z), upright. */
+void holdAt(Bench& b, const std::string& name, double x, double y_m, double z)
+{
+	b.poses.at(name).translation() = Eigen::Vector3d(x, y_m, z);
+}
+}  // namespace
+
+TEST(GripperPhysics, LetGoOverTheDeckTheObjectRestsOnItAndElsewhereOnWhatIsUnder)
+{
+	Bench b({{"cube", "alphabet_cube", 0.0, 1.0}, {"can", "can", 0.2, 1.0}});
+	const auto deck = deckAt(2.0, 0.0);  // away from the bench
+	holdAt(b, "cube", 2.1, 0.305, -0.2);  // 5 mm above the deck
+	EXPECT_TRUE(b.physics->release("cube", deck));
+	EXPECT_NEAR(b.poses.at("cube").translation().y(), 0.3, 1e-12);
+	EXPECT_NEAR(b.poses.at("cube").linear().col(2).y(), 1.0, 1e-12) << "it stays upright";
+	EXPECT_TRUE(b.has(sim::GripperEvent::Kind::Released, "cube"));
+	EXPECT_FALSE(b.has(sim::GripperEvent::Kind::KnockedOver, "cube"));
+	holdAt(b, "can", 0.2, 0.76, 1.0);  // back over the bench: onto its top, not the deck
+	EXPECT_FALSE(b.physics->release("can", deck));
+	EXPECT_NEAR(b.poses.at("can").translation().y(), 0.75, 1e-12);
+	holdAt(b, "cube", 2.1, 0.01, 0.6);  // beside the deck, below its top: to the floor
+	EXPECT_FALSE(b.physics->release("cube", deck));
+	EXPECT_NEAR(b.poses.at("cube").translation().y(), 0.0, 1e-12);
+}
+
+TEST(GripperPhysics, ATallObjectLetGoFromHighFallsOver)
+{
+	Bench b({{"bottle", "bottle", 0.0, 1.0}});
+	holdAt(b, "bottle", 2.0, 0.30 + sim::GripperPhysics::kGentleDrop_mm / 1000.0 + 0.1, 0.0);
+	EXPECT_TRUE(b.physics->release("bottle", deckAt(2.0, 0.0)));  // still on the deck…
+	EXPECT_TRUE(b.has(sim::GripperEvent::Kind::KnockedOver, "bottle"));  // …on its side
+	EXPECT_LT(std::abs(b.poses.at("bottle").linear().col(2).y()), 1e-9);
+}

@@ -30,6 +30,12 @@ void LabmateOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg
 	requireInRange(cfg, section, "footprint_length_m", footprint_length_m, 0.05, 5);
 	footprint_width_m = readDouble(cfg, section, "footprint_width_m", footprint_width_m);
 	requireInRange(cfg, section, "footprint_width_m", footprint_width_m, 0.05, 5);
+	deck_height_m = readDouble(cfg, section, "deck_height_m", deck_height_m);
+	requireInRange(cfg, section, "deck_height_m", deck_height_m, 0.01, 3);
+	mast_half_width_m = readDouble(cfg, section, "mast_half_width_m", mast_half_width_m);
+	requireInRange(cfg, section, "mast_half_width_m", mast_half_width_m, 0, 1);
+	mast_top_height_m = readDouble(cfg, section, "mast_top_height_m", mast_top_height_m);
+	requireInRange(cfg, section, "mast_top_height_m", mast_top_height_m, deck_height_m, 5);
 }
 
 void LabmateOptions::dumpToTextStream(std::ostream& out) const
@@ -40,7 +46,10 @@ void LabmateOptions::dumpToTextStream(std::ostream& out) const
 	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps
 	    << "\nencoder_ticks_per_m      = " << encoder_ticks_per_m
 	    << "\nfootprint_length_m       = " << footprint_length_m
-	    << "\nfootprint_width_m        = " << footprint_width_m << "\n";
+	    << "\nfootprint_width_m        = " << footprint_width_m
+	    << "\ndeck_height_m            = " << deck_height_m
+	    << "\nmast_half_width_m        = " << mast_half_width_m
+	    << "\nmast_top_height_m        = " << mast_top_height_m << "\n";
 }
 
 LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)

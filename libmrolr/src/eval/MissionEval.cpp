@@ -65,16 +65,27 @@ void homeErrors(json& r, const MissionTruth& t)
 
 void heldObject(json& r, const MissionTruth& t)
 {
-	std::string model;
-	for (const auto& o : t.objects)
-		if (o.name == t.held) model = o.model;
+	const std::string target = need(r, "target").get<std::string>();
+	auto modelOf = [&](const std::string& name)
+	{
+		for (const auto& o : t.objects)
+			if (o.name == name) return o.model;
+		return std::string();
+	};
+	std::string aboard;  // the target's instance riding on the deck
+	for (const auto& n : t.on_board)
+		if (modelOf(n) == target) aboard = n;
 	r["eval"]["held_instance"] = t.held.empty() ? json(nullptr) : json(t.held);
-	r["eval"]["object_held"] = !t.held.empty() && model == need(r, "target").get<std::string>();
+	r["eval"]["object_held"] = !t.held.empty() && modelOf(t.held) == target;
+	r["eval"]["on_board_instance"] = aboard.empty() ? json(nullptr) : json(aboard);
+	r["eval"]["object_on_board"] = !aboard.empty();
+	r["eval"]["object_retrieved"] =
+	    r["eval"]["object_held"].get<bool>() || r["eval"]["object_on_board"].get<bool>();
 	r["eval"]["gripper_events"] = gripperEventsJson(t.gripper_events);
 	json disturbed = json::array();
 	for (const auto& o : t.objects)
 	{
-		if (o.name == t.held) continue;
+		if (o.name == t.held || o.name == aboard) continue;
 		const double moved_mm = 1000.0 * (o.T_OinW.translation() - o.T_OinW_start.translation()).norm();
 		const double tilt_deg =
 		    std::acos(std::clamp(o.T_OinW.linear().col(2).dot(o.T_OinW_start.linear().col(2)), -1.0, 1.0)) *
@@ -260,17 +271,18 @@ void collision(json& r, const MissionTruth& t)
 void verdict(json& r)
 {
 	json& e = r["eval"];
-	const bool ok = e["object_held"].get<bool>() && e["returned_home"].get<bool>() &&
+	const bool ok = e["object_retrieved"].get<bool>() && e["returned_home"].get<bool>() &&
 	                e["collision"].is_null();
 	e["mission_success"] = ok;
-	e["agrees_held"] = e["object_held"].get<bool>() == need(r, "retrieved").get<bool>();
+	e["agrees_held"] = e["object_retrieved"].get<bool>() == need(r, "retrieved").get<bool>();
 	e["agrees_home"] = e["returned_home"].get<bool>() == need(r, "returned_home").get<bool>();
 	const bool claimed = need(need(r, "robot"), "success").get<bool>();
 	e["confirms"] = claimed && ok;
 	r["success"] = claimed && ok;
 	if (claimed && !ok && r["failure"].get<std::string>().empty())
 		r["failure"] = std::string("eval: the robot claimed success but ") +
-		               (!e["object_held"].get<bool>() ? "the gripper does not hold the target"
+		               (!e["object_retrieved"].get<bool>()
+		                    ? "the target is neither in the gripper nor on the deck"
 		                                               : "it is not home");
 }
 }  // namespace

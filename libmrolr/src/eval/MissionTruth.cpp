@@ -38,7 +38,7 @@ Eigen::Isometry3d transform(const json& j, const char* key, const std::string& s
 sim::GripperEvent::Kind kindNamed(const std::string& name, const std::string& source)
 {
 	using K = sim::GripperEvent::Kind;
-	for (K k : {K::Held, K::Slipped, K::Pushed, K::KnockedOver, K::Table})
+	for (K k : {K::Held, K::Slipped, K::Pushed, K::KnockedOver, K::Table, K::Released})
 		if (name == sim::GripperEvent::name(k)) return k;
 	throw std::runtime_error(source + ": unknown gripper event kind '" + name + "'");
 }
@@ -71,6 +71,7 @@ MissionTruth truthOf(const sim::Lab& lab)
 	for (const auto& [name, T] : lab.objectPoses())
 		t.objects.push_back({name, lab.modelOf(name), start.at(name), T});
 	t.held = lab.held();
+	t.on_board.assign(lab.onBoard().begin(), lab.onBoard().end());
 	t.gripper_events = lab.gripperEvents();
 	if (const auto& c = lab.simBase().lastContact()) t.contact = ContactTruth{c->what, c->p_zx_m};
 	t.steps = lab.truth().steps;
@@ -97,6 +98,7 @@ json truthJson(const MissionTruth& t)
 	          {"phi_deg", t.final_zxphi.z() * 180.0 / M_PI}}},
 	        {"objects", objects},
 	        {"held", t.held.empty() ? json(nullptr) : json(t.held)},
+	        {"on_board", t.on_board},
 	        {"contact", contact},
 	        {"gripper_events", gripperEventsJson(t.gripper_events)},
 	        {"T_C0inA_mm", t.T_C0inA_mm ? mission::matrix34(*t.T_C0inA_mm) : json(nullptr)}};
@@ -121,6 +123,15 @@ MissionTruth truthFromJson(const json& j, const std::string& source)
 	}
 	const json& held = field(j, "held", source);
 	t.held = held.is_null() ? "" : held.get<std::string>();
+	if (j.contains("on_board"))
+	{
+		if (!j.at("on_board").is_array()) throw std::runtime_error(source + ": 'on_board' is not a list");
+		for (const auto& n : j.at("on_board"))
+		{
+			if (!n.is_string()) throw std::runtime_error(source + ": 'on_board' holds a non-name");
+			t.on_board.push_back(n.get<std::string>());
+		}
+	}
 	if (j.contains("contact") && !j.at("contact").is_null())
 	{
 		const json& c = j.at("contact");

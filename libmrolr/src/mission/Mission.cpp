@@ -204,12 +204,13 @@ void Mission::Impl::finish()
 void Mission::Impl::runStages()
 {
 	loadTarget();
+	parked = dev.arm->joints();
 	navigate();
 	for (const auto& station : o.plan.stations)
 		if ((r.found = searchStation(station))) break;
 	if (r.found) retrieve();
 	goHome();
-	if (r.retrieved)
+	if (r.retrieved && !r.place.placed)  // in the gripper all the way: its jaws still tell
 	{
 		r.held_width_mm = dev.arm->gripperWidthMm();
 		if (r.held_width_mm < o.retrieval.min_held_width_mm)

@@ -27,6 +27,7 @@ struct Mission::Impl
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
 	std::atomic<bool>* stop_flag = nullptr;
 	bool render_failed = false;
+	hw::ArmJoints parked{};  ///< the arm's joints when the mission began: where it parks
 
 	Impl(const MissionOptions& opts, RobotDevices d, SimulatedSensors s);
 	hw::StereoImages grabStereo(StereoShot::Purpose purpose = StereoShot::Purpose::Table);
@@ -48,6 +49,8 @@ struct Mission::Impl
 	                                                  const Eigen::Isometry3d& T_OinW_m,
 	                                                  double top_height_m);
 	std::optional<Eigen::Isometry3d> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
+	/** The held object put down on the deck (DeckPlacement.h), the arm parked again. */
+	void placeOnBoard(const Eigen::Isometry3d& T_C0inA_mm);
 	/** T_C0inA measured with the hand's marker where the base stands (DockCalibration.h). */
 	void calibrateDock(Retrieval& retrieval, const Eigen::Isometry3d& T_OinC0_mm,
 	                   double top_height_m);

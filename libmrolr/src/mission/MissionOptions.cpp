@@ -150,6 +150,7 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 		    openNamed(cfg, "files", "recognition_file", base_dir), "image_verification");
 	o.retrieval.loadFromConfigFile(cfg, "retrieval");
 	o.docking.loadFromConfigFile(cfg, "docking");
+	o.place.loadFromConfigFile(cfg, "place");
 	o.dock_calibration.loadFromConfigFile(cfg, "dock_calibration");
 	return o;
 }
@@ -177,6 +178,8 @@ void MissionOptions::dump(std::ostream& out) const
 	retrieval.dump(out);
 	out << "\n[docking]\n";
 	docking.dump(out);
+	out << "\n[place]\n";
+	place.dump(out);
 	out << "\n[dock_calibration]\n";
 	dock_calibration.dump(out);
 	out << "\n";

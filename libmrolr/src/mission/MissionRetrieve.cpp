@@ -51,6 +51,7 @@ void Mission::Impl::retrieve()
 	if (!r.retrieval.feasible && r.docking.needed && !r.docking.planned)
 		r.failure += " (docking: " + r.docking.reason + ")";
 	if (r.retrieved) r.timeline.note("object held (jaws " + std::to_string(r.retrieval.width_lifted_mm) + " mm apart)");
+	if (r.retrieved && o.place.enabled) placeOnBoard(retrieval.mount());
 }
 
 /** The first candidate docking pose (DockPlanner.h) from which the grasp is feasible, driven to;

@@ -51,7 +51,8 @@ void summaryTable(std::ostringstream& s, const json& r)
 	row(s, "eval: final position error (m)", at(r, "final_position_error_m"));
 	row(s, "eval: estimate error at home (m)", at(r, "final_estimate_error_m"));
 	row(s, "eval: dead-reckoning error at home (m)", at(r, "dead_reckoning_error_m"));
-	row(s, "eval: object held", at(eval, "object_held"));
+	row(s, "eval: object in the gripper", at(eval, "object_held"));
+	row(s, "eval: object on the deck", at(eval, "object_on_board"));
 	row(s, "eval: object pose error (mm)", at(r, "object_translation_error_mm"));
 	row(s, "eval: object pose error (deg)", at(r, "object_rotation_error_deg"));
 	row(s, "eval: collision", at(eval, "collision"));

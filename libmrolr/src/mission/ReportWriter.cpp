@@ -87,6 +87,29 @@ json dockingJson(const DockingResult& d)
 	return j;
 }
 
+json placeJson(const PlaceResult& p)
+{
+	json j = {{"planned", p.plan.found},
+	          {"attempted", p.attempted},
+	          {"placed", p.placed},
+	          {"reason", p.reason},
+	          {"candidates", p.plan.candidates},
+	          {"with_ik_solution", p.plan.solved},
+	          {"tested_arm_poses", p.plan.tested_poses},
+	          {"compute_seconds", p.plan.compute_s},
+	          {"arm_moves", p.plan.carry.size() + p.plan.leave.size()},
+	          {"width_before_opening_mm", p.width_before_mm},
+	          {"spot_in_C0_mm", nullptr}};
+	if (p.plan.found)
+	{
+		const auto& s = p.plan.p_spotInC0_mm;
+		j["spot_in_C0_mm"] = {s.x(), s.y(), s.z()};
+		j["yaw_deg"] = p.plan.yaw_deg;
+		j["drop_mm"] = p.plan.drop_mm;
+	}
+	return j;
+}
+
 json dockCalibrationJson(const DockCalibrationResult& c)
 {
 	return {{"attempted", c.attempted},
@@ -203,6 +226,7 @@ json robotJson(const MissionResult& r, const MissionOptions& o)
 	          {"final_estimate_P_vv", mat3(last.P_vv)},
 	          {"final_odometry_zxphi", vec(last.odometry)},
 	          {"held_width_mm", r.held_width_mm},
+	          {"on_board", r.place.placed},
 	          {"collided", r.collided},
 	          {"collision_estimate_zxphi", vec(r.collision_estimate)},
 	          {"dock_T_C0inA_mm", matrix34(o.dock.T_C0inA)},
@@ -303,6 +327,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["retrieval"]["docking"] = dockingJson(r.docking);
 	if (r.found) j["retrieval"]["dock_calibration"] = dockCalibrationJson(r.dock_calibration);
+	if (r.found) j["retrieval"]["place"] = placeJson(r.place);
 	if (r.found)
 		j["retrieval"]["frame"] = r.retrieval.frame ? json(*r.retrieval.frame) : json(nullptr);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);

@@ -112,4 +112,28 @@ void RetrievalOptions::dump(std::ostream& out) const
 	    << "\nmin_held_width_mm = " << min_held_width_mm << "\n";
 }
 
+void PlaceOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s)
+{
+	enabled = util::readBool(c, s, "enabled", enabled);
+	auto num = [&](const char* key, double& v, double lo, double hi)
+	{
+		v = util::readDouble(c, s, key, v);
+		util::requireInRange(c, s, key, v, lo, hi);
+	};
+	num("drop_mm", drop_mm, 0, 100);
+	num("margin_mm", margin_mm, 0, 200);
+	num("self_margin_mm", self_margin_mm, 0, 100);
+	num("grid_step_mm", grid_step_mm, 5, 500);
+	num("yaw_step_deg", yaw_step_deg, 1, 360);
+	num("check_step_mm", check_step_mm, 1, 100);
+}
+
+void PlaceOptions::dump(std::ostream& out) const
+{
+	out << "enabled = " << (enabled ? "true" : "false") << "\ndrop_mm = " << drop_mm
+	    << "\nmargin_mm = " << margin_mm << "\nself_margin_mm = " << self_margin_mm
+	    << "\ngrid_step_mm = " << grid_step_mm << "\nyaw_step_deg = " << yaw_step_deg
+	    << "\ncheck_step_mm = " << check_step_mm << "\n";
+}
+
 }  // namespace mrolr::mission

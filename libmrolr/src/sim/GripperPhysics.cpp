@@ -44,6 +44,7 @@ const char* GripperEvent::name(Kind k)
 		case Kind::Pushed: return "pushed";
 		case Kind::KnockedOver: return "knocked_over";
 		case Kind::Table: return "table";
+		case Kind::Released: return "released";
 	}
 	return "?";
 }
@@ -152,6 +153,53 @@ std::optional<std::string> GripperPhysics::tableEntered(
 		}
 	}
 	return std::nullopt;
+}
+
+std::pair<double, std::string> GripperPhysics::supportUnder(const Eigen::Vector3d& p) const
+{
+	constexpr double kTouch_m = 0.002;  // resting on a top counts as above it
+	std::pair<double, std::string> best{world_.room.floorY(), "the floor"};
+	for (const auto& t : world_.tables)
+	{
+		const double top_y = world_.room.floorY() + t.top_height_m, yaw = t.yaw_deg * M_PI / 180.0;
+		if (top_y > p.y() + kTouch_m || top_y <= best.first) continue;
+		const double dz = p.z() - t.z_m, dx = p.x() - t.x_m;
+		const double along_z = dz * std::cos(yaw) + dx * std::sin(yaw);
+		const double along_x = -dz * std::sin(yaw) + dx * std::cos(yaw);
+		if (std::abs(along_z) <= t.depth_m / 2 && std::abs(along_x) <= t.length_m / 2)
+			best = {top_y, "table '" + t.name + "'"};
+	}
+	return best;
+}
+
+bool GripperPhysics::release(const std::string& name, const DeckSupport& deck)
+{
+	auto& T = objects_.at(name);
+	const Eigen::Vector3d p = T.translation();
+	auto [support_y, what] = supportUnder(p);
+	const Eigen::Vector3d on_deck = deck.T_TopInW.inverse() * p;
+	const bool over_deck = std::abs(on_deck.x()) <= deck.half_x_m &&
+	                       std::abs(on_deck.z()) <= deck.half_z_m && on_deck.y() >= -0.002;
+	const double deck_y = deck.T_TopInW.translation().y();
+	if (over_deck && deck_y > support_y) support_y = deck_y, what = "the robot's deck";
+	const double drop_mm = 1000.0 * (p.y() - support_y);
+	T.translation().y() = support_y;
+	const double tilt_deg =
+	    std::acos(std::clamp(T.linear().col(2).dot(kUp_W), -1.0, 1.0)) * 180.0 / M_PI;
+	char buf[200];
+	std::snprintf(buf, sizeof buf, "the jaws opened: %s came down %.0f mm onto %s", name.c_str(),
+	              drop_mm, what.c_str());
+	events_.push_back({GripperEvent::Kind::Released, name, buf});
+	const auto [width_mm, height_mm] = widthAndHeight(shapeOf(name));
+	const bool tall = height_mm > o_.knock_over_aspect * width_mm;
+	if ((drop_mm > kGentleDrop_mm && tall) || tilt_deg > 20)
+	{
+		const Eigen::Vector3d d = T.linear().col(0);  // it tips over its own x side
+		knockOver(name, d);
+		events_.back().detail = name + " fell over after a drop of " +
+		                        std::to_string(static_cast<int>(drop_mm)) + " mm onto " + what;
+	}
+	return what == "the robot's deck";
 }
 
 std::pair<double, double> GripperPhysics::widthAndHeight(const world::ObjectShape& shape) const

@@ -86,6 +86,8 @@ Lab::Lab(const LabOptions& o)
 	gripper_ = std::make_unique<GripperPhysics>(o_.world, shapes_, model_of, jaws, o.gripper_physics,
 	                                            poses_);
 	arm_ = std::make_unique<SimArm>(T_GinW, o.arm, poses_, nullptr, gripper_.get());
+	arm_->onRelease([this](const std::string& name) { release(name); });
+	T_C0inW_last_ = trueC0();
 	log_.steps.push_back({0, base_.truePose()});
 }
 
@@ -123,8 +125,28 @@ std::string Lab::modelOf(const std::string& name) const
 	return "";
 }
 
+DeckSupport Lab::deck() const
+{
+	// the deck covers the base's physical footprint (centred offset_m ahead of the axle)
+	const auto& f = o_.base.footprint;
+	DeckSupport d;
+	d.T_TopInW = trueC0() * Eigen::Translation3d(
+	                            0, o_.labmate.deck_height_m - o_.bisight.head_height_m, f.offset_m);
+	d.half_x_m = f.width_m / 2, d.half_z_m = f.length_m / 2;
+	return d;
+}
+
+void Lab::release(const std::string& name)
+{
+	if (gripper_->release(name, deck())) on_board_.insert(name);
+}
+
 void Lab::afterStep()
 {
+	const Eigen::Isometry3d T_C0inW = trueC0();  // what rides on the deck moves with the base
+	for (const auto& name : on_board_)
+		poses_.at(name) = T_C0inW * T_C0inW_last_.inverse() * poses_.at(name);
+	T_C0inW_last_ = T_C0inW;
 	arm_->baseMoved();
 	log_.steps.push_back({base_.odometry().time_s, base_.truePose()});
 }

@@ -114,6 +114,7 @@ double SimArm::separationMm() const
 
 void SimArm::setGripper(bool closed)
 {
+	if (!closed && !grasped_.empty() && on_release_) on_release_(grasped_);
 	closed_ = closed;
 	grasped_.clear();
 	width_mm_ = 0;

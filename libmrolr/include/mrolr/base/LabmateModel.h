@@ -44,6 +44,13 @@ struct LabmateOptions
 	 * and width (m), as measured once; turning in place sweeps a disc of half its diagonal. */
 	double footprint_length_m = 0.8, footprint_width_m = 0.7;
 	double turnRadius() const { return 0.5 * std::hypot(footprint_length_m, footprint_width_m); }
+	/** Optional: the deck, the base's flat top over the whole footprint, this high above the
+	 * floor (m): the arm's column stands on it and a retrieved object is put down on it. */
+	double deck_height_m = 0.289;
+	/** Optional: the head's mast, a square column on the axle centre from the deck up to
+	 * mast_top_height_m (the head on it included), this half wide (m): the arm keeps clear. */
+	double mast_half_width_m = 0.08;
+	double mast_top_height_m = 1.15;
 
 	/** Reads every key above; errors name file, section and key (mrolr::util::ConfigError). */
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

@@ -3,7 +3,8 @@
  * "eval"). Fills report.json's truth fields and its `eval` object:
  *  - the true home error (final_position_error_m, final_heading_error_deg), the estimate's and the
  *    odometry's errors there (final_estimate_error_m, dead_reckoning_error_m);
- *  - whether the gripper really holds the target (`eval.object_held`, the instance);
+ *  - whether the robot really has the target: in its gripper (`eval.object_held`) or on its deck
+ *    (`eval.object_on_board`), either being `eval.object_retrieved`;
  *  - which object was recognised and the pose errors (object_translation_error_mm,
  *    object_rotation_error_deg; in C0 at the recognising frame when the frames' truth is known,
  *    else in W from the robot's own pose estimate), the retrieval's errors and grasp error;

@@ -32,6 +32,7 @@ struct MissionTruth
 	Eigen::Vector3d final_zxphi = Eigen::Vector3d::Zero();
 	std::vector<ObjectTruth> objects;
 	std::string held;  ///< instance in the gripper, "" for none
+	std::vector<std::string> on_board;  ///< instances let go of over the robot's deck
 	std::optional<ContactTruth> contact;
 	/** What the gripper did to the world (pushes, falls, grips, a table), in order. */
 	std::vector<sim::GripperEvent> gripper_events;
@@ -48,8 +49,9 @@ struct MissionTruth
 /** The truth of @p lab now (after the run). */
 MissionTruth truthOf(const sim::Lab& lab);
 /** T.json: `{"vehicle": {"z_m", "x_m", "phi_deg"}, "objects": [{"name", "model", "T_OinW",
- * "T_OinW_start"}], "held": NAME or null, "contact": {"what", "z_m", "x_m"} or null,
- * "gripper_events": [{"kind", "object", "detail"}]}` (the last optional on reading). */
+ * "T_OinW_start"}], "held": NAME or null, "on_board": [NAME…], "contact": {"what", "z_m", "x_m"} or null,
+ * "gripper_events": [{"kind", "object", "detail"}]}` ("on_board" and "gripper_events" optional
+ * on reading). */
 nlohmann::json truthJson(const MissionTruth& t);
 /** The gripper's events as a JSON list of {"kind", "object", "detail"}. */
 nlohmann::json gripperEventsJson(const std::vector<sim::GripperEvent>& events);

@@ -5,8 +5,9 @@
  * the target is found nowhere. It sees the world only through its devices (hw:: interfaces: the
  * simulator's, serial drivers or ROS topics) and reads only the robot's own files (calibration,
  * models, plan). It decides success from what it believes: home by its own estimate, the object
- * held by its gripper's jaw width. eval checks that belief against the truth after the run. */
+ * held by its gripper's jaw width (until it puts it down on its deck). eval checks that belief against the truth after the run. */
 #include <mrolr/hw/SimulatedSensors.h>
+#include <mrolr/mission/DeckPlacement.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/Navigator.h>
 #include <mrolr/mission/ObjectSearch.h>
@@ -89,6 +90,7 @@ struct MissionResult
 	RetrievalResult retrieval;
 	DockingResult docking;  ///< the drive to where the arm reaches, if one was needed
 	DockCalibrationResult dock_calibration;  ///< T_C0inA measured before the grasp
+	PlaceResult place;  ///< the object put down on the deck after the lift
 	std::vector<PathSample> path;
 	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps and obstacle looks
 	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted

@@ -15,6 +15,7 @@
 #include <mrolr/mission/DockCalibration.h>
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObstacleOptions.h>
+#include <mrolr/mission/PlaceOptions.h>
 #include <mrolr/mission/Plan.h>
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/RecognitionOptions.h>
@@ -165,6 +166,7 @@ struct MissionOptions
 	RetrievalOptions retrieval;
 	DockingOptions docking;  ///< [docking]: where to drive when the arm cannot reach
 	DockCalibrationOptions dock_calibration;  ///< [dock_calibration]: T_C0inA measured, eq 6.7.2
+	PlaceOptions place;  ///< [place]: the retrieved object put down on the deck
 	ObstacleOptions obstacle;  ///< [obstacle], read only when obstacle_mode is set
 	/** [image_verification] of [files] recognition_file, read for reconstructed scenes with
 	 * search.image_verification. */

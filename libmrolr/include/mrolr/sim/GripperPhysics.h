@@ -13,6 +13,10 @@
  *    slab (its extent along y_G over |x_G| ≤ finger_width/2, any z_G) within compliance_mm. A
  *    chord of a cylinder taken short of (or past) its axis does not match: the object is
  *    squeezed out along the approach and the jaws close on nothing.
+ *  - Opening: the object held drops straight down onto the highest support under its origin
+ *    (the robot's deck, a table or the floor). A drop of at most kGentleDrop_mm leaves it
+ *    standing; from higher, or released tilted, an object taller than knock_over_aspect × its
+ *    width falls over.
  * Lengths mm in G and O, poses in W (thesis axes, metres). */
 #include <mrolr/sim/JawWidth.h>
 #include <mrolr/world/ObjectShape.h>
@@ -53,7 +57,8 @@ struct GripperEvent
 		Slipped,    ///< closed on it, but not across its width: squeezed out
 		Pushed,     ///< a finger entered it during a move: it moved with the finger
 		KnockedOver,///< pushed high: it fell onto its side
-		Table       ///< a finger met a table: the arm stopped
+		Table,      ///< a finger met a table: the arm stopped
+		Released    ///< the jaws opened on it: it came to rest on what was under it
 	};
 	Kind kind = Kind::Held;
 	std::string object;  ///< instance name ("" for the table)
@@ -70,6 +75,13 @@ std::vector<Eigen::Vector3d> fingerPoints(const JawGeometry& jaws, double thickn
  * finger_width/2 and any z_G (mm); 0 when the slab misses it. */
 double widthAcrossMm(const world::ObjectShape& shape, const Eigen::Isometry3d& T_OinG_mm,
                      const JawGeometry& jaws);
+
+/** The robot's deck as a support: its top face's centre and axes in W (y up), half sizes (m). */
+struct DeckSupport
+{
+	Eigen::Isometry3d T_TopInW = Eigen::Isometry3d::Identity();
+	double half_x_m = 0, half_z_m = 0;
+};
 
 /** The objects and tables the gripper meets (the lab's poses are updated in place). */
 class GripperPhysics
@@ -97,6 +109,12 @@ class GripperPhysics
 	};
 	Grip close(const Eigen::Isometry3d& T_GinW);
 
+	/** A release dropping this far or less leaves an upright object standing (mm). */
+	static constexpr double kGentleDrop_mm = 25;
+	/** The jaws opened on @p name: it drops onto the highest support under its origin, @p deck
+	 * among them. Returns true when it came to rest on the deck. */
+	bool release(const std::string& name, const DeckSupport& deck);
+
 	const std::vector<GripperEvent>& events() const { return events_; }
 	const JawGeometry& jaws() const { return jaws_; }
 	const GripperPhysicsOptions& options() const { return o_; }
@@ -107,6 +125,8 @@ class GripperPhysics
 	/** Plate points of @p T_GinW inside instance @p name's solid (W, m). */
 	std::vector<Eigen::Vector3d> inside(const std::string& name, const Eigen::Isometry3d& T_GinW,
 	                                    const std::vector<Eigen::Vector3d>& points_G) const;
+	/** The highest support under @p p_W (tables and the floor) at or below it: height and name. */
+	std::pair<double, std::string> supportUnder(const Eigen::Vector3d& p_W) const;
 	std::optional<std::string> tableEntered(const Eigen::Isometry3d& T_GinW,
 	                                        const std::vector<Eigen::Vector3d>& points_G) const;
 	void push(const std::string& name, const Eigen::Vector3d& contact_W, const Eigen::Vector3d& d_W);

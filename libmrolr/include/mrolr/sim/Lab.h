@@ -24,6 +24,7 @@
 #include <Eigen/Geometry>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -105,6 +106,10 @@ class Lab
 	const std::map<std::string, Eigen::Isometry3d>& objectPoses() const { return poses_; }
 	/** Instance in the gripper, "" if none. */
 	const std::string& held() const { return arm_->grasped(); }
+	/** Instances the gripper let go of over the robot's deck: they ride on it. */
+	const std::set<std::string>& onBoard() const { return on_board_; }
+	/** The deck's top face in W now (the base's physical deck, [labmate] deck_height_m). */
+	DeckSupport deck() const;
 	/** What the gripper did to the world, in order (pushes, falls, grips, the table). */
 	const std::vector<GripperEvent>& gripperEvents() const { return gripper_->events(); }
 	/** The model of instance @p name ("" if unknown). */
@@ -122,6 +127,7 @@ class Lab
 	/** The rendering head (LabHead.cpp). */
 	std::unique_ptr<hw::HeadDevice> makeHead();
 	void afterStep();
+	void release(const std::string& name);
 
 	LabOptions o_;
 	Eigen::Isometry3d T_C0inA_true_mm_;
@@ -133,6 +139,8 @@ class Lab
 	std::unique_ptr<hw::HeadDevice> head_;
 	std::unique_ptr<GripperPhysics> gripper_;
 	std::unique_ptr<SimArm> arm_;
+	std::set<std::string> on_board_;
+	Eigen::Isometry3d T_C0inW_last_;  ///< C0 when the on-board objects were last moved
 };
 
 }  // namespace mrolr::sim

@@ -57,6 +57,8 @@ class SimArm : public hw::ArmDevice
 	double gripperWidthMm() const override;
 	/** Name of the object in the gripper, or "". */
 	const std::string& grasped() const { return grasped_; }
+	/** Called with the held object's name when the jaws open on it (before it is let go). */
+	void onRelease(std::function<void(const std::string&)> f) { on_release_ = std::move(f); }
 	/** The arm's base moved (it is mounted on the robot): the grasped object follows the gripper. */
 	void baseMoved() { carry(); }
 
@@ -73,6 +75,7 @@ class SimArm : public hw::ArmDevice
 	/** Tested poses of the move to @p joints (1 without physics). */
 	int motionSteps(const hw::ArmJoints& joints) const;
 	GripperPhysics* physics_;
+	std::function<void(const std::string&)> on_release_;
 	hw::ArmJoints joints_{};
 	bool closed_ = false;
 	std::string grasped_;

@@ -78,7 +78,10 @@ int EvalApp::run(std::ostream& out)
 		out << "eval " << (report["success"].get<bool>() ? "CONFIRMS" : "DOES NOT CONFIRM")
 		    << " the robot's success\n  home error " << num(report["final_position_error_m"])
 		    << " m (the robot's estimate " << num(report["robot"]["home_estimate_error_m"])
-		    << " m), object held " << (report["eval"]["object_held"].get<bool>() ? "yes" : "no")
+		    << " m), object "
+		    << (report["eval"]["object_on_board"].get<bool>() ? "on the deck"
+		        : report["eval"]["object_held"].get<bool>() ? "in the gripper"
+		                                                    : "not retrieved")
 		    << ", object pose error " << num(report["object_translation_error_mm"]) << " mm\n"
 		    << "  written to " << target << "\n";
 	return report["success"].get<bool>() ? 0 : 3;

@@ -49,12 +49,18 @@ void printSummary(std::ostream& out, const json& r, const std::string& dir)
 	    << "\n  robot: target " << r["target"].get<std::string>()
 	    << (r["found"].get<bool>() ? " found at " + r["found_at_station"].get<std::string>()
 	                               : " not found")
-	    << ", holds it " << (r["retrieved"].get<bool>() ? "yes" : "no") << ", home "
+	    << ", has it " << (!r["retrieved"].get<bool>() ? "no"
+	                       : r["robot"].value("on_board", false) ? "yes (on its deck)"
+	                                                               : "yes (in its gripper)")
+	    << ", home "
 	    << (r["returned_home"].get<bool>() ? "yes" : "no") << " (its estimate "
 	    << num(r["robot"]["home_estimate_error_m"]) << " m from home)\n";
 	if (!e.is_null())
-		out << "  eval: home error " << num(r["final_position_error_m"]) << " m, object held "
-		    << (e["object_held"].get<bool>() ? "yes" : "no") << ", object pose error "
+		out << "  eval: home error " << num(r["final_position_error_m"]) << " m, object "
+		    << (e["object_on_board"].get<bool>() ? "on the deck"
+		        : e["object_held"].get<bool>() ? "in the gripper"
+		                                       : "not retrieved")
+		    << ", object pose error "
 		    << num(r["object_translation_error_mm"]) << " mm, "
 		    << num(r["object_rotation_error_deg"]) << " deg\n";
 	out << "  navigation from " << r["navigation_source"].get<std::string>() << ": "
