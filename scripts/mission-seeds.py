@@ -7,7 +7,8 @@
 
 Every run gets --set mission.seed=N (the simulator's draws follow it too). The figures are the
 report's: success (the robot's claim confirmed by eval), eval's true home error, the robot's own
-estimate error there, whether eval found the target in the gripper, a collision, the fraction of
+estimate error there, where eval found the target (on the deck, in the gripper or neither), the
+true grasp error, a collision, the fraction of
 NIS inside its 95 % bounds, and the robot's compute. Exit 0 when every run succeeded, 3 otherwise.
 """
 import argparse
@@ -55,9 +56,11 @@ def line(seed, r):
         return "%4d  ERROR %s" % (seed, r["error"][0])
     e = r.get("eval") or {}
     col = e.get("collision")
-    return "%4d  %-4s  home %6s m  estimate %6s m  held %-3s  %-22s  NIS %5s  compute %6s s  %s" % (
+    has = "deck" if e.get("object_on_board") else "grip" if e.get("object_held") else "no"
+    grasp = (r.get("retrieval") or {}).get("grasp_error_mm")
+    return "%4d  %-4s  home %6s m  estimate %6s m  has %-4s  grasp %5s mm  %-22s  NIS %5s  compute %6s s  %s" % (
         seed, "ok" if r["success"] else "FAIL", fmt(r.get("final_position_error_m")),
-        fmt(r.get("final_estimate_error_m")), "yes" if e.get("object_retrieved") else "no",
+        fmt(r.get("final_estimate_error_m")), has, fmt(grasp, "%.1f"),
         ("hit " + col["what"]) if col else "no collision",
         fmt(r["nis"].get("fraction_inside_95"), "%.2f"), fmt(r["compute_seconds"], "%.2f"),
         r["failure"][:70])

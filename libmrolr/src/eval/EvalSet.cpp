@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 
 namespace mrolr::eval
 {
@@ -44,7 +45,7 @@ std::vector<std::string> datasetModelPaths()
 	return out;
 }
 
-/** Mutual occlusion (recog/MutualOcclusion.h): each model of @p cases (one per searcher, scene
+/** Mutual occlusion (recog::searchBehindFound): each model of @p cases (one per searcher, scene
  * @p s) not found is searched again with the found ones as occluders; a find replaces its case and
  * its entry of @p found. */
 void searchBehindFound(const Searchers& sr, const EvalScene& s, const recog::ImageVerifier& images,
@@ -53,26 +54,21 @@ void searchBehindFound(const Searchers& sr, const EvalScene& s, const recog::Ima
 {
 	std::vector<const recog::Recognizer*> ptrs;
 	for (const auto& r : sr.recs) ptrs.push_back(&r);
-	const std::vector<recog::RecognitionResult> first = found;
-	const double spacing_mm = images.options().sample_spacing_mm;
-	for (size_t i = 0; i < sr.recs.size(); ++i)
+	std::map<size_t, EvalCase> second;  // the cases of the second search, by model
+	auto search = [&](size_t i, const recog::ImageVerifier& behind)
 	{
-		if (first[i].found) continue;
-		const auto occluders = recog::occludersOf(ptrs, first, i, spacing_mm);
-		if (occluders.empty()) continue;
-		const recog::ImageVerifier behind = images.withOccluders(occluders);
-		EvalCase c = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, &behind, &s.plane_L);
+		second[i] = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, &behind, &s.plane_L);
+		return second[i].result;
+	};
+	const auto after = recog::searchBehindFound(ptrs, found, images,
+	                                            images.options().sample_spacing_mm, search);
+	for (const auto& [i, c] : second)
+	{
 		EvalCase& before = cases[static_cast<std::ptrdiff_t>(i)];
-		c.ms += before.ms;
-		c.result.ms = c.ms;
-		if (!c.found || recog::interpenetrates(sr.recs[i], c.result.T_OinS, occluders))
-		{
-			before.ms = before.result.ms = c.ms;  // the second search's time counts
-			continue;
-		}
-		c.result.occluders = static_cast<int>(occluders.size());
-		before = c;
-		found[i] = c.result;
+		if (after[i].found) before = c;
+		before.result = after[i];
+		before.ms = after[i].ms;
+		found[i] = after[i];
 	}
 }
 

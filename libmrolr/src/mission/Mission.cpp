@@ -52,10 +52,21 @@ void Mission::Impl::loadTarget()
 	ViewSource views = [this](const geometry::HeadAngles& a) { return reconstructedView(a); };
 	if (o.search.scene_source == SceneSource::Simulated)
 		views = [this](const geometry::HeadAngles& a) { return simulatedView(a); };
-	search = std::make_unique<ObjectSearch>(o, target, views);
+	std::vector<std::string> files;  // the rest of the database ([search] behind_found)
+	if (o.search.behind_found && o.search.image_verification)
+		for (const auto& e : std::filesystem::directory_iterator(o.models_dir))
+			if (e.path().extension() == ".wf" && e.path().stem() != o.target)
+				files.push_back(e.path().string());
+	std::sort(files.begin(), files.end());  // the same order on every machine
+	std::vector<model::WireFrame> others;
+	for (const auto& f : files) others.push_back(model::loadWireFrame(f));
+	search = std::make_unique<ObjectSearch>(o, target, views, others);
 	r.timeline.note("target model " + o.target + " (" + file + "): " +
 	                std::to_string(target.lines.size()) + " lines, " +
-	                std::to_string(target.conics.size()) + " conics");
+	                std::to_string(target.conics.size()) + " conics" +
+	                (others.empty() ? std::string()
+	                                : ", " + std::to_string(others.size()) +
+	                                      " other models to look behind"));
 }
 
 hw::StereoImages Mission::Impl::grabStereo(StereoShot::Purpose purpose)

@@ -3,6 +3,7 @@
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObjectSearch.h>
 #include <mrolr/mission/TableCoverage.h>
+#include <mrolr/recog/MutualOcclusion.h>
 
 #include <chrono>
 #include <cmath>
@@ -49,13 +50,36 @@ std::vector<double> ObjectSearch::expectedTableHeights_mm(const Eigen::Isometry3
 }
 
 ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& target,
-                           ViewSource views)
+                           ViewSource views, const std::vector<model::WireFrame>& others)
     : o_(o),
       head_(o.bisight),
       recognizer_(target, o.recognition),
       p_centreinO_mm_(centreOf(target)),
       views_(std::move(views))
 {
+	for (const auto& wf : others) others_.emplace_back(wf, o.recognition);
+}
+
+recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
+                                                    const Eigen::Vector3d& up_L,
+                                                    const recog::SupportPlane* plane,
+                                                    const recog::RecognitionResult& alone) const
+{
+	std::vector<const recog::Recognizer*> recs{&recognizer_};
+	std::vector<recog::RecognitionResult> first{alone};
+	for (const auto& other : others_)
+	{
+		recs.push_back(&other);
+		first.push_back(other.recognize(view.scene, &up_L, view.images.get(), plane));
+	}
+	auto search = [&](size_t i, const recog::ImageVerifier& behind)
+	{
+		if (i != 0) return recog::RecognitionResult{};  // only the target is sought behind them
+		return recognizer_.recognize(view.scene, &up_L, &behind, plane);
+	};
+	return recog::searchBehindFound(recs, first, *view.images,
+	                                o_.image_verification.sample_spacing_mm, search)
+	    .front();
 }
 
 geometry::HeadAngles ObjectSearch::fixationAngles(const Eigen::Isometry3d& T_OinC0_mm) const
@@ -87,6 +111,8 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	r.table_plane_C0 = planeInC0(r.table_plane.plane, T_LinC0_mm);
 	const recog::SupportPlane* plane = r.table_plane.found ? &r.table_plane.plane : nullptr;
 	r.recognition = recognizer_.recognize(view.scene, &up_L, view.images.get(), plane);
+	if (!r.recognition.found && view.images && !others_.empty())
+		r.recognition = behindOthers(view, up_L, plane, r.recognition);
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found;

@@ -42,7 +42,7 @@ std::vector<Eigen::Vector3d> ObstacleAvoidance::look(double pan_deg)
 	if (self_)  // B → C0: the head centre is h above B
 		p.erase(std::remove_if(p.begin(), p.end(),
 		                       [this, h](const Eigen::Vector3d& q)
-		                       { return self_->isOnArm(q - Eigen::Vector3d(0, h, 0)); }),
+		                       { return self_->isSelf(q - Eigen::Vector3d(0, h, 0)); }),
 		        p.end());
 	if (!tables_.empty())
 		p.erase(std::remove_if(p.begin(), p.end(),

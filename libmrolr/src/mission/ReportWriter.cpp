@@ -323,6 +323,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"T_OinC0_true_mm", nullptr},
 		                    {"table_plane", tablePlaneSummary(r.search)},
 		                    {"ambiguous", r.search.recognition.ambiguous},
+		                    {"found_behind", r.search.recognition.occluders},
 		                    {"poses", posesJson(r.search)}};
 	if (r.found) j["retrieval"] = graspJson(r.retrieval);
 	if (r.found) j["retrieval"]["docking"] = dockingJson(r.docking);

@@ -70,6 +70,7 @@ void SearchOptions::loadFromConfigFile(const CConfigFileBase& c, const std::stri
 	image_verification = util::readBool(c, s, "image_verification", image_verification);
 	cover_table = util::readBool(c, s, "cover_table", cover_table);
 	stop_at_first = util::readBool(c, s, "stop_at_first", stop_at_first);
+	behind_found = util::readBool(c, s, "behind_found", behind_found);
 	util::requireInRange(c, s, "pan_step_deg", pan_step_deg, 0.1, 90);
 	util::requireInRange(c, s, "pan_to_deg", pan_to_deg, pan_from_deg, 90);
 }
@@ -82,7 +83,8 @@ void SearchOptions::dump(std::ostream& out) const
 	    << "\nrender_stereo = " << (render_stereo ? "true" : "false")
 	    << "\nimage_verification = " << (image_verification ? "true" : "false")
 	    << "\ncover_table = " << (cover_table ? "true" : "false")
-	    << "\nstop_at_first = " << (stop_at_first ? "true" : "false") << "\n";
+	    << "\nstop_at_first = " << (stop_at_first ? "true" : "false")
+	    << "\nbehind_found = " << (behind_found ? "true" : "false") << "\n";
 }
 
 void RetrievalOptions::loadFromConfigFile(const CConfigFileBase& c, const std::string& s)

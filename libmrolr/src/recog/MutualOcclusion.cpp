@@ -42,4 +42,28 @@ bool interpenetrates(const Recognizer& rec, const Eigen::Isometry3d& T_OinL,
 	return false;
 }
 
+std::vector<RecognitionResult> searchBehindFound(const std::vector<const Recognizer*>& recs,
+                                                 const std::vector<RecognitionResult>& first,
+                                                 const ImageVerifier& images, double spacing_mm,
+                                                 const SearchBehind& search)
+{
+	std::vector<RecognitionResult> out = first;
+	for (size_t i = 0; i < recs.size(); ++i)
+	{
+		if (first[i].found) continue;
+		const auto occluders = occludersOf(recs, first, i, spacing_mm);
+		if (occluders.empty()) continue;
+		RecognitionResult r = search(i, images.withOccluders(occluders));
+		r.ms += first[i].ms;
+		if (!r.found || interpenetrates(*recs[i], r.T_OinS, occluders))
+		{
+			out[i].ms = r.ms;  // the second search's time counts
+			continue;
+		}
+		r.occluders = static_cast<int>(occluders.size());
+		out[i] = r;
+	}
+	return out;
+}
+
 }  // namespace mrolr::recog

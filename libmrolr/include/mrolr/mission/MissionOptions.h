@@ -110,6 +110,11 @@ struct SearchOptions
 	/** Optional: the first view that recognises ends the sweep (default, thesis 7.2.2); false:
 	 * every view of the first pass is recognised and the most confident answer wins. */
 	bool stop_at_first = true;
+	/** Optional, with image verification: in a view where the target is not recognised, the
+	 * other models of the database are recognised and the target is sought again behind those
+	 * found (recog::searchBehindFound, as mrolr-recognize does); false (default): the target
+	 * alone. */
+	bool behind_found = false;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

@@ -54,8 +54,11 @@ class ObjectSearch
 {
  public:
 	/** @p target: the model wire-frame (O, mm) the recogniser looks for; @p views: where a view's
-	 * scene comes from (the head is moved to the angles by it). */
-	ObjectSearch(const MissionOptions& o, const model::WireFrame& target, ViewSource views);
+	 * scene comes from (the head is moved to the angles by it); @p others: the database's other
+	 * models, recognised in a view where the target is not, so that it is sought behind those
+	 * found ([search] behind_found; may be empty). */
+	ObjectSearch(const MissionOptions& o, const model::WireFrame& target, ViewSource views,
+	             const std::vector<model::WireFrame>& others = {});
 	/** Head angles of sweep position @p pan_deg (tilted by gaze_tilt_deg, verged on the table). */
 	geometry::HeadAngles sweepAngles(double pan_deg) const;
 	/** Head angles that fixate the centre of the target's wire-frame (its line endpoints and conic
@@ -88,9 +91,16 @@ class ObjectSearch
 	 * plane estimate (C0 stands head_height_m above the floor, +y up). */
 	std::vector<double> expectedTableHeights_mm(const Eigen::Isometry3d& T_LinC0_mm) const;
 
+	/** The target sought again behind the other models found in @p view ([search]
+	 * behind_found); @p alone: its recognition without them. */
+	recog::RecognitionResult behindOthers(const SearchView& view, const Eigen::Vector3d& up_L,
+	                                      const recog::SupportPlane* plane,
+	                                      const recog::RecognitionResult& alone) const;
+
 	const MissionOptions& o_;
 	geometry::BiSightHead head_;
 	recog::Recognizer recognizer_;
+	std::vector<recog::Recognizer> others_;
 	Eigen::Vector3d p_centreinO_mm_;  ///< centre of the target's wire-frame
 	ViewSource views_;
 };

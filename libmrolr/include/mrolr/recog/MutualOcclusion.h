@@ -8,6 +8,7 @@
 #include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
 
+#include <functional>
 #include <vector>
 
 namespace mrolr::recog
@@ -27,5 +28,21 @@ Eigen::Vector3d centroidOf(const std::vector<EdgeSample>& samples_O);
  * matches the can's edges while its back is "hidden" by the can. */
 bool interpenetrates(const Recognizer& rec, const Eigen::Isometry3d& T_OinL,
                      const std::vector<Occluder>& occluders);
+
+/** One model searched again behind the found ones: recognise model @p i with @p behind (the
+ * pair's evidence with the occluders' regions left out of the image score). */
+using SearchBehind = std::function<RecognitionResult(size_t i, const ImageVerifier& behind)>;
+
+/** The second search of mutual occlusion, the one used by mrolr-recognize, the rendered
+ * evaluation and the mission: every model of @p recs not found in @p first (same order) is
+ * searched again by @p search with the others found in @p first as occluders
+ * (ImageVerifier::withOccluders of @p images). A find that interpenetrates none of them
+ * replaces its result, its `occluders` the number it was found behind; either way the second
+ * search's time is added to the model's `ms`. Edge samples every @p spacing_mm. Returns the
+ * results after the second search, same order as @p recs. */
+std::vector<RecognitionResult> searchBehindFound(const std::vector<const Recognizer*>& recs,
+                                                 const std::vector<RecognitionResult>& first,
+                                                 const ImageVerifier& images, double spacing_mm,
+                                                 const SearchBehind& search);
 
 }  // namespace mrolr::recog

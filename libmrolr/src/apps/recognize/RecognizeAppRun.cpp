@@ -125,22 +125,9 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 {
 	std::vector<const recog::Recognizer*> ptrs;
 	for (const auto& r : recs) ptrs.push_back(&r);
-	const std::vector<recog::RecognitionResult> first = results;
-	for (size_t i = 0; i < recs.size(); ++i)
-	{
-		if (first[i].found) continue;
-		const auto occluders = recog::occludersOf(ptrs, first, i, image_options.sample_spacing_mm);
-		if (occluders.empty()) continue;
-		recog::RecognitionResult r = recognizeInImages(recs[i], images.withOccluders(occluders));
-		r.ms += first[i].ms;
-		if (!r.found || recog::interpenetrates(recs[i], r.T_OinS, occluders))
-		{
-			results[i].ms = r.ms;  // the second search's time counts
-			continue;
-		}
-		r.occluders = static_cast<int>(occluders.size());
-		results[i] = r;
-	}
+	results = recog::searchBehindFound(
+	    ptrs, results, images, image_options.sample_spacing_mm,
+	    [&](size_t i, const recog::ImageVerifier& behind) { return recognizeInImages(recs[i], behind); });
 }
 
 void RecognizeApp::writeJudgements(const std::vector<recog::Recognizer>& recs,
