@@ -44,11 +44,11 @@ struct Mission::Impl
 	void finish();
 	Eigen::Isometry3d predictedInC0(const Eigen::Isometry3d& T_OinW_m,
 	                                const Eigen::Vector3d& xv) const;
-	std::optional<Eigen::Isometry3d> dockAndReobserve(const Retrieval& retrieval,
+	std::optional<Sighting> dockAndReobserve(const Retrieval& retrieval,
 	                                                  const PlanTable& table,
 	                                                  const Eigen::Isometry3d& T_OinW_m,
 	                                                  double top_height_m);
-	std::optional<Eigen::Isometry3d> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
+	std::optional<Sighting> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
 	/** The held object put down on the deck (DeckPlacement.h), the arm parked again. */
 	void placeOnBoard(const Eigen::Isometry3d& T_C0inA_mm);
 	/** T_C0inA measured with the hand's marker where the base stands (DockCalibration.h). */

@@ -27,9 +27,11 @@ void Mission::Impl::retrieve()
 	const PlanTable* table = tableUnder(o.plan.tables, T_OinW.translation());
 	const double top_height_m = table ? table->top_height_m : 0.0;
 	Retrieval retrieval(o, target);
+	r.dock_calibration.T_C0inA = retrieval.mount();  // the mount used unless calibrated below
 	self->setJoints(dev.arm->joints());
 	retrieval.viewPast(*self);
-	Eigen::Isometry3d T_OinC0_mm = r.search.T_OinC0;
+	Sighting seen = sightingOf(r.search);
+	const Eigen::Isometry3d& T_OinC0_mm = seen.T_OinC0_mm;
 	std::optional<uint64_t> frame = r.search.frame;
 	if (o.docking.drive_to_reach &&
 	    !retrieval.feasibleAt(T_OinC0_mm, top_height_m, &r.docking.reasons_before))
@@ -37,19 +39,23 @@ void Mission::Impl::retrieve()
 		r.docking.needed = true;
 		if (!table)
 			r.docking.reason = "the plan has no table to dock at";
-		else if (const auto T = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
-			T_OinC0_mm = *T, frame = r.docking.frame;
+		else if (const auto again = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
+			seen = *again, frame = r.docking.frame;
 	}
 	// the arm moves only for a grasp it will attempt (its mount within the refusal bounds)
 	const bool may_grasp =
 	    r.docking.needed ? r.docking.planned : retrieval.feasibleAt(T_OinC0_mm, top_height_m);
 	if (o.dock_calibration.enabled && may_grasp) calibrateDock(retrieval, T_OinC0_mm, top_height_m);
-	r.retrieval = retrieval.run(T_OinC0_mm, top_height_m, *dev.arm, reobserve, r.timeline);
+	r.retrieval = retrieval.run(seen, top_height_m, *dev.arm, reobserve, r.timeline);
 	r.retrieval.frame = frame;
 	r.retrieved = r.retrieval.retrieved;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieval.feasible && r.docking.needed && !r.docking.planned)
 		r.failure += " (docking: " + r.docking.reason + ")";
+	if (r.retrieval.feasible && !r.retrieved)
+		r.failure = "not retrieved: " + (r.retrieval.reasons.empty()
+		                                     ? std::string("the gripper does not hold it")
+		                                     : r.retrieval.reasons.back());
 	if (r.retrieved) r.timeline.note("object held (jaws " + std::to_string(r.retrieval.width_lifted_mm) + " mm apart)");
 	if (r.retrieved && o.place.enabled) placeOnBoard(retrieval.mount());
 }
@@ -58,7 +64,7 @@ void Mission::Impl::retrieve()
  * the object is recognised again from there. Returns its pose in C0 there (mm): recognised, or
  * predicted from the search and the navigation's estimate when not recognised; nothing when no
  * candidate gives a feasible grasp (the base has not moved). */
-std::optional<Eigen::Isometry3d> Mission::Impl::dockAndReobserve(const Retrieval& retrieval,
+std::optional<Sighting> Mission::Impl::dockAndReobserve(const Retrieval& retrieval,
                                                                  const PlanTable& table,
                                                                  const Eigen::Isometry3d& T_OinW_m,
                                                                  double top_height_m)
@@ -115,10 +121,10 @@ std::optional<Eigen::Isometry3d> Mission::Impl::dockAndReobserve(const Retrieval
 	d.recognised = d.reached = s.found;
 	d.ambiguous = s.found && s.recognition.ambiguous;
 	r.timeline.note(std::string("docking view: ") + (s.found ? "recognised" : "not recognised"));
-	if (s.found) return s.T_OinC0;
+	if (s.found) return sightingOf(s);
 	d.reason = "not recognised again at the docking pose: grasp planned on the pose predicted "
 	           "from the search and the navigation's estimate";
-	return predicted;
+	return Sighting{predicted, {}};
 }
 
 void Mission::Impl::calibrateDock(Retrieval& retrieval, const Eigen::Isometry3d& T_OinC0_mm,
@@ -152,7 +158,7 @@ void Mission::Impl::calibrateDock(Retrieval& retrieval, const Eigen::Isometry3d&
 
 /** The visual verification's view: the head fixates the object's estimated centre and a new
  * stereo pair is recognised as in the sweep. */
-std::optional<Eigen::Isometry3d> Mission::Impl::reobserveAt(const Eigen::Isometry3d& T_OinC0_mm)
+std::optional<Sighting> Mission::Impl::reobserveAt(const Eigen::Isometry3d& T_OinC0_mm)
 {
 	geometry::HeadAngles angles;
 	try
@@ -168,7 +174,7 @@ std::optional<Eigen::Isometry3d> Mission::Impl::reobserveAt(const Eigen::Isometr
 	const auto s = search->observe(angles, r.timeline);
 	r.timeline.note(std::string("verification view (object fixated): ") +
 	                (s.found ? "recognised" : "not recognised"));
-	return s.found ? std::optional(s.T_OinC0) : std::nullopt;
+	return s.found ? std::optional(sightingOf(s)) : std::nullopt;
 }
 
 }  // namespace mrolr::mission

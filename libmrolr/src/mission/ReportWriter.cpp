@@ -330,6 +330,12 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	if (r.found) j["retrieval"]["dock_calibration"] = dockCalibrationJson(r.dock_calibration);
 	if (r.found) j["retrieval"]["place"] = placeJson(r.place);
 	if (r.found)
+		j["retrieval"]["ambiguity"] = {
+		    {"ambiguous", r.retrieval.ambiguity.poses > 1},
+		    {"poses", r.retrieval.ambiguity.poses},
+		    {"poses_gripped_alike", r.retrieval.ambiguity.poses_fitted},
+		    {"resolution", AmbiguityHandling::name(r.retrieval.ambiguity.resolution)}};
+	if (r.found)
 		j["retrieval"]["frame"] = r.retrieval.frame ? json(*r.retrieval.frame) : json(nullptr);
 	if (r.found) j["T_OinA"] = matrix34(r.retrieval.T_OinA);
 	return j;

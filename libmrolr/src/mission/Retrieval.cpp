@@ -3,8 +3,10 @@
 #include <mrolr/arm/SolidSampling.h>
 #include <mrolr/mission/Retrieval.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace mrolr::mission
 {
@@ -28,6 +30,18 @@ double angleBetweenDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
 	return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() * 180.0 / M_PI;
 }
 
+/** Joint distance for choosing among IK solutions (1 mm of column ~ 1 mrad). */
+double jointDistance(const arm::RtxJoints& a, const arm::RtxJoints& b)
+{
+	double d = std::abs(a.d1_mm - b.d1_mm) / 1000.0;
+	for (size_t i = 0; i < 6; ++i) d += std::abs(a.q_rad[i] - b.q_rad[i]);
+	return d;
+}
+
+/** A step of a straight move whose joints jump further than this changed branch (elbow or
+ * wrist flipped at a joint limit): the line cannot be followed (rad over kStraightStep_mm). */
+constexpr double kMaxStepJump = 0.35;
+
 std::string mm(double v)
 {
 	char buf[32];
@@ -36,8 +50,52 @@ std::string mm(double v)
 }
 }  // namespace
 
+Sighting sightingOf(const SearchResult& s)
+{
+	Sighting out;
+	out.T_OinC0_mm = s.T_OinC0;
+	if (!s.recognition.ambiguous) return out;
+	const Eigen::Isometry3d T_LinC0 = s.T_OinC0 * s.T_OinL.inverse();
+	for (const auto& p : s.recognition.poses) out.poses_C0_mm.push_back(T_LinC0 * p.T_OinS);
+	return out;
+}
+
+const char* AmbiguityHandling::name(Resolution r)
+{
+	switch (r)
+	{
+		case Resolution::None: return "not_ambiguous";
+		case Resolution::GraspFitsAll: return "grasp_fits_every_pose";
+		case Resolution::LookedAgain: return "resolved_by_looking_again";
+		case Resolution::StillAmbiguous: return "still_ambiguous_best_pose_taken";
+	}
+	return "?";
+}
+
+int Retrieval::posesGrippedAlike(const Eigen::Isometry3d& T_GinA, double turn_deg,
+                                 const std::vector<Eigen::Isometry3d>& poses_C0_mm) const
+{
+	const double step = o_.retrieval.grasp_yaw_search_deg;
+	const Eigen::Isometry3d jaws_round = T_GinA * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ());
+	int alike = 0;
+	for (const auto& P : poses_C0_mm)
+	{
+		const Eigen::Isometry3d T_OinA = arm::objectInArm(T_C0inA_, P);
+		bool same = false;
+		for (int k = 0; !same && (k == 0 || (step > 0 && k * step < 360 - 1e-9)); ++k)
+		{
+			const Eigen::Isometry3d G = T_OinA * graspInObject(turn_deg + k * step);
+			for (const auto* want : {&T_GinA, &jaws_round})
+				same = same || ((G.translation() - want->translation()).norm() <= kSameGrip_mm &&
+				                angleBetweenDeg(G, *want) <= kSameGrip_deg);
+		}
+		alike += same;
+	}
+	return alike;
+}
+
 Retrieval::Retrieval(const MissionOptions& o, const model::WireFrame& target)
-    : o_(o), target_(target), ik_(o.rtx), T_C0inA_(o.dock.T_C0inA)
+    : o_(o), target_(target), ik_(o.rtx), kin_(o.rtx), T_C0inA_(o.dock.T_C0inA)
 {
 }
 
@@ -70,12 +128,17 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 	{
 		const Eigen::Isometry3d T_GinA = r.T_OinA * graspInObject(turn);
 		auto c = check(r.T_OinA, T_GinA, table_z_mm);
-		if (c.feasible() && !preGraspJoints(T_GinA))
+		std::optional<arm::RtxJoints> grasp;  // a solution reached straight from its pre-grasp
+		for (const auto& sol : c.solutions)
+			if (const auto pre = preGraspJoints(T_GinA, sol.joints);
+			    !grasp && pre && straightPath(*pre, sol.joints))
+				grasp = sol.joints;
+		if (c.feasible() && !grasp)
 			c.reasons.push_back(
-			    "no IK solution for the pre-grasp pose (behind or above the grasp)");
+			    "no IK solution for a pre-grasp pose from which the fingers come straight in");
 		if (turn == 0) r.reasons = c.reasons, r.T_GinA = T_GinA;
 		if (!c.feasible()) continue;
-		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = c.solutions.front().joints;
+		r.T_GinA = T_GinA, r.grasp_turn_deg = turn, r.joints = *grasp;
 		r.T_GinO = graspInObject(turn);
 		r.reasons.clear();
 		return true;
@@ -84,22 +147,58 @@ bool Retrieval::planGrasp(RetrievalResult& r, double table_z_mm) const
 	return false;
 }
 
-std::optional<arm::RtxJoints> Retrieval::preGraspJoints(const Eigen::Isometry3d& T_GinA) const
+std::optional<arm::RtxJoints> Retrieval::preGraspJoints(const Eigen::Isometry3d& T_GinA,
+                                                         const arm::RtxJoints& near) const
 {
-	if (auto j = solve(preGrasp(T_GinA, o_.retrieval.approach_mm))) return j;
-	return solve(shifted(T_GinA, {0, 0, o_.retrieval.approach_mm}));
+	if (auto j = solve(preGrasp(T_GinA, o_.retrieval.approach_mm), near)) return j;
+	return solve(shifted(T_GinA, {0, 0, o_.retrieval.approach_mm}), near);
 }
 
-std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA) const
+std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA,
+                                               const arm::RtxJoints& near) const
 {
 	const auto r = ik_.solve(T_GinA);
 	if (r.solutions.empty()) return std::nullopt;
-	return r.solutions.front().joints;
+	return std::min_element(r.solutions.begin(), r.solutions.end(),
+	                        [&](const arm::IkSolution& a, const arm::IkSolution& b)
+	                        { return jointDistance(a.joints, near) < jointDistance(b.joints, near); })
+	    ->joints;
 }
 
 void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
 {
 	arm.moveTo(j.toMmDeg());
+	timeline.advance(o_.retrieval.arm_move_time_s);
+}
+
+std::optional<std::vector<arm::RtxJoints>> Retrieval::straightPath(const arm::RtxJoints& from,
+                                                                   const arm::RtxJoints& to) const
+{
+	const Eigen::Isometry3d a = kin_.T06(from), b = kin_.T06(to);
+	const double length = std::max((b.translation() - a.translation()).norm(),
+	                               kStraightRadius_mm * angleBetweenDeg(a, b) * M_PI / 180.0);
+	const int n = std::clamp(static_cast<int>(std::ceil(length / kStraightStep_mm)), 1, 200);
+	const Eigen::Quaterniond qa(a.linear()), qb(b.linear());
+	std::vector<arm::RtxJoints> path;
+	arm::RtxJoints last = from;
+	for (int k = 1; k <= n; ++k)
+	{
+		const double t = static_cast<double>(k) / n;
+		Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+		T.linear() = qa.slerp(t, qb).toRotationMatrix();
+		T.translation() = (1 - t) * a.translation() + t * b.translation();
+		const auto next = k == n ? std::optional(to) : solve(T, last);
+		if (!next || jointDistance(*next, last) > kMaxStepJump) return std::nullopt;
+		path.push_back(last = *next);
+	}
+	return path;
+}
+
+void Retrieval::moveStraight(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
+{
+	const auto path = straightPath(arm::RtxJoints::fromMmDeg(arm.joints()), j);
+	for (const auto& step : path ? *path : std::vector<arm::RtxJoints>{j})
+		arm.moveTo(step.toMmDeg());
 	timeline.advance(o_.retrieval.arm_move_time_s);
 }
 
@@ -118,12 +217,12 @@ Eigen::Isometry3d Retrieval::graspAt(const Eigen::Isometry3d& T_OinC0_mm, double
 	return arm::objectInArm(T_C0inA_, T_OinC0_mm) * graspInObject(turn_deg);
 }
 
-RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
+RetrievalResult Retrieval::run(const Sighting& first, double table_top_height_m,
                                hw::ArmDevice& arm, const Reobserve& reobserve,
                                Timeline& timeline) const
 {
 	RetrievalResult r;
-	r.T_OinC0_first = T_OinC0_mm;
+	r.T_OinC0_first = first.T_OinC0_mm;
 	r.T_OinC0_first.translation().x() += o_.retrieval.inject_pose_error_mm;
 	if (o_.retrieval.inject_pose_error_mm != 0)
 		timeline.note("injected pose error " + mm(o_.retrieval.inject_pose_error_mm) +
@@ -135,6 +234,7 @@ RetrievalResult Retrieval::run(const Eigen::Isometry3d& T_OinC0_mm, double table
 	}
 	if (!r.feasible) return r;
 	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
+	judgeAmbiguity(r, first, timeline);
 	r.attempted = true;
 	try
 	{
@@ -161,8 +261,8 @@ void Retrieval::closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& t
 		                    " apart)");
 		return;
 	}
-	if (const auto lift = solve(shifted(r.T_GinA, {0, 0, o_.retrieval.lift_mm})))
-		moveTo(arm, *lift, timeline);
+	if (const auto lift = solve(shifted(r.T_GinA, {0, 0, o_.retrieval.lift_mm}), r.joints))
+		moveStraight(arm, *lift, timeline);
 	else
 		r.reasons.push_back("no IK solution for the lift pose");
 	r.width_lifted_mm = arm.gripperWidthMm();
@@ -190,7 +290,7 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
                                Timeline& timeline) const
 {
 	arm.setGripper(false);
-	const auto pre = preGraspJoints(r.T_GinA);
+	const auto pre = preGraspJoints(r.T_GinA, r.joints);
 	if (!pre)
 	{
 		r.reasons.push_back("no IK solution for the pre-grasp pose");
@@ -199,9 +299,16 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 	// come down onto the pre-grasp from above it: the fingers stay clear of the table's edge and
 	// of the neighbours on the way from wherever the arm was
 	if (const auto above = solve(shifted(preGrasp(r.T_GinA, o_.retrieval.approach_mm),
-	                                     {0, 0, o_.retrieval.approach_mm})))
-		moveTo(arm, *above, timeline);
-	if (!o_.retrieval.visual_verification) moveTo(arm, *pre, timeline);
+	                                     {0, 0, o_.retrieval.approach_mm}),
+	                             *pre))
+	{
+		// the swing at the column's height the arm has (or higher), then straight down
+		arm::RtxJoints high = *above;
+		high.d1_mm = std::max(above->d1_mm, arm::RtxJoints::fromMmDeg(arm.joints()).d1_mm);
+		if (high.d1_mm != above->d1_mm) moveTo(arm, high, timeline);
+		moveStraight(arm, *above, timeline);
+	}
+	if (!o_.retrieval.visual_verification) moveStraight(arm, *pre, timeline);
 	if (o_.retrieval.visual_verification)
 	{
 		// the head looks from where the arm leaves the object in view, then the arm comes down
@@ -209,21 +316,50 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 		if (view.d1_mm != pre->d1_mm)
 			timeline.note("verification view with the hand " + mm(view.d1_mm - pre->d1_mm) +
 			              " above the pre-grasp, the arm clear of the object");
-		moveTo(arm, view, timeline);
-		const auto T_OinC0 = reobserve(r.T_OinC0_first);
-		if (view.d1_mm != pre->d1_mm) moveTo(arm, *pre, timeline);
-		if (T_OinC0)
-			correct(r, *T_OinC0, timeline);
+		moveStraight(arm, view, timeline);
+		const auto seen = reobserve(r.T_OinC0_first);
+		if (view.d1_mm != pre->d1_mm) moveStraight(arm, *pre, timeline);
+		if (seen)
+			correct(r, seen->T_OinC0_mm, timeline);
 		else
 			timeline.note("verification: the object was not recognised again; first grasp kept");
+		lookedAgain(r, seen, timeline);
 	}
 	// a corrected grasp is approached along its own axis, from its own pre-grasp
-	if (const auto corrected_pre = r.correction_applied ? preGraspJoints(r.T_GinA) : std::nullopt)
-		moveTo(arm, *corrected_pre, timeline);
-	moveTo(arm, r.joints, timeline);
+	if (const auto corrected_pre =
+	        r.correction_applied ? preGraspJoints(r.T_GinA, r.joints) : std::nullopt)
+		moveStraight(arm, *corrected_pre, timeline);
+	moveStraight(arm, r.joints, timeline);
 	timeline.note("at grasp pose (correction " + mm(r.correction_mm) +
 	              (r.correction_applied ? ", applied)" : ", not applied)"));
 	return true;
+}
+
+void Retrieval::judgeAmbiguity(RetrievalResult& r, const Sighting& first, Timeline& timeline) const
+{
+	auto& a = r.ambiguity;
+	if (!first.ambiguous()) return;
+	a.poses = static_cast<int>(first.poses_C0_mm.size());
+	a.poses_fitted = posesGrippedAlike(r.T_GinA, r.grasp_turn_deg, first.poses_C0_mm);
+	const bool all = a.poses_fitted == a.poses;
+	a.resolution = all ? AmbiguityHandling::Resolution::GraspFitsAll
+	                   : AmbiguityHandling::Resolution::StillAmbiguous;
+	timeline.note("ambiguous pose (" + std::to_string(a.poses) + " poses): " +
+	              (all ? "the grasp grips every one of them alike"
+	                   : std::to_string(a.poses_fitted) + " gripped alike; the verification view decides"));
+}
+
+void Retrieval::lookedAgain(RetrievalResult& r, const std::optional<Sighting>& seen,
+                            Timeline& timeline) const
+{
+	auto& a = r.ambiguity;
+	if (a.resolution != AmbiguityHandling::Resolution::StillAmbiguous) return;
+	if (seen && !seen->ambiguous())
+		a.resolution = AmbiguityHandling::Resolution::LookedAgain;
+	else if (seen && posesGrippedAlike(r.T_GinA, r.grasp_turn_deg, seen->poses_C0_mm) ==
+	                     static_cast<int>(seen->poses_C0_mm.size()))
+		a.resolution = AmbiguityHandling::Resolution::GraspFitsAll;
+	timeline.note(std::string("ambiguity after looking again: ") + AmbiguityHandling::name(a.resolution));
 }
 
 double Retrieval::nearestTurn(const RetrievalResult& r, const Eigen::Isometry3d& T_OinA) const
@@ -260,10 +396,18 @@ void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
 		timeline.note(r.reasons.back());
 		return;
 	}
-	const auto j = solve(T_GinA);
+	const auto j = solve(T_GinA, r.joints);
 	if (!j)
 	{
 		r.reasons.push_back("no IK solution for the verified grasp; first grasp kept");
+		return;
+	}
+	const auto pre = preGraspJoints(T_GinA, *j);
+	if (!pre || !straightPath(*pre, *j))
+	{
+		r.reasons.push_back("the verified grasp cannot be approached straight from its pre-grasp "
+		                    "on one arm branch; first grasp kept");
+		timeline.note(r.reasons.back());
 		return;
 	}
 	r.T_GinA = T_GinA, r.joints = *j, r.grasp_turn_deg = turn, r.correction_applied = true;

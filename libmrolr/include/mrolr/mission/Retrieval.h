@@ -14,6 +14,7 @@
  * reported with its reasons and the arm never moves.
  */
 #include <mrolr/arm/AnalyticIk.h>
+#include <mrolr/arm/RtxKinematics.h>
 #include <mrolr/hw/Devices.h>
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/mission/ObjectSearch.h>
@@ -21,9 +22,39 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <vector>
 
 namespace mrolr::mission
 {
+/** A recognition of the object: its pose in C0 (mm) and, when the answer was ambiguous
+ * (recog::RecognitionResult::ambiguous), every pose it supported about equally, the best first. */
+struct Sighting
+{
+	Eigen::Isometry3d T_OinC0_mm = Eigen::Isometry3d::Identity();
+	std::vector<Eigen::Isometry3d> poses_C0_mm;  ///< empty: not ambiguous
+	bool ambiguous() const { return poses_C0_mm.size() > 1; }
+};
+
+/** The sighting of a search's answer: its pose in C0 and, if ambiguous, all of its poses in C0. */
+Sighting sightingOf(const SearchResult& s);
+
+/** What the retrieval did about an ambiguous pose (report.json `retrieval.ambiguity`). */
+struct AmbiguityHandling
+{
+	enum class Resolution
+	{
+		None,             ///< the pose was not ambiguous
+		GraspFitsAll,     ///< one grasp is the same grip on every pose
+		LookedAgain,      ///< the verification view recognised it unambiguously
+		StillAmbiguous    ///< after looking again (or without a second look): the best pose
+	};
+	Resolution resolution = Resolution::None;
+	int poses = 0;          ///< poses of the first recognition
+	int poses_fitted = 0;   ///< of those the planned grasp grips the same way
+	static const char* name(Resolution r);
+};
+
 struct RetrievalResult
 {
 	bool attempted = false;  ///< the arm moved
@@ -49,17 +80,31 @@ struct RetrievalResult
 	double width_closed_mm = 0;  ///< jaw distance right after closing
 	double width_lifted_mm = 0;  ///< jaw distance after the lift
 	bool retrieved = false;      ///< the robot believes it holds the object (jaw width)
+	AmbiguityHandling ambiguity;
 };
 
 class Retrieval
 {
  public:
 	/** A new recognition of the object by the head, given the current estimate of T_OinC0 (mm)
-	 * to look at; returns the recognised T_OinC0 (mm), or nothing when not recognised. */
-	using Reobserve = std::function<std::optional<Eigen::Isometry3d>(const Eigen::Isometry3d&)>;
+	 * to look at; nothing when not recognised. */
+	using Reobserve = std::function<std::optional<Sighting>(const Eigen::Isometry3d&)>;
 	Retrieval(const MissionOptions& o, const model::WireFrame& target);
-	RetrievalResult run(const Eigen::Isometry3d& T_OinC0_mm, double table_top_height_m,
-	                    hw::ArmDevice& arm, const Reobserve& reobserve, Timeline& timeline) const;
+	/** The grasp of the object seen as @p first. An ambiguous sighting (beyond the thesis) is
+	 * handled before the gripper closes: when the planned grasp grips every pose of it the same
+	 * way (within kSameGrip_mm and kSameGrip_deg, the jaws' two ways round included) it is kept;
+	 * otherwise the verification view's recognition decides, and if that too is ambiguous the
+	 * best-supported pose is taken; result.ambiguity says which. */
+	RetrievalResult run(const Sighting& first, double table_top_height_m, hw::ArmDevice& arm,
+	                    const Reobserve& reobserve, Timeline& timeline) const;
+	/** Two grasps are the same grip when this close (a millimetre-level pose difference between
+	 * the rival poses of a nearly symmetric object is within the jaws' compliance and the
+	 * verification's correction). */
+	static constexpr double kSameGrip_mm = 10, kSameGrip_deg = 10;
+	/** How many of @p poses_C0_mm the grasp @p T_GinA grips as it does the pose it was planned
+	 * on (a turn of the model's grasp by the yaw search's steps, or the jaws turned round). */
+	int posesGrippedAlike(const Eigen::Isometry3d& T_GinA, double turn_deg,
+	                      const std::vector<Eigen::Isometry3d>& poses_C0_mm) const;
 	/** The grasp (A, mm) of the model's grasp line turned by @p turn_deg, object at
 	 * @p T_OinC0_mm (eq 6.7.1). */
 	Eigen::Isometry3d graspAt(const Eigen::Isometry3d& T_OinC0_mm, double turn_deg) const;
@@ -83,6 +128,10 @@ class Retrieval
 	                      double table_z_mm) const;
 	bool reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reobserve& reobserve,
 	                    Timeline& timeline) const;
+	/** Whether the planned grasp grips every pose of an ambiguous @p first alike. */
+	void judgeAmbiguity(RetrievalResult& r, const Sighting& first, Timeline& timeline) const;
+	/** An ambiguity left open is settled by the verification view @p seen, or stays open. */
+	void lookedAgain(RetrievalResult& r, const std::optional<Sighting>& seen, Timeline& timeline) const;
 	/** Recomputes the grasp from the verified pose and applies it unless refused. */
 	void correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm, Timeline& timeline) const;
 	/** The turn of the grasp at @p T_OinA nearest in rotation to the planned grasp (a symmetric
@@ -90,17 +139,33 @@ class Retrieval
 	double nearestTurn(const RetrievalResult& r, const Eigen::Isometry3d& T_OinA) const;
 	/** T_GinO of the model's grasp turned by @p turn_deg about O's z axis. */
 	Eigen::Isometry3d graspInObject(double turn_deg) const;
-	/** The first feasible grasp turn (0, +s, −s, +2s, …); fills T_GinA, joints and reasons. */
+	/** The first feasible grasp turn (0, +s, −s, +2s, …) with a solution reached straight from
+	 * its pre-grasp on one arm branch; fills T_GinA, joints and reasons. */
 	bool planGrasp(RetrievalResult& r, double table_z_mm) const;
-	/** Joints of the pre-grasp pose: approach_mm back along z_G, else approach_mm above. */
-	std::optional<arm::RtxJoints> preGraspJoints(const Eigen::Isometry3d& T_GinA) const;
-	std::optional<arm::RtxJoints> solve(const Eigen::Isometry3d& T_GinA) const;
+	/** Joints of the pre-grasp pose: approach_mm back along z_G, else approach_mm above; the
+	 * solution nearest @p near. */
+	std::optional<arm::RtxJoints> preGraspJoints(const Eigen::Isometry3d& T_GinA,
+	                                             const arm::RtxJoints& near) const;
+	/** The IK solution of @p T_GinA nearest @p near in joints. */
+	std::optional<arm::RtxJoints> solve(const Eigen::Isometry3d& T_GinA, const arm::RtxJoints& near) const;
 	void moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const;
+	/** The hand moved along the straight line (and the shortest turn) from where the arm is to
+	 * @p j's pose, through IK solutions every kStraightStep_mm, each the nearest in joints to the
+	 * one before: the fingers come in along their axis instead of sweeping sideways as a
+	 * joint-space move does; one arm move of simulated time. */
+	void moveStraight(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const;
+	/** The joints of that line, @p to last; nothing when a point of it has no IK solution or the
+	 * arm would have to change branch on the way (the joint-space move then follows). */
+	std::optional<std::vector<arm::RtxJoints>> straightPath(const arm::RtxJoints& from,
+	                                                        const arm::RtxJoints& to) const;
+	static constexpr double kStraightStep_mm = 10;
+	static constexpr double kStraightRadius_mm = 200;  ///< a turn counted as the fingertips' travel
 	const MissionOptions& o_;
 	/** Closes the gripper, lifts, and judges from the jaw width whether it holds the object. */
 	void closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& timeline) const;
 	const model::WireFrame& target_;
 	arm::AnalyticIk ik_;
+	arm::RtxKinematics kin_;
 	Eigen::Isometry3d T_C0inA_;
 	const SelfModel* self_ = nullptr;
 	/** Joints of the verification view: the pre-grasp @p pre, or a pose above it. */
