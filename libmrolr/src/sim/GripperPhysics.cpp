@@ -14,6 +14,16 @@ namespace
 {
 const Eigen::Vector3d kUp_W = Eigen::Vector3d::UnitY();
 
+/** True when @p p_W lies over (or under) table @p t's top rectangle. */
+bool overTable(const world::Table& t, const Eigen::Vector3d& p_W)
+{
+	const double yaw = t.yaw_deg * M_PI / 180.0;
+	const double dz = p_W.z() - t.z_m, dx = p_W.x() - t.x_m;
+	const double along_z = dz * std::cos(yaw) + dx * std::sin(yaw);
+	const double along_x = -dz * std::sin(yaw) + dx * std::cos(yaw);
+	return std::abs(along_z) <= t.depth_m / 2 && std::abs(along_x) <= t.length_m / 2;
+}
+
 std::string mm(double v)
 {
 	char buf[32];
@@ -140,16 +150,12 @@ std::optional<std::string> GripperPhysics::tableEntered(
 {
 	for (const auto& t : world_.tables)
 	{
-		const double top_y = world_.room.floorY() + t.top_height_m, yaw = t.yaw_deg * M_PI / 180.0;
+		const double top_y = world_.room.floorY() + t.top_height_m;
 		for (const auto& p_G : points_G)
 		{
 			const Eigen::Vector3d p = T_GinW * (p_G / 1000.0);
 			if (p.y() > top_y || p.y() < world_.room.floorY()) continue;
-			const double dz = p.z() - t.z_m, dx = p.x() - t.x_m;
-			const double along_z = dz * std::cos(yaw) + dx * std::sin(yaw);
-			const double along_x = -dz * std::sin(yaw) + dx * std::cos(yaw);
-			if (std::abs(along_z) <= t.depth_m / 2 && std::abs(along_x) <= t.length_m / 2)
-				return t.name;
+			if (overTable(t, p)) return t.name;
 		}
 	}
 	return std::nullopt;
@@ -161,13 +167,9 @@ std::pair<double, std::string> GripperPhysics::supportUnder(const Eigen::Vector3
 	std::pair<double, std::string> best{world_.room.floorY(), "the floor"};
 	for (const auto& t : world_.tables)
 	{
-		const double top_y = world_.room.floorY() + t.top_height_m, yaw = t.yaw_deg * M_PI / 180.0;
+		const double top_y = world_.room.floorY() + t.top_height_m;
 		if (top_y > p.y() + kTouch_m || top_y <= best.first) continue;
-		const double dz = p.z() - t.z_m, dx = p.x() - t.x_m;
-		const double along_z = dz * std::cos(yaw) + dx * std::sin(yaw);
-		const double along_x = -dz * std::sin(yaw) + dx * std::cos(yaw);
-		if (std::abs(along_z) <= t.depth_m / 2 && std::abs(along_x) <= t.length_m / 2)
-			best = {top_y, "table '" + t.name + "'"};
+		if (overTable(t, p)) best = {top_y, "table '" + t.name + "'"};
 	}
 	return best;
 }
