@@ -88,8 +88,10 @@ DeckPlacement::DeckPlacement(const MissionOptions& o, const model::WireFrame& ta
 	             1000.0 * b.mast_half_width_m});
 	points_O_ = arm::sampleSolid(target, Eigen::Isometry3d::Identity(), kPointSpacing_mm);
 	for (const auto& p : points_O_)
-		footprint_radius_mm_ = std::max(footprint_radius_mm_, p.head<2>().norm()),
+	{
+		footprint_radius_mm_ = std::max(footprint_radius_mm_, p.head<2>().norm());
 		bottom_mm_ = std::min(bottom_mm_, p.z());
+	}
 }
 
 Eigen::Isometry3d DeckPlacement::T_OinC0At(const Spot& s) const
