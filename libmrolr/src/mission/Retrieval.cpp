@@ -2,6 +2,7 @@
 #include <mrolr/arm/GraspChain.h>
 #include <mrolr/arm/SolidSampling.h>
 #include <mrolr/mission/Retrieval.h>
+#include "RetrievalDetail.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,8 @@
 
 namespace mrolr::mission
 {
+using detail::angleBetweenDeg;
+
 namespace
 {
 Eigen::Isometry3d shifted(const Eigen::Isometry3d& T, const Eigen::Vector3d& d_mm_in_A)
@@ -23,11 +26,6 @@ Eigen::Isometry3d shifted(const Eigen::Isometry3d& T, const Eigen::Vector3d& d_m
 Eigen::Isometry3d preGrasp(const Eigen::Isometry3d& T_GinA, double back_mm)
 {
 	return T_GinA * Eigen::Translation3d(0, 0, -back_mm);
-}
-
-double angleBetweenDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
-{
-	return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() * 180.0 / M_PI;
 }
 
 /** Joint distance for choosing among IK solutions (1 mm of column ~ 1 mrad). */
@@ -49,50 +47,6 @@ std::string mm(double v)
 	return buf;
 }
 }  // namespace
-
-Sighting sightingOf(const SearchResult& s)
-{
-	Sighting out;
-	out.T_OinC0_mm = s.T_OinC0;
-	if (!s.recognition.ambiguous) return out;
-	const Eigen::Isometry3d T_LinC0 = s.T_OinC0 * s.T_OinL.inverse();
-	for (const auto& p : s.recognition.poses) out.poses_C0_mm.push_back(T_LinC0 * p.T_OinS);
-	return out;
-}
-
-const char* AmbiguityHandling::name(Resolution r)
-{
-	switch (r)
-	{
-		case Resolution::None: return "not_ambiguous";
-		case Resolution::GraspFitsAll: return "grasp_fits_every_pose";
-		case Resolution::LookedAgain: return "resolved_by_looking_again";
-		case Resolution::StillAmbiguous: return "still_ambiguous_best_pose_taken";
-	}
-	return "?";
-}
-
-int Retrieval::posesGrippedAlike(const Eigen::Isometry3d& T_GinA, double turn_deg,
-                                 const std::vector<Eigen::Isometry3d>& poses_C0_mm) const
-{
-	const double step = o_.retrieval.grasp_yaw_search_deg;
-	const Eigen::Isometry3d jaws_round = T_GinA * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ());
-	int alike = 0;
-	for (const auto& P : poses_C0_mm)
-	{
-		const Eigen::Isometry3d T_OinA = arm::objectInArm(T_C0inA_, P);
-		bool same = false;
-		for (int k = 0; !same && (k == 0 || (step > 0 && k * step < 360 - 1e-9)); ++k)
-		{
-			const Eigen::Isometry3d G = T_OinA * graspInObject(turn_deg + k * step);
-			for (const auto* want : {&T_GinA, &jaws_round})
-				same = same || ((G.translation() - want->translation()).norm() <= kSameGrip_mm &&
-				                angleBetweenDeg(G, *want) <= kSameGrip_deg);
-		}
-		alike += same;
-	}
-	return alike;
-}
 
 Retrieval::Retrieval(const MissionOptions& o, const model::WireFrame& target)
     : o_(o), target_(target), ik_(o.rtx), kin_(o.rtx), T_C0inA_(o.dock.T_C0inA)
@@ -333,33 +287,6 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 	timeline.note("at grasp pose (correction " + mm(r.correction_mm) +
 	              (r.correction_applied ? ", applied)" : ", not applied)"));
 	return true;
-}
-
-void Retrieval::judgeAmbiguity(RetrievalResult& r, const Sighting& first, Timeline& timeline) const
-{
-	auto& a = r.ambiguity;
-	if (!first.ambiguous()) return;
-	a.poses = static_cast<int>(first.poses_C0_mm.size());
-	a.poses_fitted = posesGrippedAlike(r.T_GinA, r.grasp_turn_deg, first.poses_C0_mm);
-	const bool all = a.poses_fitted == a.poses;
-	a.resolution = all ? AmbiguityHandling::Resolution::GraspFitsAll
-	                   : AmbiguityHandling::Resolution::StillAmbiguous;
-	timeline.note("ambiguous pose (" + std::to_string(a.poses) + " poses): " +
-	              (all ? "the grasp grips every one of them alike"
-	                   : std::to_string(a.poses_fitted) + " gripped alike; the verification view decides"));
-}
-
-void Retrieval::lookedAgain(RetrievalResult& r, const std::optional<Sighting>& seen,
-                            Timeline& timeline) const
-{
-	auto& a = r.ambiguity;
-	if (a.resolution != AmbiguityHandling::Resolution::StillAmbiguous) return;
-	if (seen && !seen->ambiguous())
-		a.resolution = AmbiguityHandling::Resolution::LookedAgain;
-	else if (seen && posesGrippedAlike(r.T_GinA, r.grasp_turn_deg, seen->poses_C0_mm) ==
-	                     static_cast<int>(seen->poses_C0_mm.size()))
-		a.resolution = AmbiguityHandling::Resolution::GraspFitsAll;
-	timeline.note(std::string("ambiguity after looking again: ") + AmbiguityHandling::name(a.resolution));
 }
 
 double Retrieval::nearestTurn(const RetrievalResult& r, const Eigen::Isometry3d& T_OinA) const
