@@ -51,5 +51,12 @@ struct Arm : mrolr::hw::ArmDevice
 	void setGripper(bool c) override { closed = c; }
 	bool gripperClosed() const override { return closed; }
 	double gripperWidthMm() const override { return closed ? 0 : 90; }
+	bool is_docked = false;
+	void dock(bool d) override
+	{
+		if (!d && closed) throw std::logic_error("the arm holds something");
+		is_docked = d;
+	}
+	bool docked() const override { return is_docked; }
 };
 }  // namespace fake

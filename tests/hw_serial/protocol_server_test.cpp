@@ -133,3 +133,17 @@ TEST(ProtocolServer, ArmMovesGripsAndRefusesLimits)
 	EXPECT_EQ(arm.j[0], 500);
 	EXPECT_TRUE(arm.closed);
 }
+
+TEST(ProtocolServer, ArmDocksAndARefusedUndockIsAFault)
+{
+	fake::Arm arm;
+	ArmHandler handler(arm);
+	ProtocolServer server(handler);
+	EXPECT_EQ(ask(server, "1 DOCK?"), "1 OK 0");
+	EXPECT_EQ(ask(server, "2 DOCK 1"), "2 OK");
+	EXPECT_EQ(ask(server, "3 DOCK?"), "3 OK 1");
+	EXPECT_EQ(ask(server, "4 DOCK yes").rfind("4 ERR BADARG DOCK takes one field", 0), 0u);
+	EXPECT_EQ(ask(server, "5 GRIP 1"), "5 OK");
+	EXPECT_EQ(ask(server, "6 DOCK 0"), "6 ERR FAULT the arm holds something");
+	EXPECT_TRUE(arm.is_docked);
+}

@@ -144,6 +144,10 @@ TEST(PtyEndToEnd, ArmMovesAndGraspsThroughThePtyEqualTheSimulatedArm)
 	ArmHandler handler(served);
 	PtyEmulator pty(handler);
 	auto serial = makeSerialArmDevice(deviceConfig(pty.slavePath()), "device.test");
+	EXPECT_FALSE(serial->docked());
+	serial->dock(true);
+	direct.dock(true);
+	EXPECT_TRUE(serial->docked());
 	const std::vector<ArmJoints> moves{
 	    {500, 10, 0, 20, -30, 40, 5}, {600, 12.5, 3, 0, 0, 0, -170}, {300, -5, 1, 2, 3, 4, 5}};
 	for (size_t i = 0; i < moves.size(); ++i)

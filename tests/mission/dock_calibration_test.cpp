@@ -62,6 +62,7 @@ Outcome calibrateOnLab(unsigned seed, bool draw_arm = true)
 	const Eigen::Vector3d p_OinC0_mm(0, -250, 750);
 	const double table_z_in_A = (o.dock.T_C0inA * Eigen::Vector3d(0, -250, 0)).z();
 	mission::Timeline t;
+	lab.arm().dock(true);
 	return {cal.run(lab.arm(), look, o.dock.T_C0inA, p_OinC0_mm, table_z_in_A, t),
 	        lab.trueMount(), o.dock.T_C0inA};
 }

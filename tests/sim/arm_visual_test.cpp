@@ -54,12 +54,14 @@ struct View
 	cv::Mat left, right;
 };
 
-View presentAndGrab(bool draw_arm)
+View presentAndGrab(bool draw_arm, bool decouple_before_grab = false)
 {
 	const auto o = labOptions(draw_arm);
 	sim::Lab lab(o);
 	const auto j = presenting(o, {350, 100, 940});
+	lab.arm().dock(true);
 	lab.arm().moveTo(j);
+	if (decouple_before_grab) lab.arm().dock(false);
 	const auto T_GinA = arm::RtxKinematics(o.rtx).T06(arm::RtxJoints::fromMmDeg(j));
 	const Eigen::Vector3d p_MinC0_mm = lab.trueMount().inverse() * (T_GinA * o.marker.p_MinG_mm);
 	const geometry::BiSightHead head(o.bisight);
@@ -102,6 +104,14 @@ TEST(ArmVisual, TheArmBetweenHeadAndSceneOccludesItAndItsMarkerIsWhereTheChainPu
 	}
 	// and it is nowhere in the bare scene
 	EXPECT_FALSE(stereo::findArucoMarker(without.left, labOpt.marker.aruco_id));
+}
+
+TEST(ArmVisual, ADecoupledArmIsNotInTheView)
+{
+	const View decoupled = presentAndGrab(true, true), without = presentAndGrab(false);
+	const int area = decoupled.left.rows * decoupled.left.cols;
+	EXPECT_LT(changed(decoupled.left, without.left), area / 1000);
+	EXPECT_LT(changed(decoupled.right, without.right), area / 1000);
 }
 
 TEST(ArucoMarker, TheDiagonalsOfASquareCrossAtItsCentre)

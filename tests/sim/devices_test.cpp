@@ -115,6 +115,10 @@ TEST(SimArm, RefusesAJointBeyondItsLimitsAndWithoutPhysicsClosesOnNothing)
 	objects["cup"] = Eigen::Isometry3d(Eigen::Translation3d(0.0, 0.2, 0.5));
 	sim::SimArm arm(fk, sim::SimArmOptions(), objects);
 	EXPECT_EQ(arm.joints()[0], sim::SimArmOptions().max[0]) << "parked with the column at the top";
+	EXPECT_FALSE(arm.docked()) << "the platform starts de-coupled (thesis 7.0)";
+	EXPECT_THROW(arm.moveTo({200, 0, 0, 0, 0, 0, 0}), std::logic_error);
+	EXPECT_THROW(arm.setGripper(true), std::logic_error);
+	arm.dock(true);
 	EXPECT_THROW(arm.moveTo({1000, 0, 0, 0, 0, 0, 0}), std::out_of_range);
 	arm.moveTo({200, 0, 0, 0, 0, 0, 0});
 	EXPECT_DOUBLE_EQ(arm.gripperWidthMm(), sim::SimArmOptions().open_width_mm);

@@ -173,6 +173,7 @@ TEST(SimArm, ApproachesClosesLiftsAndCarriesWhatItHolds)
 		return T;
 	};
 	sim::SimArm arm(fk, sim::SimArmOptions(), b.poses, nullptr, b.physics.get());
+	arm.dock(true);
 	arm.moveTo({200, -150, 0, 0, 0, 0, 0});  // above and behind
 	arm.moveTo({60, -150, 0, 0, 0, 0, 0});   // down to the pre-grasp
 	arm.moveTo({60, 0, 0, 0, 0, 0, 0});      // in
@@ -187,6 +188,9 @@ TEST(SimArm, ApproachesClosesLiftsAndCarriesWhatItHolds)
 	EXPECT_THROW(arm.moveTo({0, 0, 0, 0, 0, 0, 0}), hw::ArmBlocked);
 	EXPECT_GT(arm.joints()[0], 5.0) << "the fingers (10 mm below the grasp point) entered the bench";
 	EXPECT_EQ(arm.grasped(), "target");
+	// its platform does not leave with the object in the jaws
+	EXPECT_THROW(arm.dock(false), std::logic_error);
+	EXPECT_TRUE(arm.docked());
 }
 
 namespace

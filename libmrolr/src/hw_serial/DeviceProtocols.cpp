@@ -100,8 +100,16 @@ std::vector<std::string> ArmHandler::execute(const std::string& verb,
 		device_.setGripper(args[0] == "1");
 		return {};
 	}
-	if (verb != "GRIP?" && verb != "JNT?") unknown(verb, kArmId);
+	if (verb == "DOCK")
+	{
+		if (args.size() != 1 || (args[0] != "0" && args[0] != "1"))
+			throw CommandError(errcode::kBadArg, "DOCK takes one field, 0 (de-couple) or 1 (dock)");
+		device_.dock(args[0] == "1");
+		return {};
+	}
+	if (verb != "GRIP?" && verb != "JNT?" && verb != "DOCK?") unknown(verb, kArmId);
 	requireNoArgs(args, verb);
+	if (verb == "DOCK?") return {device_.docked() ? "1" : "0"};
 	if (verb == "GRIP?")
 		return {device_.gripperClosed() ? "1" : "0", formatNumber(device_.gripperWidthMm())};
 	const auto j = device_.joints();

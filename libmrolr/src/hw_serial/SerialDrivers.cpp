@@ -184,4 +184,18 @@ double SerialArm::gripperWidthMm() const
 	return gripperState(*client_).second;
 }
 
+void SerialArm::dock(bool docked)
+{
+	client_->call("DOCK", {docked ? "1" : "0"});
+}
+
+bool SerialArm::docked() const
+{
+	const auto reply = client_->call("DOCK?", {});
+	if (reply.size() != 1 || (reply[0] != "0" && reply[0] != "1"))
+		throw SerialDeviceError(SerialDeviceError::Kind::Garbage, client_->options().device,
+		                        client_->portName(), "malformed reply: DOCK? is not '0|1'");
+	return reply[0] == "1";
+}
+
 }  // namespace mrolr::hw

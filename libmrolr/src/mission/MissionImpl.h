@@ -51,6 +51,10 @@ struct Mission::Impl
 	std::optional<Sighting> reobserveAt(const Eigen::Isometry3d& T_OinC0_mm);
 	/** The held object put down on the deck (DeckPlacement.h), the arm parked again. */
 	void placeOnBoard(const Eigen::Isometry3d& T_C0inA_mm);
+	/** The arm's platform docked with the base where it stands (thesis 7.0), or de-coupled again
+	 * after the retrieval unless it holds the object (MissionArmDock.cpp). */
+	void dockArm();
+	void undockArm();
 	/** T_C0inA measured with the hand's marker where the base stands (DockCalibration.h). */
 	void calibrateDock(Retrieval& retrieval, const Eigen::Isometry3d& T_OinC0_mm,
 	                   double top_height_m);

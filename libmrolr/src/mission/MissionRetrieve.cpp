@@ -45,6 +45,7 @@ void Mission::Impl::retrieve()
 	// the arm moves only for a grasp it will attempt (its mount within the refusal bounds)
 	const bool may_grasp =
 	    r.docking.needed ? r.docking.planned : retrieval.feasibleAt(T_OinC0_mm, top_height_m);
+	dockArm();
 	if (o.dock_calibration.enabled && may_grasp) calibrateDock(retrieval, T_OinC0_mm, top_height_m);
 	r.retrieval = retrieval.run(seen, top_height_m, *dev.arm, reobserve, r.timeline);
 	r.retrieval.frame = frame;
@@ -58,6 +59,7 @@ void Mission::Impl::retrieve()
 		                                     : r.retrieval.reasons.back());
 	if (r.retrieved) r.timeline.note("object held (jaws " + std::to_string(r.retrieval.width_lifted_mm) + " mm apart)");
 	if (r.retrieved && o.place.enabled) placeOnBoard(retrieval.mount());
+	undockArm();
 }
 
 /** The first candidate docking pose (DockPlanner.h) from which the grasp is feasible, driven to;

@@ -227,6 +227,7 @@ json robotJson(const MissionResult& r, const MissionOptions& o)
 	          {"final_odometry_zxphi", vec(last.odometry)},
 	          {"held_width_mm", r.held_width_mm},
 	          {"on_board", r.place.placed},
+	          {"arm_docked_home", r.arm_docked_home},
 	          {"collided", r.collided},
 	          {"collision_estimate_zxphi", vec(r.collision_estimate)},
 	          {"dock_T_C0inA_mm", matrix34(o.dock.T_C0inA)},

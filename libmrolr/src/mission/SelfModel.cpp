@@ -21,11 +21,12 @@ void SelfModel::setJoints(const hw::ArmJoints& j)
 
 bool SelfModel::isSelf(const Eigen::Vector3d& p_inC0_m) const
 {
-	return hidden(boxes_, p_inC0_m);
+	return docked_ && hidden(boxes_, p_inC0_m);
 }
 
 bool SelfModel::isOnArm(const Eigen::Vector3d& p_inC0_m) const
 {
+	if (!docked_) return false;
 	const Eigen::Vector3d p = p_inC0_m * 1000.0;
 	for (const auto& box : boxes_)
 		if (arm::segmentMeetsBox(p, p, box, kSelfMargin_mm)) return true;

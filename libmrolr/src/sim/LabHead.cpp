@@ -50,7 +50,8 @@ hw::StereoImages LabHead::grab()
 			scene_.scene->insert(arm_visual_->object());
 		}
 	}
-	if (arm_visual_)
+	if (arm_visual_) arm_visual_->object()->setVisibility(lab_.simArm().docked());
+	if (arm_visual_ && lab_.simArm().docked())
 		arm_visual_->update(lab_.T_AinW(), arm::RtxJoints::fromMmDeg(lab_.simArm().joints()),
 		                    lab_.simArm().separationMm());
 	for (const auto& [name, T] : lab_.objectPoses())

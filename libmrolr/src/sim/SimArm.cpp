@@ -67,8 +67,24 @@ SimArm::SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW,
 	for (int i = 1; i < 7; ++i) joints_[i] = std::clamp(0.0, o.min[i], o.max[i]);
 }
 
+void SimArm::dock(bool docked)
+{
+	if (!docked && !grasped_.empty())
+		throw std::logic_error("the arm holds '" + grasped_ +
+		                       "': its platform is not de-coupled with an object in the jaws");
+	docked_ = docked;
+}
+
+void SimArm::requireDocked(const char* what) const
+{
+	if (!docked_)
+		throw std::logic_error(std::string("the arm's platform is not docked with the base: it "
+		                                   "does not ") + what);
+}
+
 void SimArm::moveTo(const hw::ArmJoints& joints)
 {
+	requireDocked("move");
 	for (int i = 0; i < 7; ++i)
 		if (joints[i] < options_.min[i] || joints[i] > options_.max[i])
 			throw std::out_of_range(std::string("arm joint ") + kJointNames[i] + " = " +
@@ -114,6 +130,7 @@ double SimArm::separationMm() const
 
 void SimArm::setGripper(bool closed)
 {
+	requireDocked("grip");
 	if (!closed && !grasped_.empty() && on_release_) on_release_(grasped_);
 	closed_ = closed;
 	grasped_.clear();

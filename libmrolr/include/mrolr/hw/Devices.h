@@ -96,6 +96,14 @@ class ArmDevice
 	 * open, about 0 when closed on nothing, the object's width when closed on one. The robot
 	 * decides from this whether it holds something; no device tells it what it holds. */
 	virtual double gripperWidthMm() const = 0;
+	/** Docks the arm's platform with the base (true) or de-couples it (false). Thesis 7.0: the
+	 * RTX on its caster platform is docked with MROLR once the object is found and de-coupled
+	 * before the drive home, so the head does not carry the arm in its view while it navigates.
+	 * The arm moves and grips only while docked; a device may refuse to de-couple an arm that
+	 * holds something. Refusals throw (std::logic_error in process, SerialDeviceError on a line),
+	 * naming what was refused. */
+	virtual void dock(bool docked) = 0;
+	virtual bool docked() const = 0;
 };
 
 }  // namespace mrolr::hw

@@ -56,6 +56,9 @@ class SerialArm : public ArmDevice
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override;
 	double gripperWidthMm() const override;
+	/** `DOCK 1` / `DOCK 0`; a refusal is a SerialDeviceError (refused) with the device's text. */
+	void dock(bool docked) override;
+	bool docked() const override;
 
  private:
 	std::unique_ptr<SerialClient> client_;

@@ -91,6 +91,10 @@ struct MissionResult
 	DockingResult docking;  ///< the drive to where the arm reaches, if one was needed
 	DockCalibrationResult dock_calibration;  ///< T_C0inA measured before the grasp
 	PlaceResult place;  ///< the object put down on the deck after the lift
+	/** The arm's platform (thesis 7.0): docked after the object was found, de-coupled before the
+	 * drive home unless it still holds the object (then it rides home docked). */
+	bool arm_docked = false, arm_docked_home = false;
+	std::string arm_undock_refused;  ///< why de-coupling failed, if it did
 	std::vector<PathSample> path;
 	std::vector<StereoShot> shots;  ///< stereo pairs of the sweeps and obstacle looks
 	ObstacleReport obstacle;        ///< obstacle mode: looks, obstacles seen, waypoints inserted

@@ -5,7 +5,8 @@
  * from either camera passes within kSelfMargin_mm of an arm box (it lies on the arm, or behind
  * it). Navigation neither measures a feature it hides nor adds one on it; obstacle mode drops
  * the points on the arm (isOnArm()), since what the arm hides stereo does not measure. The margin covers the dock's error (±20 mm) and the cameras' travel with the head's
- * joints (a few cm). */
+ * joints (a few cm). The arm is in view only while its platform is docked (setDocked(); thesis
+ * 7.0): de-coupled, nothing the head sees is self. */
 #include <mrolr/arm/ArmBody.h>
 #include <mrolr/geometry/BiSightHead.h>
 #include <mrolr/hw/Devices.h>
@@ -28,15 +29,18 @@ class SelfModel
 
 	/** The arm's joints now (its encoders; d1 mm, q deg). */
 	void setJoints(const hw::ArmJoints& j);
+	/** The arm's platform docked with the base (ArmDevice::dock()); false at the start. */
+	void setDocked(bool docked) { docked_ = docked; }
+	bool docked() const { return docked_; }
 
-	/** True when @p p_inC0_m is on the arm or hidden by it from either camera. */
+	/** True when @p p_inC0_m is on the docked arm or hidden by it from either camera. */
 	bool isSelf(const Eigen::Vector3d& p_inC0_m) const;
 
 	/** True when @p p_inC0_m lies within kSelfMargin_mm of an arm box (what stereo measures on
 	 * the arm itself; what lies behind it, stereo does not see). */
 	bool isOnArm(const Eigen::Vector3d& p_inC0_m) const;
 
-	/** The same as isSelf with the arm at @p j instead (a pose it has not reached yet). */
+	/** The same as isSelf with the arm docked at @p j instead (a pose it has not reached yet). */
 	bool isSelfAt(const hw::ArmJoints& j, const Eigen::Vector3d& p_inC0_m) const;
 
 	const std::vector<arm::PlacedBox>& boxesInC0() const { return boxes_; }
@@ -47,6 +51,7 @@ class SelfModel
 	Eigen::Isometry3d T_AinC0_mm_;
 	std::array<Eigen::Vector3d, 2> cameras_mm_;  ///< optic centres in C0, head at zero angles
 	std::vector<arm::PlacedBox> boxes_;
+	bool docked_ = false;
 	bool hidden(const std::vector<arm::PlacedBox>& boxes, const Eigen::Vector3d& p_inC0_m) const;
 };
 

@@ -55,6 +55,11 @@ class SimArm : public hw::ArmDevice
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override { return closed_; }
 	double gripperWidthMm() const override;
+	/** The platform starts de-coupled (thesis 7.0); de-coupling with an object in the jaws is
+	 * refused, since the object would leave with the arm. Undocked, the arm is not in the world:
+	 * not drawn, not moved, not gripping. */
+	void dock(bool docked) override;
+	bool docked() const override { return docked_; }
 	/** Name of the object in the gripper, or "". */
 	const std::string& grasped() const { return grasped_; }
 	/** Called with the held object's name when the jaws open on it (before it is let go). */
@@ -67,6 +72,8 @@ class SimArm : public hw::ArmDevice
 
  private:
 	void carry();
+	/** Throws std::logic_error naming @p what when the platform is not docked. */
+	void requireDocked(const char* what) const;
 
 	std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW_;
 	SimArmOptions options_;
@@ -78,6 +85,7 @@ class SimArm : public hw::ArmDevice
 	std::function<void(const std::string&)> on_release_;
 	hw::ArmJoints joints_{};
 	bool closed_ = false;
+	bool docked_ = false;
 	std::string grasped_;
 	double width_mm_ = 0;  ///< jaw distance on the caught object
 	Eigen::Isometry3d T_OinG_ = Eigen::Isometry3d::Identity();
