@@ -17,15 +17,22 @@ Eigen::Isometry3d Mission::Impl::predictedInC0(const Eigen::Isometry3d& T_OinW_m
 	return T;
 }
 
+/** The object at @p T_OinC0_mm (mm) seen from the base at @p xv, in W (m). */
+Eigen::Isometry3d Mission::Impl::inW(const Eigen::Isometry3d& T_OinC0_mm,
+                                     const Eigen::Vector3d& xv) const
+{
+	Eigen::Isometry3d T = T_OinC0_mm;
+	T.translation() /= 1000.0;
+	return geometry::T_C0inW(xv, o.bisight.head_height_m) * T;
+}
+
 void Mission::Impl::retrieve()
 {
 	r.timeline.beginStage("retrieve");
 	auto reobserve = [&](const Eigen::Isometry3d& T_OinC0_mm) { return reobserveAt(T_OinC0_mm); };
-	Eigen::Isometry3d T_OinW = r.search.T_OinC0;
-	T_OinW.translation() /= 1000.0;
-	T_OinW = geometry::T_C0inW(r.search_xv_estimate, o.bisight.head_height_m) * T_OinW;
+	Eigen::Isometry3d T_OinW = inW(r.search.T_OinC0, r.search_xv_estimate);
 	const PlanTable* table = tableUnder(o.plan.tables, T_OinW.translation());
-	const double top_height_m = table ? table->top_height_m : 0.0;
+	double top_height_m = table ? table->top_height_m : 0.0;
 	Retrieval retrieval(o, target);
 	r.dock_calibration.T_C0inA = retrieval.mount();  // the mount used unless calibrated below
 	self->setJoints(dev.arm->joints());
@@ -41,6 +48,18 @@ void Mission::Impl::retrieve()
 			r.docking.reason = "the plan has no table to dock at";
 		else if (const auto again = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
 			seen = *again, frame = r.docking.frame;
+		if (r.docking.found_again && !retrieval.feasibleAt(T_OinC0_mm, top_height_m))
+		{  // the sweep from the dock found it elsewhere, out of reach: dock once more for that
+			T_OinW = inW(seen.T_OinC0_mm, nav->estimate());
+			table = tableUnder(o.plan.tables, T_OinW.translation());
+			top_height_m = table ? table->top_height_m : 0.0;
+			r.docking.docked_again = true;
+			r.timeline.note("docking again, for the object the sweep found");
+			r.docking.found_again = false;
+			if (table)
+				if (const auto third = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
+					seen = *third, frame = r.docking.frame;
+		}
 	}
 	// the arm moves only for a grasp it will attempt (its mount within the refusal bounds)
 	const bool may_grasp =
@@ -124,8 +143,21 @@ std::optional<Sighting> Mission::Impl::dockAndReobserve(const Retrieval& retriev
 	d.ambiguous = s.found && s.recognition.ambiguous;
 	r.timeline.note(std::string("docking view: ") + (s.found ? "recognised" : "not recognised"));
 	if (s.found) return sightingOf(s);
-	d.reason = "not recognised again at the docking pose: grasp planned on the pose predicted "
-	           "from the search and the navigation's estimate";
+	// Not where the search put it: that sighting may have been a false match, so the table is
+	// swept again from here, and what this sweep finds is grasped (or reported out of reach).
+	d.swept_again = true;
+	const SearchResult again = search->sweep(r.timeline, nav->estimate());
+	r.timeline.note(std::string("docking: table swept again from the docking pose: ") +
+	                (again.found ? "found" : "not found"));
+	if (again.found)
+	{
+		d.found_again = d.recognised = d.reached = true;
+		d.ambiguous = again.recognition.ambiguous;
+		d.frame = again.frame;
+		return sightingOf(again);
+	}
+	d.reason = "not recognised again at the docking pose, nor in a sweep of the table from there: "
+	           "grasp planned on the pose predicted from the search and the navigation's estimate";
 	return Sighting{predicted, {}};
 }
 

@@ -74,6 +74,9 @@ json dockingJson(const DockingResult& d)
 	          {"compute_seconds", d.compute_s},
 	          {"recognised", d.recognised},
 	          {"ambiguous", d.ambiguous},
+	          {"swept_again", d.swept_again},
+	          {"found_again", d.found_again},
+	          {"docked_again", d.docked_again},
 	          {"frame", d.frame ? json(*d.frame) : json(nullptr)},
 	          {"pose_zxphi", nullptr}};
 	if (d.planned)

@@ -61,6 +61,11 @@ struct DockingResult
 	/** The recognition at the docking pose (C0 there, mm): the grasp is planned on it. */
 	bool recognised = false;
 	bool ambiguous = false;  ///< that recognition was ambiguous too
+	/** Not recognised in the docking view: the table was swept again from the docking pose (the
+	 * search's sighting may have been a false match), and whether that sweep found the target. */
+	bool swept_again = false, found_again = false;
+	/** What that sweep found was out of reach from here: the base docked once more for it. */
+	bool docked_again = false;
 	std::optional<uint64_t> frame;  ///< its stereo pair
 };
 
