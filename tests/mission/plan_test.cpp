@@ -26,6 +26,7 @@ Plan samplePlan()
 	k.patch_file = "patches/F7.png", k.p_viewinW = Eigen::Vector3d(0.1, 1.0, 0.2);
 	p.known_features = {k};
 	p.tables = {{"t", 0.2, 1.4, 15, 1.2, 0.8, 0.7}};
+	p.room = PlanRoom{-3, -2, 3, 6};
 	return p;
 }
 }  // namespace
@@ -53,6 +54,18 @@ TEST(Plan, SaveThenLoadGivesTheSamePlan)
 	ASSERT_EQ(q.tables.size(), 1u);
 	EXPECT_DOUBLE_EQ(q.tables[0].yaw_deg, 15);
 	EXPECT_DOUBLE_EQ(q.tables[0].top_height_m, 0.7);
+	ASSERT_TRUE(q.room.has_value());
+	EXPECT_DOUBLE_EQ(q.room->min_z_m, -2);
+	EXPECT_DOUBLE_EQ(q.room->max_x_m, 3);
+}
+
+TEST(Plan, TheWallDistanceIsToTheNearestWallAndNegativeOutside)
+{
+	const PlanRoom room{-3, -2, 3, 6};  // x from -3 to 3, z from -2 to 6
+	EXPECT_DOUBLE_EQ(room.wallDistance({0, 0}), 2.0);     // (z, x): the back wall
+	EXPECT_DOUBLE_EQ(room.wallDistance({5.5, 0}), 0.5);   // the front wall
+	EXPECT_DOUBLE_EQ(room.wallDistance({1, -2.75}), 0.25);  // the right wall
+	EXPECT_LT(room.wallDistance({7, 0}), 0);
 }
 
 TEST(Plan, OverridesReplaceAndAddKeys)
@@ -96,6 +109,10 @@ TEST(Plan, MalformedEntriesNameFileLineSectionAndKey)
 	              .find("no waypoint 'A'"),
 	          std::string::npos);
 	EXPECT_NE(errorOf(head + "A = 0 0 0\n[plans]\n").find("unknown section"), std::string::npos);
+	EXPECT_NE(errorOf(head + "A = 0 0 0\n[room]\nmin_m = 0 0\nmax_m = 5 -1\n")
+	              .find("[room] max_m"),
+	          std::string::npos);
+	EXPECT_NE(errorOf(head + "A = 0 0 0\n[room]\nmin_m = 0 0\n").find("max_m"), std::string::npos);
 	EXPECT_NE(errorOf("[waypoints]\nA = 0 0 0\n").find("missing section [plan]"), std::string::npos);
 	EXPECT_NE(errorOf(head + "A = 0 0 0\n[table.t]\ncentre_m = 0 1\nsize_m = 1 0 1\n")
 	              .find("[table.t] size_m"),

@@ -1,6 +1,7 @@
 // Retrieval missions on the lab with fixed seeds: an object the arm cannot reach from the search
 // station is retrieved from a docking pose the robot plans and drives to, and when no docking pose
-// reaches, the failure says so and the arm never moves.
+// reaches, the failure says so and the arm never moves; a docking pose where the base could not
+// turn for the room's walls is never driven to.
 #include "MissionTestConfig.h"
 
 #include <gtest/gtest.h>
@@ -50,4 +51,43 @@ TEST(RetrievalMission, WhenNoDockingPoseReachesTheFailureSaysSoAndTheArmStays)
 	EXPECT_NE(run.r.failure.find("docking: none of"), std::string::npos) << run.r.failure;
 	EXPECT_EQ(run.report["retrieval"]["docking"]["planned"], false);
 	EXPECT_TRUE(run.r.returned_home);
+}
+
+TEST(RetrievalMission, ADockingPoseTooNearTheWallsIsLeftOutAndTheReasonNamed)
+{
+	// the office's cup stands at the desk's end, 0.5 m from the front wall and next to a filing
+	// cabinet: the only poses from which the arm reaches it leave the base no room to turn
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("mission", "target", "cup");
+	const std::string office = std::string(MROLR_SOURCE_DIR) + "/maps/office";
+	const auto run = mission::test::runMission(
+	    cfg, mission::test::planWith({}, office + "/plan.ini"), office + "/world.ini");
+	const auto& d = run.r.docking;
+	ASSERT_TRUE(run.r.found);
+	EXPECT_TRUE(d.needed);
+	EXPECT_GT(d.candidates_near_walls, 0);
+	EXPECT_FALSE(d.planned);
+	EXPECT_NE(run.r.failure.find("too near the room's walls"), std::string::npos) << run.r.failure;
+	EXPECT_FALSE(run.r.arm_docked);
+	EXPECT_TRUE(run.report["eval"]["collision"].is_null());
+	EXPECT_TRUE(run.r.returned_home);
+}
+
+TEST(RetrievalMission, AFalseMatchAtTheStationIsFoundOutAtTheDockAndTheTableSweptAgain)
+{
+	// seed 9: the station's sweep takes something 0.6 m from the cube for it; at the docking pose
+	// for that sighting the cube is not seen, the table is swept again from there, the real cube
+	// found out of reach, and the base docks once more for it
+	auto cfg = mission::test::defaultMissionConfig();
+	cfg.write("mission", "seed", "9");
+	const auto run = mission::test::runMission(cfg);
+	const auto& d = run.r.docking;
+	ASSERT_TRUE(run.r.found);
+	EXPECT_GT(run.report["object_translation_error_mm"].get<double>(), 100.0)
+	    << "the station's sighting was right: this seed no longer tests a false match";
+	EXPECT_TRUE(d.swept_again);
+	EXPECT_TRUE(d.docked_again);
+	EXPECT_TRUE(run.r.success) << run.r.failure;
+	EXPECT_TRUE(run.report["eval"]["object_retrieved"].get<bool>());
+	EXPECT_LT(run.report["retrieval"]["grasp_error_mm"].get<double>(), 10.0);
 }

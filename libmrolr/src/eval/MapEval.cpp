@@ -70,6 +70,9 @@ mission::Plan surveyPlanOf(const world::World& w)
 	for (const auto& t : w.tables)
 		p.tables.push_back({t.name, t.x_m, t.z_m, t.yaw_deg, t.length_m, t.depth_m,
 		                    t.top_height_m});
+	if (w.has_room)
+		p.room = mission::PlanRoom{w.room.min_m.x(), w.room.min_m.z(), w.room.max_m.x(),
+		                           w.room.max_m.z()};
 	return p;
 }
 

@@ -42,6 +42,7 @@ struct Mission::Impl
 	void retrieve();
 	void goHome();
 	void finish();
+	bool clearOfWalls(const Eigen::Vector3d& xv) const;
 	Eigen::Isometry3d inW(const Eigen::Isometry3d& T_OinC0_mm, const Eigen::Vector3d& xv) const;
 	Eigen::Isometry3d predictedInC0(const Eigen::Isometry3d& T_OinW_m,
 	                                const Eigen::Vector3d& xv) const;

@@ -17,6 +17,13 @@ Eigen::Isometry3d Mission::Impl::predictedInC0(const Eigen::Isometry3d& T_OinW_m
 	return T;
 }
 
+/** True when the base at @p xv could turn without meeting the plan's walls (no walls: true). */
+bool Mission::Impl::clearOfWalls(const Eigen::Vector3d& xv) const
+{
+	return !o.plan.room ||
+	       o.plan.room->wallDistance(xv.head<2>()) >= o.labmate.turnRadius() + kTurnMargin_m;
+}
+
 /** The object at @p T_OinC0_mm (mm) seen from the base at @p xv, in W (m). */
 Eigen::Isometry3d Mission::Impl::inW(const Eigen::Isometry3d& T_OinC0_mm,
                                      const Eigen::Vector3d& xv) const
@@ -64,7 +71,7 @@ void Mission::Impl::retrieve()
 	// the arm moves only for a grasp it will attempt (its mount within the refusal bounds)
 	const bool may_grasp =
 	    r.docking.needed ? r.docking.planned : retrieval.feasibleAt(T_OinC0_mm, top_height_m);
-	dockArm();
+	if (may_grasp) dockArm();  // else the grasp is infeasible from here: the arm is not moved
 	if (o.dock_calibration.enabled && may_grasp) calibrateDock(retrieval, T_OinC0_mm, top_height_m);
 	r.retrieval = retrieval.run(seen, top_height_m, *dev.arm, reobserve, r.timeline);
 	r.retrieval.frame = frame;
@@ -102,6 +109,11 @@ std::optional<Sighting> Mission::Impl::dockAndReobserve(const Retrieval& retriev
 		for (const auto& c : candidates)
 		{
 			++d.candidates_checked;
+			if (!clearOfWalls(c.pose.xv_zxphi))
+			{
+				++d.candidates_near_walls;
+				continue;
+			}
 			std::vector<std::string> why;
 			if (!retrieval.feasibleAt(predictedInC0(T_OinW_m, c.pose.xv_zxphi), top_height_m, &why))
 			{
@@ -117,6 +129,9 @@ std::optional<Sighting> Mission::Impl::dockAndReobserve(const Retrieval& retriev
 	{
 		d.reason = "none of " + std::to_string(d.candidates) + " docking poses round table." +
 		           table.name + " gives a feasible grasp";
+		if (d.candidates_near_walls > 0)
+			d.reason += " (" + std::to_string(d.candidates_near_walls) +
+			            " left out: the base could not turn there, too near the room's walls)";
 		r.timeline.note("docking: " + d.reason);
 		return std::nullopt;
 	}

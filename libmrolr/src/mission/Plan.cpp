@@ -83,6 +83,16 @@ PlanTable parseTable(const IniDocument& doc, const IniSection& s, const std::str
 	return t;
 }
 
+PlanRoom parseRoom(const IniDocument& doc, const IniSection& s)
+{
+	util::rejectUnknownKeys(doc, s, {"min_m", "max_m"});
+	const auto lo = util::requireNumbers(doc, s, "min_m", 2);
+	const auto hi = util::requireNumbers(doc, s, "max_m", 2);
+	if (!(hi[0] > lo[0] && hi[1] > lo[1]))
+		doc.fail(s, util::require(doc, s, "max_m"), "each of x and z must exceed min_m's");
+	return {lo[0], lo[1], hi[0], hi[1]};
+}
+
 void readSections(const IniDocument& doc, Plan& p)
 {
 	for (const auto& s : doc.sections)
@@ -95,10 +105,12 @@ void readSections(const IniDocument& doc, Plan& p)
 			continue;  // read after every feature (readViews)
 		else if (s.name.rfind("table.", 0) == 0 && s.name.size() > 6)
 			p.tables.push_back(parseTable(doc, s, s.name.substr(6)));
+		else if (s.name == "room")
+			p.room = parseRoom(doc, s);
 		else if (s.name != "plan")
 			throw util::IniError(doc.path + ":" + std::to_string(s.line) + " [" + s.name +
 			                     "]: unknown section (expected plan, waypoints, known_features, "
-			                     "known_feature_views or table.NAME)");
+			                     "known_feature_views, table.NAME or room)");
 	}
 }
 
@@ -131,6 +143,12 @@ std::string names(const std::vector<NamedPose>& poses)
 	return out;
 }
 }  // namespace
+
+double PlanRoom::wallDistance(const Eigen::Vector2d& p_zx) const
+{
+	const double z = p_zx.x(), x = p_zx.y();
+	return std::min({x - min_x_m, max_x_m - x, z - min_z_m, max_z_m - z});
+}
 
 const NamedPose* Plan::findWaypoint(const std::string& name) const
 {
@@ -193,6 +211,9 @@ void Plan::save(const std::string& path) const
 		out << "\n[table." << t.name << "]\ncentre_m = " << t.x_m << " " << t.z_m
 		    << "\nyaw_deg = " << t.yaw_deg << "\nsize_m = " << t.length_m << " " << t.depth_m
 		    << " " << t.top_height_m << "\n";
+	if (room)
+		out << "\n# the walls: the floor's corners, x z (m)\n[room]\nmin_m = " << room->min_x_m << " "
+		    << room->min_z_m << "\nmax_m = " << room->max_x_m << " " << room->max_z_m << "\n";
 	if (!out) throw std::runtime_error(path + ": cannot write the plan");
 }
 

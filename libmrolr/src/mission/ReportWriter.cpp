@@ -70,6 +70,7 @@ json dockingJson(const DockingResult& d)
 	          {"reasons_nearest", d.reasons_nearest},
 	          {"candidates", d.candidates},
 	          {"candidates_checked", d.candidates_checked},
+	          {"candidates_near_walls", d.candidates_near_walls},
 	          {"reason", d.reason},
 	          {"compute_seconds", d.compute_s},
 	          {"recognised", d.recognised},

@@ -56,6 +56,7 @@ struct DockingResult
 	std::vector<std::string> reasons_nearest;  ///< why not from the first candidate, if not
 	DockCandidate chosen;
 	int candidates = 0, candidates_checked = 0;
+	int candidates_near_walls = 0;  ///< left out: the base could not turn there (the plan's [room])
 	std::string reason;  ///< why there was no docking pose, or what failed on the way
 	double compute_s = 0;  ///< planning (robot compute, wall s)
 	/** The recognition at the docking pose (C0 there, mm): the grasp is planned on it. */

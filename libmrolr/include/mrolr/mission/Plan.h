@@ -3,8 +3,9 @@
  * as the thesis's waypoint browser (5.6.3) and known-feature files (5.6.2) did. It holds the route
  * (waypoints z x φ), the search stations and home; the known features (position in W with its
  * standard deviations, and the saved patch); and the footprints and heights of the tables the
- * robot drives round and grasps from, measured once by the user. Nothing of the objects on the
- * tables and nothing of the obstacles: those the robot must see. `mrolr-map` makes a plan from a
+ * robot drives round and grasps from, measured once by the user; optionally the room's walls, as
+ * the floor's rectangle on a floor plan. Nothing of the objects on the tables and nothing of the
+ * obstacles: those the robot must see. `mrolr-map` makes a plan from a
  * drive (docs/mission.md "Plan and map"). W: x left, y up, z forward, metres; φ from z towards x.
  *
  * ```
@@ -18,6 +19,9 @@
  * fire_sign = 1.0 1.6 5.99 patches/fire_sign.png 0.004 0.004 0.02   # X Y Z PNG σX σY σZ
  * [known_feature_views]   # optional
  * fire_sign = 0.0 1.0 0.0  # the head centre the patch was saved from, X Y Z
+ * [room]                   # optional: the walls, the floor's corners (x z, m)
+ * min_m = -3 -2
+ * max_m = 3 6
  * [table.main]
  * centre_m = 0.0 1.5      # x z
  * yaw_deg = 0
@@ -54,6 +58,14 @@ struct PlanTable
 	double top_height_m = 0;
 };
 
+/** The floor between the room's walls (W, m): a rectangle along W's axes. */
+struct PlanRoom
+{
+	double min_x_m = 0, min_z_m = 0, max_x_m = 0, max_z_m = 0;
+	/** Distance from @p p_zx to the nearest wall (negative outside the room). */
+	double wallDistance(const Eigen::Vector2d& p_zx) const;
+};
+
 /** A known feature (5.6.2): where the robot mapped it, how well, and the patch it saved. */
 struct PlanFeature
 {
@@ -80,6 +92,7 @@ struct Plan
 	NamedPose home;
 	std::vector<PlanFeature> known_features;
 	std::vector<PlanTable> tables;
+	std::optional<PlanRoom> room;  ///< [room], if the user gave the walls
 
 	/** The waypoint called @p name, or nullptr. */
 	const NamedPose* findWaypoint(const std::string& name) const;
