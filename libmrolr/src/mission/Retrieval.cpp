@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 namespace mrolr::mission
@@ -26,6 +27,18 @@ Eigen::Isometry3d shifted(const Eigen::Isometry3d& T, const Eigen::Vector3d& d_m
 Eigen::Isometry3d preGrasp(const Eigen::Isometry3d& T_GinA, double back_mm)
 {
 	return T_GinA * Eigen::Translation3d(0, 0, -back_mm);
+}
+
+/** The highest point of @p model at @p T_OinA (mm, A's z): its segments' ends and its conics
+ * sampled every 30°. */
+double topInA(const model::WireFrame& model, const Eigen::Isometry3d& T_OinA)
+{
+	double top = -std::numeric_limits<double>::infinity();
+	for (const auto& l : model.lines)
+		top = std::max({top, (T_OinA * l.p1).z(), (T_OinA * l.p2).z()});
+	for (const auto& c : model.conics)
+		for (int k = 0; k < 12; ++k) top = std::max(top, (T_OinA * c.pointAt(k * M_PI / 6)).z());
+	return top;
 }
 
 /** Joint distance for choosing among IK solutions (1 mm of column ~ 1 mrad). */
@@ -121,6 +134,7 @@ std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA,
 
 void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
 {
+
 	arm.moveTo(j.toMmDeg());
 	timeline.advance(o_.retrieval.arm_move_time_s);
 }
@@ -146,6 +160,23 @@ std::optional<std::vector<arm::RtxJoints>> Retrieval::straightPath(const arm::Rt
 		path.push_back(last = *next);
 	}
 	return path;
+}
+
+std::optional<std::vector<arm::RtxJoints>> Retrieval::crossing(const arm::RtxJoints& from,
+                                                                const arm::RtxJoints& to) const
+{
+	const Eigen::Isometry3d T_from = kin_.T06(from), T_to = kin_.T06(to);
+	const double z_from = T_from.translation().z(), z_to = T_to.translation().z();
+	// level pre-grasps (both beside the object) are joined straight: the line stays as far out;
+	// one above the object and one beside it are not (the line would cut through the object)
+	if (std::abs(z_to - z_from) <= kLevel_mm && straightPath(from, to))
+		return std::vector<arm::RtxJoints>{to};
+	const double high = std::max(z_from, z_to) + o_.retrieval.approach_mm;
+	const auto a = solve(shifted(T_from, {0, 0, high - z_from}), from);
+	const auto b = a ? solve(shifted(T_to, {0, 0, high - z_to}), *a) : std::nullopt;
+	if (a && b && straightPath(from, *a) && straightPath(*a, *b) && straightPath(*b, to))
+		return std::vector<arm::RtxJoints>{*a, *b, to};
+	return std::nullopt;
 }
 
 void Retrieval::moveStraight(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
@@ -226,6 +257,15 @@ void Retrieval::closeAndLift(RetrievalResult& r, hw::ArmDevice& arm, Timeline& t
 		                    mm(r.width_lifted_mm) + " apart)");
 }
 
+double Retrieval::swingColumnMm(const RetrievalResult& r, const arm::RtxJoints& above) const
+{
+	// the column and the links move the wrist centre level; the hand reaches d6 from it
+	const Eigen::Isometry3d T = kin_.T06(above);
+	const double wrist_z = T.translation().z() - o_.rtx.d6_mm * T.linear()(2, 2);
+	const double needed = topInA(target_, r.T_OinA) + kSwingClearance_mm + o_.rtx.d6_mm - wrist_z;
+	return above.d1_mm + std::max(0.0, needed);
+}
+
 arm::RtxJoints Retrieval::viewingJoints(const RetrievalResult& r, const arm::RtxJoints& pre) const
 {
 	if (!self_) return pre;
@@ -250,18 +290,22 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 		r.reasons.push_back("no IK solution for the pre-grasp pose");
 		return false;
 	}
-	// come down onto the pre-grasp from above it: the fingers stay clear of the table's edge and
-	// of the neighbours on the way from wherever the arm was
-	if (const auto above = solve(shifted(preGrasp(r.T_GinA, o_.retrieval.approach_mm),
-	                                     {0, 0, o_.retrieval.approach_mm}),
-	                             *pre))
-	{
-		// the swing at the column's height the arm has (or higher), then straight down
-		arm::RtxJoints high = *above;
-		high.d1_mm = std::max(above->d1_mm, arm::RtxJoints::fromMmDeg(arm.joints()).d1_mm);
-		if (high.d1_mm != above->d1_mm) moveTo(arm, high, timeline);
-		moveStraight(arm, *above, timeline);
-	}
+	// come down onto the pre-grasp from above it (or onto the pre-grasp itself when the pose above
+	// it has no solution): the column up first, the swing at a height where the hand clears the
+	// object however the wrist turns on the way, then straight down the column
+	const auto above = solve(shifted(preGrasp(r.T_GinA, o_.retrieval.approach_mm),
+	                                 {0, 0, o_.retrieval.approach_mm}),
+	                         *pre);
+	const arm::RtxJoints& onto = above ? *above : *pre;
+	const arm::RtxJoints now = arm::RtxJoints::fromMmDeg(arm.joints());
+	arm::RtxJoints high = onto;
+	high.d1_mm = std::min(std::max({swingColumnMm(r, onto), now.d1_mm, onto.d1_mm}),
+	                      o_.rtx.d1_top_mm);
+	arm::RtxJoints up = now;
+	up.d1_mm = high.d1_mm;
+	if (up.d1_mm > now.d1_mm) moveTo(arm, up, timeline);
+	moveTo(arm, high, timeline);
+	moveStraight(arm, onto, timeline);
 	if (!o_.retrieval.visual_verification) moveStraight(arm, *pre, timeline);
 	if (o_.retrieval.visual_verification)
 	{
@@ -280,9 +324,8 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 		lookedAgain(r, seen, timeline);
 	}
 	// a corrected grasp is approached along its own axis, from its own pre-grasp
-	if (const auto corrected_pre =
-	        r.correction_applied ? preGraspJoints(r.T_GinA, r.joints) : std::nullopt)
-		moveStraight(arm, *corrected_pre, timeline);
+	if (r.correction_applied)
+		for (const auto& j : r.correction_route) moveStraight(arm, j, timeline);
 	moveStraight(arm, r.joints, timeline);
 	timeline.note("at grasp pose (correction " + mm(r.correction_mm) +
 	              (r.correction_applied ? ", applied)" : ", not applied)"));
@@ -337,6 +380,19 @@ void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
 		timeline.note(r.reasons.back());
 		return;
 	}
+	const auto first_pre = preGraspJoints(r.T_GinA, r.joints);
+	const auto route = first_pre ? crossing(*first_pre, *pre) : std::nullopt;
+	if (!route)
+	{
+		r.reasons.push_back("the verified pre-grasp cannot be reached from the first one on one "
+		                    "arm branch, nor over it; first grasp kept");
+		timeline.note(r.reasons.back());
+		return;
+	}
+	r.correction_route = *route;
+	if (route->size() > 1)
+		timeline.note("the verified pre-grasp is not reached straight from the first: over it "
+		              "(up, across, down)");
 	r.T_GinA = T_GinA, r.joints = *j, r.grasp_turn_deg = turn, r.correction_applied = true;
 	r.T_GinO = graspInObject(turn);
 }

@@ -70,6 +70,9 @@ struct RetrievalResult
 	double correction_deg = 0;
 	bool correction_applied = false;  ///< the grasp used is the verified one
 	bool correction_refused = false;  ///< verified, but beyond max_grasp_correction_mm
+	/** The applied correction's way from the first pre-grasp to the verified one (Retrieval::
+	 * crossing): the verified pre-grasp, or above the first, above the verified, and down. */
+	std::vector<arm::RtxJoints> correction_route;
 	/** The object pose (C0, mm) the grasp was first planned on (recognised, plus any injected
 	 * error) and the one the verification recognised. */
 	Eigen::Isometry3d T_OinC0_first = Eigen::Isometry3d::Identity();
@@ -158,6 +161,19 @@ class Retrieval
 	 * arm would have to change branch on the way (the joint-space move then follows). */
 	std::optional<std::vector<arm::RtxJoints>> straightPath(const arm::RtxJoints& from,
 	                                                        const arm::RtxJoints& to) const;
+	/** From the pre-grasp at joints @p from to the one at @p to: the targets, each reached
+	 * straight from the one before on one arm branch. Two pre-grasps level within kLevel_mm are
+	 * joined straight; otherwise (or when that line has no branch) the hand goes up to
+	 * approach_mm above the higher, across, and down, so the fingers never cut through the
+	 * object between a pre-grasp beside it and one above it. Nothing when neither way exists. */
+	std::optional<std::vector<arm::RtxJoints>> crossing(const arm::RtxJoints& from,
+	                                                    const arm::RtxJoints& to) const;
+	static constexpr double kLevel_mm = 10;
+	/** The column (d1, mm) for the swing to @p above: the wrist centre high enough that the hand,
+	 * d6 from it in any direction, passes kSwingClearance_mm over the object's top (its model at
+	 * T_OinA) while the wrist turns; never below @p above's own. */
+	double swingColumnMm(const RetrievalResult& r, const arm::RtxJoints& above) const;
+	static constexpr double kSwingClearance_mm = 30;
 	static constexpr double kStraightStep_mm = 10;
 	static constexpr double kStraightRadius_mm = 200;  ///< a turn counted as the fingertips' travel
 	const MissionOptions& o_;
