@@ -134,7 +134,6 @@ std::optional<arm::RtxJoints> Retrieval::solve(const Eigen::Isometry3d& T_GinA,
 
 void Retrieval::moveTo(hw::ArmDevice& arm, const arm::RtxJoints& j, Timeline& timeline) const
 {
-
 	arm.moveTo(j.toMmDeg());
 	timeline.advance(o_.retrieval.arm_move_time_s);
 }
