@@ -50,6 +50,7 @@ class MissionApp
 	mission::MissionResult result;
 	nlohmann::json report;           ///< report.json as written
 	std::vector<std::string> files;  ///< outputs written
+	std::vector<std::string> command;  ///< the arguments as given (kept in <out>/run/command.txt)
 	int stop_signal = 0;             ///< SIGINT / SIGTERM that stopped the run, 0 if none
 };
 

@@ -1,4 +1,5 @@
 #include <mrolr/apps/MissionApp.h>
+#include <mrolr/apps/RunConfiguration.h>
 #include <mrolr/apps/SerialEmulation.h>
 #include <mrolr/apps/SimulatedWorld.h>
 #include <mrolr/apps/StopSignals.h>
@@ -105,6 +106,7 @@ mission::PlanOverride planOverride(const std::string& text)
 
 void MissionApp::initialize(const std::vector<std::string>& args)
 {
+	command = args;
 	TCLAP::CmdLine cmd(
 	    "mrolr-mission: navigate, search, recognise, retrieve and return home (docs/mission.md)",
 	    ' ', "1");
@@ -206,6 +208,10 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	mission::MissionDevices devices(options.devices,
 	                                world ? world->devices() : mission::SimDevices{});
 	if (out_dir.empty()) out_dir = "out/" + options.name + "-" + utcStamp();
+	RunInputs run_inputs{config_path, {}, world_path, command};
+	for (const auto& o : overrides)
+		if (!isPlanOverride(o)) run_inputs.sets.push_back(splitOverride(o));
+	const std::string run_config = writeRunConfiguration(run_inputs, options, out_dir);
 	mission::Mission m(options, devices.devices(),
 	                   world ? world->sensors() : mission::SimulatedSensors{});
 	if (!quiet)
@@ -224,6 +230,7 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	const auto truth = world ? std::optional(eval::truthOf(world->lab())) : std::nullopt;
 	auto written = eval::writeMissionOutputs(result, options, truth ? &*truth : nullptr, out_dir);
 	files = written.files, report = written.report;
+	files.push_back(run_config);
 	if (json)
 		out << report.dump(2) << "\n";
 	else
