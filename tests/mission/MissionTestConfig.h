@@ -10,12 +10,22 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 namespace mrolr::mission::test
 {
+/** `<tmp>/mrolr_<name>`, removed if it was there, then created empty (or left absent). */
+inline std::string freshTempDir(const std::string& name, bool create = true)
+{
+	const auto d = std::filesystem::temp_directory_path() / ("mrolr_" + name);
+	std::filesystem::remove_all(d);
+	if (create) std::filesystem::create_directories(d);
+	return d.string();
+}
+
 inline std::string configDir()
 {
 	return std::string(MROLR_SOURCE_DIR) + "/config";

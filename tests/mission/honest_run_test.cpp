@@ -15,14 +15,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string tempDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_honest_run_test_" + name);
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
 bool timelineHas(const mission::MissionResult& r, const std::string& text)
 {
 	for (const auto& e : r.timeline.events())
@@ -34,7 +26,7 @@ bool timelineHas(const mission::MissionResult& r, const std::string& text)
 TEST(HonestRun, ATableTheRobotWasNotToldOfStopsItByTheBumperAndEvalNamesIt)
 {
 	// The plan has no table, and its route runs straight through the lab's.
-	const auto dir = tempDir("collision");
+	const auto dir = mission::test::freshTempDir("honest_run_test_collision");
 	std::ofstream(dir + "/plan.ini") << "[plan]\nroute = W0 T\nstations = W5\nhome = W6\n"
 	                                    "[waypoints]\nW0 = 0 0 0\nT = 2.4 0 0\nW5 = 0.5 0 0\n"
 	                                    "W6 = 0 0 0\n";

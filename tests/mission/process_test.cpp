@@ -25,14 +25,6 @@ namespace
 const std::string kBin = MROLR_BIN_DIR;
 const std::string kRoot = MROLR_SOURCE_DIR;
 
-std::string tempDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_process_test_" + name);
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
 /** The second word of a "name value" line. */
 std::string valueOf(const std::string& line, const std::string& name)
 {
@@ -57,7 +49,7 @@ int removeWorldFiles(const std::string& dir)
 
 TEST(TwoProcesses, TheRobotRunsWithoutTheWorldsFilesAndEvalChecksItFromTJson)
 {
-	const auto tmp = tempDir("two");
+	const auto tmp = mission::test::freshTempDir("process_test_two");
 	fs::create_directories(tmp + "/maps");
 	fs::create_directories(tmp + "/datasets");
 	fs::copy(kRoot + "/maps/lab", tmp + "/maps/lab", fs::copy_options::recursive);
@@ -103,7 +95,7 @@ TEST(TwoProcesses, TheRobotRunsWithoutTheWorldsFilesAndEvalChecksItFromTJson)
 
 TEST(TwoProcesses, ADeadCameraSocketStopsTheMissionSafelyNamingIt)
 {
-	const auto tmp = tempDir("dead_camera");
+	const auto tmp = mission::test::freshTempDir("process_test_dead_camera");
 	test::ChildProcess emulator({kBin + "/mrolr-serial", "emulate", "--sim",
 	                             kRoot + "/config/mission_sim.ini"});
 	const auto base = valueOf(emulator.readLine(30), "base");
@@ -131,7 +123,7 @@ TEST(TwoProcesses, ADeadCameraSocketStopsTheMissionSafelyNamingIt)
 
 TEST(Interrupt, SigintStopsARunningMissionSafelyWithEveryOutputWritten)
 {
-	const auto tmp = tempDir("sigint");
+	const auto tmp = mission::test::freshTempDir("process_test_sigint");
 	test::ChildProcess mission({kBin + "/mrolr-mission", "--config",
 	                            kRoot + "/config/mission_sim.ini", "--out", tmp + "/out",
 	                            "--quiet"});

@@ -17,13 +17,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string tempDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_run_configuration_test_" + name);
-	fs::remove_all(d);
-	return d.string();
-}
-
 nlohmann::json runApp(const std::vector<std::string>& args)
 {
 	apps::MissionApp app;
@@ -44,7 +37,8 @@ std::string text(const fs::path& p)
 
 TEST(RunConfiguration, IsKeptWithTheOutputsAndRunsTheSameMissionAgain)
 {
-	const auto first = tempDir("first"), again = tempDir("again");
+	const auto first = mission::test::freshTempDir("run_configuration_test_first");
+	const auto again = mission::test::freshTempDir("run_configuration_test_again");
 	const auto a = runApp({"mrolr-mission", "--config", mission::test::configDir() + "/mission_sim.ini",
 	                       "--set", "plan.route=W0", "--set", "mission.seed=3", "--out", first,
 	                       "--quiet"});

@@ -21,14 +21,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string tempDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_mission_test_" + name);
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
 /** The lab world without the object @p name, written to a temporary folder. */
 std::string worldWithout(const std::string& name)
 {
@@ -42,7 +34,7 @@ std::string worldWithout(const std::string& name)
 	                       "objects_dir = " + std::string(MROLR_SOURCE_DIR) + "/datasets/objects");
 	text = std::regex_replace(text, std::regex("texture = textures/"),
 	                          "texture = " + std::string(MROLR_SOURCE_DIR) + "/maps/lab/textures/");
-	const auto path = tempDir("absent") + "/world.ini";
+	const auto path = mission::test::freshTempDir("mission_test_absent") + "/world.ini";
 	std::ofstream(path) << text;
 	return path;
 }
@@ -57,7 +49,7 @@ const eval::ObjectTruth& objectNamed(const eval::MissionTruth& t, const std::str
 
 TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 {
-	const auto dir = tempDir("present");
+	const auto dir = mission::test::freshTempDir("mission_test_present");
 	apps::MissionApp app;
 	app.initialize({"mrolr-mission", "--config", mission::test::configDir() + "/mission_sim.ini",
 	                "--out", dir, "--quiet", "--json"});
@@ -176,7 +168,7 @@ TEST(MissionRun, UnreachableObjectIsReportedAndTheArmDoesNotMove)
 
 TEST(MissionRun, MalformedConfigStopsBeforeAnythingMoves)
 {
-	const auto dir = tempDir("malformed");
+	const auto dir = mission::test::freshTempDir("mission_test_malformed");
 	auto text = std::string("[mission]\nname = x\n");
 	std::ofstream(dir + "/bad.ini") << text;
 	apps::MissionApp app;

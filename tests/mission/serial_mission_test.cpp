@@ -64,13 +64,6 @@ struct SerialRig
 	}
 };
 
-std::string tempDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_serial_mission_test_" + name);
-	fs::remove_all(d);
-	return d.string();
-}
-
 int totalResends(const MissionResult& r)
 {
 	int n = 0;
@@ -160,7 +153,7 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 	EXPECT_EQ(r.path.back().device_time_s, rig.lab->simBase().odometry().time_s);
 	EXPECT_FALSE(r.returned_home);
 	// Everything recorded so far is written and reads back.
-	const auto dir = tempDir("arm_hangs");
+	const auto dir = mission::test::freshTempDir("serial_mission_test_arm_hangs", false);
 	eval::writeMissionOutputs(r, rig.o, nullptr, dir);
 	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	EXPECT_FALSE(j["success"].get<bool>());
@@ -214,14 +207,14 @@ TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 	for (const auto& e : r.timeline.events())
 		could_not_stop |= e.text.find("could not command the base to stop") == 0;
 	EXPECT_TRUE(could_not_stop);
-	const auto dir = tempDir("base_hangs");
+	const auto dir = mission::test::freshTempDir("serial_mission_test_base_hangs", false);
 	EXPECT_NO_THROW(eval::writeMissionOutputs(r, rig.o, nullptr, dir));
 	EXPECT_TRUE(io::readRawlog(dir + "/mission.rawlog").empty());
 }
 
 TEST(SerialMission, WithoutTheHardwareTheMissionFailsNamingPortAndKeyBeforeAnythingMoves)
 {
-	const auto dir = tempDir("no_hardware");
+	const auto dir = mission::test::freshTempDir("serial_mission_test_no_hardware", false);
 	apps::MissionApp app;
 	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_hw.ini", "--out",
 	                dir, "--set", "device.base.port=/dev/mrolr-no-such-port"});
@@ -243,7 +236,7 @@ TEST(SerialMission, WithoutTheHardwareTheMissionFailsNamingPortAndKeyBeforeAnyth
 
 TEST(SerialMission, TheAppRunsTheMissionOnEmulatedDevices)
 {
-	const auto dir = tempDir("app");
+	const auto dir = mission::test::freshTempDir("serial_mission_test_app", false);
 	apps::MissionApp app;
 	app.initialize({"mrolr-mission", "--config", test::configDir() + "/mission_sim.ini", "--out",
 	                dir, "--quiet", "--serial-emulation", "--emulate-delay-ms", "1", "--set",

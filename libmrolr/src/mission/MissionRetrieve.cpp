@@ -62,7 +62,6 @@ void Mission::Impl::retrieve()
 			top_height_m = table ? table->top_height_m : 0.0;
 			r.docking.docked_again = true;
 			r.timeline.note("docking again, for the object the sweep found");
-			r.docking.found_again = false;
 			if (table)
 				if (const auto third = dockAndReobserve(retrieval, *table, T_OinW, top_height_m))
 					seen = *third, frame = r.docking.frame;
