@@ -239,7 +239,8 @@ void vehicleNees(json& r, const MissionTruth& t)
 	for (const auto& s : need(need(r, "robot"), "path"))
 	{
 		const double time = need(s, "device_t_s").get<double>();
-		while (k + 1 < t.steps.size() && t.steps[k + 1].time_s <= time + 1e-9) ++k;
+		// 1 µs: a rawlog's timestamps carry the step times to about 0.2 µs (after a replay)
+		while (k + 1 < t.steps.size() && t.steps[k + 1].time_s <= time + 1e-6) ++k;
 		const Eigen::Matrix3d P = mat3(need(s, "P_vv"));
 		if (std::abs(t.steps[k].time_s - time) > 1e-6 || P.determinant() <= 1e-18) continue;
 		Eigen::Vector3d e = vec3(need(s, "estimate")) - t.steps[k].xv_zxphi;

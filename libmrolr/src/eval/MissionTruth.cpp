@@ -81,6 +81,38 @@ MissionTruth truthOf(const sim::Lab& lab)
 	return t;
 }
 
+namespace
+{
+/** Every camera frame's truth: where C0 was and where each object was. */
+json framesJson(const std::vector<sim::TruthLog::Frame>& frames)
+{
+	json out = json::array();
+	for (const auto& f : frames)
+	{
+		json objects = json::object();
+		for (const auto& [name, T] : f.T_OinW) objects[name] = mission::matrix34(T);
+		out.push_back({{"frame", f.frame}, {"T_C0inW", mission::matrix34(f.T_C0inW)}, {"objects", objects}});
+	}
+	return out;
+}
+
+std::vector<sim::TruthLog::Frame> framesFrom(const json& j, const std::string& source)
+{
+	if (!j.is_array()) throw std::runtime_error(source + ": 'frames' is not a list");
+	std::vector<sim::TruthLog::Frame> out;
+	for (const auto& f : j)
+	{
+		sim::TruthLog::Frame fr;
+		fr.frame = field(f, "frame", source).get<uint64_t>();
+		fr.T_C0inW = transform(f, "T_C0inW", source);
+		for (const auto& [name, T] : field(f, "objects", source).items())
+			fr.T_OinW[name] = mission::isometryFrom(T);
+		out.push_back(fr);
+	}
+	return out;
+}
+}  // namespace
+
 json truthJson(const MissionTruth& t)
 {
 	json objects = json::array();
@@ -101,7 +133,8 @@ json truthJson(const MissionTruth& t)
 	        {"on_board", t.on_board},
 	        {"contact", contact},
 	        {"gripper_events", gripperEventsJson(t.gripper_events)},
-	        {"T_C0inA_mm", t.T_C0inA_mm ? mission::matrix34(*t.T_C0inA_mm) : json(nullptr)}};
+	        {"T_C0inA_mm", t.T_C0inA_mm ? mission::matrix34(*t.T_C0inA_mm) : json(nullptr)},
+	        {"frames", framesJson(t.frames)}};
 }
 
 MissionTruth truthFromJson(const json& j, const std::string& source)
@@ -141,6 +174,7 @@ MissionTruth truthFromJson(const json& j, const std::string& source)
 	if (j.contains("gripper_events")) t.gripper_events = gripperEventsFrom(j.at("gripper_events"), source);
 	if (j.contains("T_C0inA_mm") && !j.at("T_C0inA_mm").is_null())
 		t.T_C0inA_mm = transform(j, "T_C0inA_mm", source);
+	if (j.contains("frames")) t.frames = framesFrom(j.at("frames"), source);
 	return t;
 }
 

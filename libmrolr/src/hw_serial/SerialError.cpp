@@ -20,7 +20,7 @@ const char* kindName(SerialDeviceError::Kind kind)
 
 SerialDeviceError::SerialDeviceError(Kind kind, const std::string& device, const std::string& port,
                                      const std::string& what_happened)
-    : std::runtime_error(device + " on " + port + ": " + kindName(kind) + ": " + what_happened),
+    : DeviceFailure(device + " on " + port + ": " + kindName(kind) + ": " + what_happened),
       kind_(kind),
       device_(device),
       port_(port)

@@ -2,6 +2,7 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/hw_serial/SerialError.h>
+#include <mrolr/mission/DecisionLog.h>
 #include <mrolr/mission/Mission.h>
 #include "MissionImpl.h"
 #include <mrolr/mission/MissionStereoHead.h>
@@ -109,7 +110,7 @@ SearchView Mission::Impl::simulatedView(const geometry::HeadAngles& angles)
 		{
 			grabStereo();
 		}
-		catch (const hw::SerialDeviceError&)
+		catch (const hw::DeviceFailure&)
 		{
 			throw;  // the head stopped answering: the mission stops
 		}
@@ -144,7 +145,10 @@ void Mission::Impl::navigate()
 	nav->on_step = [this](const PathSample& s)
 	{
 		if (progress && *progress) (*progress)(r.timeline.stage(), s);
+		if (decisions) decisions->estimate(s);
 	};
+	if (decisions)
+		nav->on_measurement = [this](const vision::CycleRecord& c) { decisions->measurement(c); };
 	nav->stop_requested = [this] { return stop_flag && stop_flag->load(); };
 	if (o.obstacle_mode) attachObstacleMode();
 	r.navigation_source = o.navigation.landmark_sensor;
@@ -171,6 +175,7 @@ bool Mission::Impl::searchStation(const NamedPose& station)
 	r.search_xv_estimate = nav->estimate();
 	r.timeline.note(station.name + ": " + (r.search.found ? "found" : "not found"));
 	if (r.search.found) r.found_at_station = station.name;
+	if (r.search.found && decisions) decisions->recognised(r.search, r.search_xv_estimate, target);
 	return r.search.found;
 }
 
@@ -262,6 +267,8 @@ MissionResult Mission::run()
 	auto& m = *impl_;
 	m.progress = &on_progress;
 	m.stop_flag = stop_flag;
+	m.decisions = decisions;
+	if (decisions) m.r.timeline.on_note = [this](const TimelineEvent& e) { decisions->note(e); };
 	m.r.target = m.o.target;
 	try
 	{
@@ -278,7 +285,12 @@ MissionResult Mission::run()
 		m.r.collision_estimate = e.estimate_zxphi;
 		m.stopSafely(e.what());
 	}
-	catch (const hw::SerialDeviceError& e)
+	catch (const hw::ReplayDivergence& e)
+	{  // a replay asked for what its recording does not hold: stop there, naming it
+		m.r.divergence = e.what();
+		m.stopSafely(e.what());
+	}
+	catch (const hw::DeviceFailure& e)
 	{  // a device stopped answering: stop where we are, keep what was recorded
 		m.stopSafely(e.what());
 	}

@@ -26,6 +26,7 @@ struct Mission::Impl
 	std::unique_ptr<SelfModel> self;               ///< the arm in the head's view
 	std::function<void(const std::string&, const PathSample&)>* progress = nullptr;
 	std::atomic<bool>* stop_flag = nullptr;
+	DecisionLog* decisions = nullptr;
 	bool render_failed = false;
 	hw::ArmJoints parked{};  ///< the arm's joints when the mission began: where it parks
 

@@ -2,6 +2,7 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/geometry/GeometryError.h>
 #include "MissionImpl.h"
+#include <mrolr/mission/DecisionLog.h>
 
 #include <chrono>
 #include <cmath>
@@ -74,6 +75,7 @@ void Mission::Impl::retrieve()
 	if (o.dock_calibration.enabled && may_grasp) calibrateDock(retrieval, T_OinC0_mm, top_height_m);
 	r.retrieval = retrieval.run(seen, top_height_m, *dev.arm, reobserve, r.timeline);
 	r.retrieval.frame = frame;
+	if (decisions) decisions->graspPlanned(r.retrieval);
 	r.retrieved = r.retrieval.retrieved;
 	if (!r.retrieval.feasible) r.failure = "grasp not feasible: " + r.retrieval.reasons.front();
 	if (!r.retrieval.feasible && r.docking.needed && !r.docking.planned)

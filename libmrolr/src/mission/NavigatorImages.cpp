@@ -21,6 +21,7 @@ void Navigator::measureInImages(const base::WheelControl& u)
 	for (const auto& rec : records)
 	{
 		for (const auto& f : rec.deleted) timeline_.note("feature " + f + " deleted (rule 5.7)");
+		if (on_measurement) on_measurement(rec);
 		if (!rec.measured) continue;
 		timeline_.advance(o_.navigation.measurement_time_s);
 		++image_cycles;

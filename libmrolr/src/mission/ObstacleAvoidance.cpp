@@ -135,7 +135,7 @@ std::vector<Eigen::Vector2d> ObstacleAvoidance::check(const Eigen::Vector3d& xv,
 		report_.events.push_back(e);
 		return e.via_zx_inW;
 	}
-	catch (const hw::SerialDeviceError&)
+	catch (const hw::DeviceFailure&)
 	{
 		throw;  // the head stopped answering: the mission stops
 	}

@@ -275,6 +275,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 	          {"failure", r.failure},
 	          {"stopped", r.stopped},
 	          {"interrupted", r.interrupted},
+	          {"replay_divergence", r.divergence.empty() ? json(nullptr) : json(r.divergence)},
 	          {"serial_links", linksJson(r.links)},
 	          {"target", r.target},
 	          {"plan", o.plan_file},

@@ -27,6 +27,7 @@ void Timeline::endStage()
 void Timeline::note(const std::string& text)
 {
 	events_.push_back({simulated_s_, stage_, text});
+	if (on_note) on_note(events_.back());
 }
 
 }  // namespace mrolr::mission

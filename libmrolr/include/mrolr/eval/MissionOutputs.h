@@ -1,8 +1,9 @@
 #pragma once
 /** A run's outputs in out/<mission>-<timestamp>/ (docs/mission.md "Outputs"): report.json,
- * report.md, trajectory.png, mission.3Dscene and mission.rawlog. The robot's part comes from
+ * report.md, trajectory.png and mission.3Dscene (mission.rawlog is written while the mission runs,
+ * mission/DeviceRecorder.h). The robot's part comes from
  * mission::reportJson; with the world's truth (in-process runs) eval adds its checks, the true
- * path, the room and the objects to the pictures, and GROUND_TRUTH records to the rawlog. Without
+ * path, the room and the objects to the pictures. Without
  * it (the robot in its own process) the pictures show what the robot knew. */
 #include <mrolr/eval/MissionTruth.h>
 #include <mrolr/mission/Mission.h>
@@ -29,10 +30,6 @@ void writeTrajectoryPng(const mission::MissionResult& r, const mission::MissionO
  * recognised model where the robot believed it was, and the arm at its grasp (.3Dscene). */
 void writeScene3D(const mission::MissionResult& r, const mission::MissionOptions& o,
                   const MissionTruth* truth, const std::string& path);
-/** The run as an MRPT rawlog (io::RawlogWriter): odometry per step, the stereo pairs in time
- * order, and GROUND_TRUTH where @p truth knows the step. */
-void writeRawlog(const mission::MissionResult& r, const mission::MissionOptions& o,
-                 const MissionTruth* truth, const std::string& path);
 /** Writes everything into @p dir (created); evaluates the report when @p truth is given. */
 WrittenOutputs writeMissionOutputs(const mission::MissionResult& r,
                                    const mission::MissionOptions& o, const MissionTruth* truth,

@@ -50,8 +50,8 @@ struct MissionTruth
 MissionTruth truthOf(const sim::Lab& lab);
 /** T.json: `{"vehicle": {"z_m", "x_m", "phi_deg"}, "objects": [{"name", "model", "T_OinW",
  * "T_OinW_start"}], "held": NAME or null, "on_board": [NAME…], "contact": {"what", "z_m", "x_m"} or null,
- * "gripper_events": [{"kind", "object", "detail"}]}` ("on_board" and "gripper_events" optional
- * on reading). */
+ * "gripper_events": [{"kind", "object", "detail"}], "frames": [{"frame", "T_C0inW", "objects":
+ * {NAME: T_OinW}}]}` ("on_board", "gripper_events" and "frames" optional on reading). */
 nlohmann::json truthJson(const MissionTruth& t);
 /** The gripper's events as a JSON list of {"kind", "object", "detail"}. */
 nlohmann::json gripperEventsJson(const std::vector<sim::GripperEvent>& events);

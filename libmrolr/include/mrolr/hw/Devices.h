@@ -15,6 +15,24 @@
 
 namespace mrolr::hw
 {
+/** A device can no longer answer: the mission stops where it is, keeping what it recorded. The
+ * serial drivers throw it when a line goes dead (hw_serial/SerialError.h), a replayed recording
+ * when it has no answer for the request (ReplayDivergence). */
+class DeviceFailure : public std::runtime_error
+{
+ public:
+	using std::runtime_error::runtime_error;
+};
+
+/** A replay was asked for something its recording does not hold (docs/mission.md "Replay"): what()
+ * names the call (its index and device time), the device and the request asked for, and what the
+ * recording has there. A replay never invents an answer. */
+class ReplayDivergence : public DeviceFailure
+{
+ public:
+	using DeviceFailure::DeviceFailure;
+};
+
 /** Odometry of the base: the pose integrated from the wheel encoders, and the raw encoder counts.
  */
 struct Odometry

@@ -1,6 +1,8 @@
 #pragma once
 /** The error a serial driver throws when its device cannot be talked to. */
 
+#include <mrolr/hw/Devices.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -15,7 +17,7 @@ class TransportClosed : public std::runtime_error
 
 /** A serial device failed: what() reads "<device> on <port>: <what happened>", e.g.
  * "device.base on /dev/pts/3: timeout: no reply after 4 attempts of 200 ms (command STEP)". */
-class SerialDeviceError : public std::runtime_error
+class SerialDeviceError : public DeviceFailure
 {
  public:
 	enum class Kind

@@ -21,6 +21,8 @@
 
 namespace mrolr::mission
 {
+class DecisionLog;
+
 /** A serial link's counters, for the report. */
 struct LinkReport
 {
@@ -78,6 +80,9 @@ struct MissionResult
 	bool stopped = false;
 	bool interrupted = false;  ///< stopped by SIGINT or SIGTERM
 	bool collided = false;     ///< stopped by the bumper
+	/** A replay (DevicePlayback) stopped at its first divergence: the call, device and request
+	 * the recording does not hold. Empty otherwise. */
+	std::string divergence;
 	Eigen::Vector3d collision_estimate = Eigen::Vector3d::Zero();  ///< where it believed it was
 	std::vector<LinkReport> links;  ///< serial devices: port and resends
 	std::string target, found_at_station;
@@ -125,6 +130,8 @@ class Mission
 	std::function<void(const std::string& stage, const PathSample&)> on_progress;
 	/** Set (from a signal handler) to stop the mission safely before its next motion. */
 	std::atomic<bool>* stop_flag = nullptr;
+	/** Where the decisions go as they are made (a recording, DeviceRecorder); may be null. */
+	DecisionLog* decisions = nullptr;
 
  private:
 	struct Impl;

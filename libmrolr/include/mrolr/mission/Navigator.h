@@ -109,6 +109,9 @@ class Navigator
 	const std::vector<NisRecord>& nis() const { return nis_; }
 	/** Called after every step with the sample just recorded (progress, rawlog). */
 	std::function<void(const PathSample&)> on_step;
+	/** Called with each navigation measurement from images (the feature, its search regions, the
+	 * match, accepted or refused), for a recording. */
+	std::function<void(const vision::CycleRecord&)> on_measurement;
 	/** Obstacle mode (thesis 5.8.1.2, ObstacleAvoidance.h): called before every translation step
 	 * with the estimate and the leg's goal (z, x, φ in W); returns waypoints (z, x in W) to drive
 	 * through first, empty when the way is clear. Unset: no checks. */

@@ -3,6 +3,7 @@
  * compute time (filter, recognition, planning, IK) and the simulator's time, kept apart as the
  * issue asks; and a timeline of events with their simulated time. */
 #include <chrono>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -36,6 +37,8 @@ class Timeline
 	const std::map<std::string, double>& stageSeconds() const { return stage_s_; }
 	const std::map<std::string, double>& stageComputeSeconds() const { return stage_compute_s_; }
 	void note(const std::string& text);
+	/** Called with each note as it is made (a recording's decisions). */
+	std::function<void(const TimelineEvent&)> on_note;
 	const std::vector<TimelineEvent>& events() const { return events_; }
 
  private:

@@ -1,10 +1,14 @@
 #include <mrolr/apps/MissionApp.h>
+#include <mrolr/apps/MissionRecording.h>
+#include "MissionSummary.h"
 #include <mrolr/apps/RunConfiguration.h>
 #include <mrolr/apps/SerialEmulation.h>
 #include <mrolr/apps/SimulatedWorld.h>
 #include <mrolr/apps/StopSignals.h>
 #include <mrolr/apps/TclapSupport.h>
 #include <mrolr/eval/MissionOutputs.h>
+#include <mrolr/eval/MissionTruth.h>
+#include <mrolr/mission/DeviceRecorder.h>
 #include <mrolr/mission/MissionDevices.h>
 #include <mrolr/util/Config.h>
 
@@ -23,6 +27,8 @@ namespace mrolr::apps
 namespace
 {
 using nlohmann::json;
+using summary::attachProgress;
+using summary::printSummary;
 
 std::string utcStamp()
 {
@@ -32,46 +38,6 @@ std::string utcStamp()
 	std::ostringstream s;
 	s << std::put_time(&tm, "%Y%m%d-%H%M%S");
 	return s.str();
-}
-
-std::string num(const json& v, int precision = 3)
-{
-	if (!v.is_number()) return "n/a";
-	std::ostringstream s;
-	s << std::fixed << std::setprecision(precision) << v.get<double>();
-	return s.str();
-}
-
-void printSummary(std::ostream& out, const json& r, const std::string& dir)
-{
-	const json& e = r["eval"];
-	out << "mission " << (r["success"].get<bool>() ? "SUCCEEDED" : "FAILED")
-	    << (r["failure"].get<std::string>().empty() ? "" : ": " + r["failure"].get<std::string>())
-	    << "\n  robot: target " << r["target"].get<std::string>()
-	    << (r["found"].get<bool>() ? " found at " + r["found_at_station"].get<std::string>()
-	                               : " not found")
-	    << ", has it " << (!r["retrieved"].get<bool>() ? "no"
-	                       : r["robot"].value("on_board", false) ? "yes (on its deck)"
-	                                                               : "yes (in its gripper)")
-	    << ", home "
-	    << (r["returned_home"].get<bool>() ? "yes" : "no") << " (its estimate "
-	    << num(r["robot"]["home_estimate_error_m"]) << " m from home)\n";
-	if (!e.is_null())
-		out << "  eval: home error " << num(r["final_position_error_m"]) << " m, object "
-		    << (e["object_on_board"].get<bool>() ? "on the deck"
-		        : e["object_held"].get<bool>() ? "in the gripper"
-		                                       : "not retrieved")
-		    << ", object pose error "
-		    << num(r["object_translation_error_mm"]) << " mm, "
-		    << num(r["object_rotation_error_deg"]) << " deg\n";
-	out << "  navigation from " << r["navigation_source"].get<std::string>() << ": "
-	    << r["navigation_pairs"] << " stereo pairs, NIS inside 95 % bounds "
-	    << num(r["nis"]["fraction_inside_95"], 2) << "\n";
-	for (const auto& l : r["serial_links"])
-		out << "  serial " << l["device"].get<std::string>() << " on "
-		    << l["port"].get<std::string>() << ": " << l["resends"] << " resends\n";
-	out << "  simulated " << num(r["simulated_seconds"], 1) << " s, robot compute "
-	    << num(r["compute_seconds"]) << " s\n  outputs in " << dir << "\n";
 }
 
 /** "section.key=value" → (section, key, value); the key is after the last '.' before '='. */
@@ -124,6 +90,11 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 	TCLAP::MultiArg<std::string> set(
 	    "", "set", "override a key of the mission file, or of the plan with plan.[SECTION.]KEY", false,
 	    "SECTION.KEY=VALUE", cmd);
+	TCLAP::ValueArg<std::string> replay(
+	    "", "replay",
+	    "run the robot side on this recording (mission.rawlog) instead of devices, with the run's "
+	    "configuration (its run/mission.ini unless --config)",
+	    false, "", "RAWLOG", cmd);
 	TCLAP::SwitchArg emu("", "serial-emulation",
 	                     "serve the simulated devices on pseudo-terminals and drive them through "
 	                     "the serial drivers",
@@ -138,7 +109,11 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 		help_shown = true;
 		return;
 	}
-	config_path = util::projectFile(cfg.getValue());
+	replay_path = replay.getValue();
+	config_path = replay_path.empty() || cfg.isSet() ? util::projectFile(cfg.getValue()) : "";
+	if (!replay_path.empty() && (world.isSet() || emu.getValue()))
+		throw util::UsageError("--replay runs on the recording alone: it takes no --world and no "
+		                       "--serial-emulation");
 	plan_path = plan.getValue();
 	world_path = world.getValue();
 	out_dir = out.getValue();
@@ -192,6 +167,7 @@ mission::MissionOptions MissionApp::loadOptions() const
 int MissionApp::run(std::ostream& out, std::ostream& progress)
 {
 	if (help_shown) return 0;
+	if (!replay_path.empty()) return replay(out, progress);
 	StopSignals signals;  // from the start: a stop before the mission moves is still a safe stop
 	options = loadOptions();
 	const auto cfg = openWithOverrides(config_path, overrides);
@@ -212,24 +188,31 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	for (const auto& o : overrides)
 		if (!isPlanOverride(o)) run_inputs.sets.push_back(splitOverride(o));
 	const std::string run_config = writeRunConfiguration(run_inputs, options, out_dir);
-	mission::Mission m(options, devices.devices(),
+	const std::string rawlog = (std::filesystem::path(out_dir) / "mission.rawlog").string();
+	mission::DeviceRecorder recorder(rawlog, devices.devices(),
+	                                 geometry::BiSightHead(options.bisight));
+	if (world)
+	{  // the world side's truth, beside what the robot recorded (a replay never reads it)
+		recorder.after_step = truthRecorder(world->lab());
+		recorder.after_step(recorder.log());
+	}
+	mission::Mission m(options, recorder.devices(),
 	                   world ? world->sensors() : mission::SimulatedSensors{});
-	if (!quiet)
-		m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
-		{
-			progress << "\r[mission] " << std::setw(12) << std::left << stage << " t=" << std::fixed
-			         << std::setprecision(0) << std::setw(5) << s.time_s
-			         << " s  z=" << std::setprecision(2) << s.estimate.x()
-			         << " x=" << s.estimate.y() << " features=" << s.features << "   "
-			         << std::flush;
-		};
-	m.stop_flag = &signals.flag();
+	if (!quiet) attachProgress(m, progress);
+	m.stop_flag = &recorder.stopFlag(&signals.flag());
+	m.decisions = &recorder;
 	result = m.run();
 	stop_signal = signals.received();
 	if (!quiet) progress << "\n";
 	const auto truth = world ? std::optional(eval::truthOf(world->lab())) : std::nullopt;
 	auto written = eval::writeMissionOutputs(result, options, truth ? &*truth : nullptr, out_dir);
 	files = written.files, report = written.report;
+	files.push_back(rawlog);
+	if (truth)
+	{
+		files.push_back((std::filesystem::path(out_dir) / "truth.json").string());
+		std::ofstream(files.back()) << eval::truthJson(*truth).dump(2) << "\n";
+	}
 	files.push_back(run_config);
 	if (json)
 		out << report.dump(2) << "\n";

@@ -1,0 +1,21 @@
+#pragma once
+// mrolr-mission's summary lines and progress line, shared by a run and a replay.
+#include <mrolr/mission/Mission.h>
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <string>
+
+namespace mrolr::apps::summary
+{
+using nlohmann::json;
+
+/** @p v with @p precision decimals, "n/a" when it is not a number. */
+std::string num(const json& v, int precision = 3);
+/** The run's summary lines from its report. */
+void printSummary(std::ostream& out, const json& r, const std::string& dir);
+/** The progress line on @p progress while @p m runs. */
+void attachProgress(mission::Mission& m, std::ostream& progress);
+
+}  // namespace mrolr::apps::summary

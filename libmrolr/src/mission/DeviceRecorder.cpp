@@ -1,0 +1,203 @@
+// Recording devices: each call goes to the device, then (answer or fault) into mission.rawlog.
+#include "DeviceRecorderImpl.h"
+
+namespace mrolr::mission
+{
+namespace
+{
+using Impl = DeviceRecorder::Impl;
+/** Pairs kept for the decisions' pictures: a whole sweep's views. */
+constexpr size_t kRecentPairs = 32;
+
+class RecordingBase : public hw::BaseDevice
+{
+ public:
+	explicit RecordingBase(Impl& r) : r_(r) {}
+	void step(const base::WheelControl& u) override
+	{
+		DeviceCall c{CallKind::BaseStep, {u.v1_mps, u.v2_mps, u.dt_s}};
+		r_.call(c, [&] { r_.dev.base->step(u); });
+		if (*r_.after_step) (*r_.after_step)(r_.log);
+	}
+	hw::Odometry odometry() const override
+	{
+		DeviceCall c{CallKind::BaseOdometry};
+		hw::Odometry o;
+		r_.call(c,
+		        [&]
+		        {
+			        o = r_.dev.base->odometry();
+			        r_.clock_s = o.time_s;
+			        c.answer = {o.xv_zxphi[0],        o.xv_zxphi[1],       o.xv_zxphi[2],
+			                    double(o.ticks_right), double(o.ticks_left), o.time_s,
+			                    o.bumper ? 1.0 : 0.0};
+		        });
+		r_.odometryObservations(o);
+		return o;
+	}
+
+ private:
+	Impl& r_;
+};
+
+std::vector<double> anglesOf(const geometry::HeadAngles& a)
+{
+	return {a.pan, a.tilt, a.verg_left, a.verg_right};
+}
+
+class RecordingHead : public hw::HeadDevice
+{
+ public:
+	explicit RecordingHead(Impl& r) : r_(r) {}
+	double moveTo(const geometry::HeadAngles& target) override
+	{
+		DeviceCall c{CallKind::HeadMove, anglesOf(target)};
+		double settle = 0;
+		r_.call(c,
+		        [&]
+		        {
+			        settle = r_.dev.head->moveTo(target);
+			        c.answer = {settle};
+		        });
+		return settle;
+	}
+	geometry::HeadAngles angles() const override
+	{
+		DeviceCall c{CallKind::HeadAngles};
+		geometry::HeadAngles a;
+		r_.call(c,
+		        [&]
+		        {
+			        a = r_.dev.head->angles();
+			        c.answer = anglesOf(a);
+		        });
+		return a;
+	}
+	hw::StereoImages grab() override
+	{
+		DeviceCall c{CallKind::HeadGrab};
+		hw::StereoImages p;
+		r_.call(c,
+		        [&]
+		        {
+			        p = r_.dev.head->grab();
+			        r_.clock_s = std::max(r_.clock_s, p.time_s);
+			        c.answer = anglesOf(p.angles);
+			        c.answer.insert(c.answer.end(), {p.time_s, double(p.frame)});
+			        c.images = p;
+		        });
+		r_.recent.push_back(p);
+		if (r_.recent.size() > kRecentPairs) r_.recent.pop_front();
+		return p;
+	}
+
+ private:
+	Impl& r_;
+};
+
+class RecordingArm : public hw::ArmDevice
+{
+ public:
+	explicit RecordingArm(Impl& r) : r_(r) {}
+	void moveTo(const hw::ArmJoints& j) override
+	{
+		DeviceCall c{CallKind::ArmMove, {j.begin(), j.end()}};
+		r_.call(c, [&] { r_.dev.arm->moveTo(j); });
+	}
+	hw::ArmJoints joints() const override
+	{
+		DeviceCall c{CallKind::ArmJoints};
+		hw::ArmJoints j{};
+		r_.call(c,
+		        [&]
+		        {
+			        j = r_.dev.arm->joints();
+			        c.answer.assign(j.begin(), j.end());
+		        });
+		return j;
+	}
+	void setGripper(bool closed) override
+	{
+		DeviceCall c{CallKind::ArmGripper, {closed ? 1.0 : 0.0}};
+		r_.call(c, [&] { r_.dev.arm->setGripper(closed); });
+	}
+	bool gripperClosed() const override
+	{
+		return flag(CallKind::ArmGripperClosed, [this] { return r_.dev.arm->gripperClosed(); });
+	}
+	double gripperWidthMm() const override
+	{
+		DeviceCall c{CallKind::ArmGripperWidth};
+		double w = 0;
+		r_.call(c,
+		        [&]
+		        {
+			        w = r_.dev.arm->gripperWidthMm();
+			        c.answer = {w};
+		        });
+		return w;
+	}
+	void dock(bool docked) override
+	{
+		DeviceCall c{CallKind::ArmDock, {docked ? 1.0 : 0.0}};
+		r_.call(c, [&] { r_.dev.arm->dock(docked); });
+	}
+	bool docked() const override
+	{
+		return flag(CallKind::ArmDocked, [this] { return r_.dev.arm->docked(); });
+	}
+
+ private:
+	template <typename F>
+	bool flag(CallKind kind, F&& read) const
+	{
+		DeviceCall c{kind};
+		bool v = false;
+		r_.call(c,
+		        [&]
+		        {
+			        v = read();
+			        c.answer = {v ? 1.0 : 0.0};
+		        });
+		return v;
+	}
+	Impl& r_;
+};
+}  // namespace
+
+DeviceRecorder::DeviceRecorder(const std::string& rawlog_path, RobotDevices devices,
+                               const geometry::BiSightHead& head)
+    : impl_(std::make_unique<Impl>(rawlog_path, std::move(devices), head))
+{
+	if (!impl_->dev.base || !impl_->dev.head || !impl_->dev.arm)
+		throw std::invalid_argument("DeviceRecorder: every device (base, head, arm) must be given");
+	impl_->after_step = &after_step;
+	impl_->base = std::make_unique<RecordingBase>(*impl_);
+	impl_->head_device = std::make_unique<RecordingHead>(*impl_);
+	impl_->arm = std::make_unique<RecordingArm>(*impl_);
+}
+
+DeviceRecorder::~DeviceRecorder() = default;
+
+RobotDevices DeviceRecorder::devices()
+{
+	return {impl_->base.get(), impl_->head_device.get(), impl_->arm.get(), impl_->dev.links};
+}
+
+std::atomic<bool>& DeviceRecorder::stopFlag(std::atomic<bool>* signal)
+{
+	impl_->signal = signal;
+	return impl_->gate;
+}
+
+io::ObservationLogWriter& DeviceRecorder::log()
+{
+	return impl_->log;
+}
+
+size_t DeviceRecorder::calls() const
+{
+	return impl_->calls;
+}
+
+}  // namespace mrolr::mission
