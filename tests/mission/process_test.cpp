@@ -8,7 +8,7 @@
 
 #include <mrolr/apps/EvalApp.h>
 #include <mrolr/apps/MissionApp.h>
-#include <mrolr/io/Rawlog.h>
+#include <mrolr/io/ObservationLog.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -24,6 +24,23 @@ namespace
 {
 const std::string kBin = MROLR_BIN_DIR;
 const std::string kRoot = MROLR_SOURCE_DIR;
+
+/** The report of `mrolr-mission --replay RAWLOG` (its outputs beside the recording). */
+nlohmann::json replay(const std::string& rawlog)
+{
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--replay", rawlog, "--quiet"});
+	std::ostringstream out, progress;
+	app.run(out, progress);
+	return app.report;
+}
+
+size_t countLabel(const std::string& rawlog, const std::string& label)
+{
+	size_t n = 0;
+	for (const auto& o : io::readObservationLog(rawlog).observations) n += o->sensorLabel == label;
+	return n;
+}
 
 /** The second word of a "name value" line. */
 std::string valueOf(const std::string& line, const std::string& name)
@@ -118,7 +135,11 @@ TEST(TwoProcesses, ADeadCameraSocketStopsTheMissionSafelyNamingIt)
 	EXPECT_TRUE(app.result.stopped);
 	EXPECT_NE(app.result.failure.find("device."), std::string::npos) << app.result.failure;
 	EXPECT_TRUE(fs::exists(tmp + "/out/report.json"));
-	EXPECT_NO_THROW(io::readRawlog(tmp + "/out/mission.rawlog"));
+	// the recording replays up to the fault and stops there, for the same reason
+	const auto replayed = replay(tmp + "/out/mission.rawlog");
+	EXPECT_TRUE(replayed["stopped"].get<bool>());
+	EXPECT_EQ(replayed["failure"].get<std::string>(), app.result.failure);
+	EXPECT_TRUE(replayed["replay"]["divergence"].is_null()) << replayed["replay"];
 }
 
 TEST(Interrupt, SigintStopsARunningMissionSafelyWithEveryOutputWritten)
@@ -140,7 +161,45 @@ TEST(Interrupt, SigintStopsARunningMissionSafelyWithEveryOutputWritten)
 	EXPECT_TRUE(base_stopped);
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene"})
 		EXPECT_TRUE(fs::exists(tmp + "/out/" + f)) << f;
-	const auto records = io::readRawlog(tmp + "/out/mission.rawlog");
-	EXPECT_EQ(records.size(), j["steps"].get<size_t>() + j["stereo_pairs"].get<size_t>());
-	EXPECT_GT(records.size(), 0u);
+	// every pair the robot saw is in the recording, and the stop replays at the same call
+	EXPECT_EQ(countLabel(tmp + "/out/mission.rawlog", "BISIGHT"),
+	          j["stereo_pairs"].get<size_t>() + j["navigation_pairs"].get<size_t>());
+	const auto replayed = replay(tmp + "/out/mission.rawlog");
+	EXPECT_TRUE(replayed["interrupted"].get<bool>());
+	EXPECT_EQ(replayed["failure"], j["failure"]);
+	EXPECT_EQ(replayed["robot"]["final_estimate_zxphi"], j["robot"]["final_estimate_zxphi"]);
+	EXPECT_EQ(replayed["replay"]["differences"], nlohmann::json::array()) << replayed["replay"];
+}
+
+TEST(Recording, AMissionKilledMidRunLeavesARawlogReadableUpToItsLastRecord)
+{
+	const auto tmp = mission::test::freshTempDir("process_test_sigkill");
+	const auto rawlog = tmp + "/out/mission.rawlog";
+	test::ChildProcess mission({kBin + "/mrolr-mission", "--config",
+	                            kRoot + "/config/mission_sim.ini", "--out", tmp + "/out",
+	                            "--quiet"});
+	// killed while it drives, once it has recorded some stereo pairs
+	const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+	while ((!fs::exists(rawlog) || fs::file_size(rawlog) < 100000) &&
+	       std::chrono::steady_clock::now() < deadline)
+		std::this_thread::sleep_for(std::chrono::milliseconds(20));
+	mission.signal(SIGKILL);
+	mission.wait(30);
+	ASSERT_GE(fs::file_size(rawlog), 100000u);
+	EXPECT_FALSE(fs::exists(tmp + "/out/report.json")) << "killed before its end";
+	const auto log = io::readObservationLog(rawlog);
+	EXPECT_GT(log.observations.size(), 100u);
+	// MRPT's own tool reads it too, to the same last record
+	const std::string info = tmp + "/info.txt";
+	ASSERT_EQ(std::system(("rawlog-edit --info -i " + rawlog + " > " + info + " 2>&1").c_str()), 0);
+	std::stringstream s;
+	s << std::ifstream(info).rdbuf();
+	EXPECT_NE(s.str().find("Overall number of objects         : " +
+	                       std::to_string(log.observations.size())),
+	          std::string::npos)
+	    << s.str();
+	// and the replay runs up to there and says where the recording ends
+	const auto replayed = replay(rawlog);
+	EXPECT_NE(replayed["replay"]["divergence"].get<std::string>().find("after the recording's last call"),
+	          std::string::npos);
 }

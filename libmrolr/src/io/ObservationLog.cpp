@@ -6,6 +6,7 @@
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cctype>
 #include <filesystem>
 #include <stdexcept>
 
@@ -46,6 +47,39 @@ mrpt::img::CImage ObservationLogWriter::external(const mrpt::img::CImage& img,
 	return e;
 }
 
+mrpt::obs::CObservationComment::Ptr labelledComment(const std::string& label,
+                                                    const std::string& text,
+                                                    mrpt::Clock::time_point stamp)
+{
+	auto c = mrpt::obs::CObservationComment::Create();
+	c->sensorLabel = label;
+	c->timestamp = stamp;
+	c->text = label + "\n" + text;
+	return c;
+}
+
+namespace
+{
+/** The first line of an MRPT exception's text (without its call stack). */
+std::string mrptMessageOf(const std::string& what)
+{
+	return what.substr(0, what.find('\n'));
+}
+
+/** A labelledComment's label and text back apart. */
+void restoreLabel(mrpt::obs::CObservationComment& c)
+{
+	const auto nl = c.text.find('\n');
+	if (!c.sensorLabel.empty() || nl == std::string::npos || nl == 0) return;
+	for (size_t i = 0; i < nl; ++i)
+		if (!(std::isupper(static_cast<unsigned char>(c.text[i])) ||
+		      std::isdigit(static_cast<unsigned char>(c.text[i])) || c.text[i] == '_'))
+			return;
+	c.sensorLabel = c.text.substr(0, nl);
+	c.text = c.text.substr(nl + 1);
+}
+}  // namespace
+
 ObservationLog readObservationLog(const std::string& path)
 {
 	mrpt::io::CFileGZInputStream file;
@@ -64,6 +98,9 @@ ObservationLog readObservationLog(const std::string& path)
 		}
 		catch (const std::exception& e)
 		{
+			if (log.observations.empty())
+				throw std::runtime_error(path + ": not a rawlog (its first record is unreadable: " +
+				                         mrptMessageOf(e.what()) + ")");
 			log.torn = "record " + std::to_string(log.observations.size()) + " at byte " +
 			           std::to_string(at) + " of " + std::to_string(size) +
 			           " is incomplete or unreadable";
@@ -74,6 +111,7 @@ ObservationLog readObservationLog(const std::string& path)
 			throw std::runtime_error(path + ": record " + std::to_string(log.observations.size()) +
 			                         " is a " + obj->GetRuntimeClass()->className +
 			                         ", not an observation (not an observations-only rawlog)");
+		if (auto c = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(obs)) restoreLabel(*c);
 		log.observations.push_back(std::move(obs));
 	}
 	return log;

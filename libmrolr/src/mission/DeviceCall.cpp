@@ -170,11 +170,8 @@ std::vector<mrpt::obs::CObservation::Ptr> observationsOf(const DeviceCall& c, si
 	if (c.images) out.push_back(stereoOf(c, index, head, log));
 	if (c.fault)
 	{
-		auto f = mrpt::obs::CObservationComment::Create();
-		f->sensorLabel = kFaultLabel;
-		f->timestamp = stamp(c.time_s);
-		f->text = c.fault->type + "\n" + c.fault->message;
-		out.push_back(f);
+		out.push_back(io::labelledComment(kFaultLabel, c.fault->type + "\n" + c.fault->message,
+		                                  stamp(c.time_s)));
 	}
 	auto daq = mrpt::obs::CObservationRawDAQ::Create();
 	daq->sensorLabel = labelOf(c.kind);

@@ -27,7 +27,7 @@ class RecordingBase : public hw::BaseDevice
 		        [&]
 		        {
 			        o = r_.dev.base->odometry();
-			        r_.clock_s = o.time_s;
+			        r_.clock_s = std::max(r_.clock_s, o.time_s);
 			        c.answer = {o.xv_zxphi[0],        o.xv_zxphi[1],       o.xv_zxphi[2],
 			                    double(o.ticks_right), double(o.ticks_left), o.time_s,
 			                    o.bumper ? 1.0 : 0.0};

@@ -132,11 +132,7 @@ void DeviceRecorder::measurement(const vision::CycleRecord& c)
 {
 	if (!c.measured) return;
 	auto& r = *impl_;
-	auto text = mrpt::obs::CObservationComment::Create();
-	text->sensorLabel = "NAV_MEASUREMENT";
-	text->timestamp = r.stamp();
-	text->text = measurementText(c);
-	r.log.write(*text);
+	r.log.write(*io::labelledComment("NAV_MEASUREMENT", measurementText(c), r.stamp()));
 	for (auto it = r.recent.rbegin(); it != r.recent.rend(); ++it)
 		if (it->angles.pan == c.measurement.angles.pan &&
 		    it->angles.tilt == c.measurement.angles.tilt &&
@@ -157,16 +153,12 @@ void DeviceRecorder::recognised(const SearchResult& s, const Eigen::Vector3d& xv
                                 const model::WireFrame& target)
 {
 	auto& r = *impl_;
-	auto text = mrpt::obs::CObservationComment::Create();
-	text->sensorLabel = "RECOGNISED";
-	text->timestamp = r.stamp();
 	std::ostringstream t;
 	t << target.name << " in frame " << (s.frame ? std::to_string(*s.frame) : "none")
 	  << ", confidence " << s.recognition.confidence << ", at the estimate (z, x, phi) ("
 	  << xv.transpose() << "): T_OinC0 (mm) " << rows(s.T_OinC0) << ", T_OinL (mm) "
 	  << rows(s.T_OinL);
-	text->text = t.str();
-	r.log.write(*text);
+	r.log.write(*io::labelledComment("RECOGNISED", t.str(), r.stamp()));
 	if (!s.frame) return;
 	for (auto it = r.recent.rbegin(); it != r.recent.rend(); ++it)
 		if (it->frame == *s.frame)
@@ -185,26 +177,18 @@ void DeviceRecorder::recognised(const SearchResult& s, const Eigen::Vector3d& xv
 
 void DeviceRecorder::graspPlanned(const RetrievalResult& g)
 {
-	auto text = mrpt::obs::CObservationComment::Create();
-	text->sensorLabel = "GRASP_PLAN";
-	text->timestamp = impl_->stamp();
 	std::ostringstream t;
 	t << std::setprecision(6) << (g.feasible ? "feasible" : "not feasible");
 	for (const auto& why : g.reasons) t << "; " << why;
 	t << "\nT_GinA (mm) " << rows(g.T_GinA) << "\njoints (d1 mm, q1..q6 deg)";
 	for (double v : g.joints.toMmDeg()) t << " " << v;
 	t << "\nverified " << g.verified << ", correction " << g.correction_mm << " mm";
-	text->text = t.str();
-	impl_->log.write(*text);
+	impl_->log.write(*io::labelledComment("GRASP_PLAN", t.str(), impl_->stamp()));
 }
 
 void DeviceRecorder::note(const TimelineEvent& e)
 {
-	auto text = mrpt::obs::CObservationComment::Create();
-	text->sensorLabel = "NOTE";
-	text->timestamp = impl_->stamp();
-	text->text = "[" + e.stage + "] " + e.text;
-	impl_->log.write(*text);
+	impl_->log.write(*io::labelledComment("NOTE", "[" + e.stage + "] " + e.text, impl_->stamp()));
 }
 
 }  // namespace mrolr::mission

@@ -21,7 +21,7 @@ struct DeviceRecorder::Impl
 	RobotDevices dev;
 	geometry::BiSightHead head;
 	size_t calls = 0;
-	double clock_s = 0;  ///< the devices' latest time (odometry, grabs)
+	double clock_s = 0;  ///< the latest of the devices' clocks (odometry, grabs): the records' time
 	bool bumper = false;
 	std::deque<hw::StereoImages> recent;  ///< the latest pairs, for the decisions' pictures
 	std::atomic<bool> gate{false};
@@ -37,11 +37,9 @@ struct DeviceRecorder::Impl
 	void checkStop()
 	{
 		if (!signal || !signal->load() || gate.load()) return;
-		auto c = mrpt::obs::CObservationComment::Create();
-		c->sensorLabel = kStopLabel;
-		c->timestamp = stamp();
-		c->text = "stop requested (signal): the mission stops before its next motion";
-		log.write(*c);
+		log.write(*io::labelledComment(
+		    kStopLabel, "stop requested (signal): the mission stops before its next motion",
+		    stamp()));
 		gate = true;
 	}
 

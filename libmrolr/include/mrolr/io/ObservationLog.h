@@ -6,6 +6,7 @@
  * stops at a torn last record and says so. */
 #include <mrpt/img/CImage.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CObservationComment.h>
 
 #include <fstream>
 #include <string>
@@ -36,6 +37,13 @@ class ObservationLogWriter
 	size_t count_ = 0;
 };
 
+/** A comment observation whose label survives the file: MRPT 2.5 does not serialize a
+ * CObservationComment's sensorLabel, so its text begins with the label on a line of its own
+ * (readObservationLog restores it). @p label is upper case, digits and '_'. */
+mrpt::obs::CObservationComment::Ptr labelledComment(const std::string& label,
+                                                    const std::string& text,
+                                                    mrpt::Clock::time_point stamp);
+
 /** What readObservationLog found. */
 struct ObservationLog
 {
@@ -46,7 +54,7 @@ struct ObservationLog
 };
 
 /** Reads every complete observation of @p path (external images left unloaded: see
- * loadExternal). Throws std::runtime_error naming the file when it cannot be opened or holds
+ * loadExternal); a labelledComment gets its label back and its text without it. Throws std::runtime_error naming the file when it cannot be opened or holds
  * something other than observations. */
 ObservationLog readObservationLog(const std::string& path);
 
