@@ -95,6 +95,10 @@ TEST(TwoProcesses, TheRobotRunsWithoutTheWorldsFilesAndEvalChecksItFromTJson)
 	emulator.signal(SIGINT);
 	EXPECT_EQ(emulator.wait(20), 0);
 	ASSERT_TRUE(fs::exists(tmp + "/T.json"));
+	// the truth of every step is the emulator's, beside T.json; the robot's recording has none
+	EXPECT_GE(countLabel(tmp + "/T.rawlog", "GROUND_TRUTH"), app.result.path.size());
+	EXPECT_EQ(countLabel(tmp + "/out/mission.rawlog", "GROUND_TRUTH"), 0u);
+	EXPECT_GT(countLabel(tmp + "/out/mission.rawlog", "BASE_ODOMETRY"), 0u);
 
 	apps::EvalApp eval;
 	eval.initialize({"mrolr-eval", "--report", tmp + "/out/report.json", "--truth", tmp + "/T.json"});

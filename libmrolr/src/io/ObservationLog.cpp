@@ -19,7 +19,6 @@ ObservationLogWriter::ObservationLogWriter(const std::string& path)
 {
 	std::error_code ec;
 	if (fs::path(path).has_parent_path()) fs::create_directories(fs::path(path).parent_path(), ec);
-	fs::create_directories(images_dir_, ec);
 	if (ec) throw std::runtime_error("cannot create the folder of rawlog " + path + ": " + ec.message());
 	file_.open(path, std::ios::binary | std::ios::trunc);
 	if (!file_) throw std::runtime_error("cannot open rawlog " + path + " for writing");
@@ -41,7 +40,9 @@ mrpt::img::CImage ObservationLogWriter::external(const mrpt::img::CImage& img,
                                                  const std::string& name) const
 {
 	const auto file = (fs::path(images_dir_) / name).string();
-	if (!img.saveToFile(file)) throw std::runtime_error("cannot write image " + file);
+	std::error_code ec;
+	fs::create_directories(images_dir_, ec);  // on the first image
+	if (ec || !img.saveToFile(file)) throw std::runtime_error("cannot write image " + file);
 	mrpt::img::CImage e;
 	e.setExternalStorage(name);
 	return e;

@@ -15,8 +15,9 @@ namespace mrolr::mission
 {
 namespace
 {
-/** Side of the square cut around a search region for its picture (px). */
-constexpr int kCrop_px = 160;
+/** Side of the square cut around a search region for its picture (px), and its magnification. */
+constexpr int kCrop_px = 120;
+constexpr double kZoom = 2.0;
 
 cv::Mat colourOf(const mrpt::img::CImage& img)
 {
@@ -24,16 +25,6 @@ cv::Mat colourOf(const mrpt::img::CImage& img)
 	if (m.channels() == 3) return m.clone();
 	cv::cvtColor(m, c, cv::COLOR_GRAY2BGR);
 	return c;
-}
-
-void drawEllipse(cv::Mat& img, const vision::ImageEllipse& e, const cv::Scalar& colour)
-{
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(e.cov);
-	const Eigen::Vector2d ax = eig.eigenvalues().cwiseMax(0).cwiseSqrt() * e.n_sigma;
-	const Eigen::Vector2d v = eig.eigenvectors().col(1);
-	const double angle_deg = std::atan2(v.y(), v.x()) * 180 / M_PI;
-	cv::ellipse(img, cv::Point2d(e.centre.x(), e.centre.y()), cv::Size2d(ax[1], ax[0]), angle_deg,
-	            0, 360, colour, 1, cv::LINE_AA);
 }
 
 /** A square around @p centre, inside the image. */
@@ -44,8 +35,25 @@ cv::Rect cropAround(const Eigen::Vector2d& centre, const cv::Size& size)
 	return cv::Rect(x, y, std::min(kCrop_px, size.width), std::min(kCrop_px, size.height));
 }
 
-/** Left and right cuts around the search ellipses, the ellipses yellow and the matches green
- * (accepted) or red (refused), side by side. */
+/** Pixel @p uv of the full image in the magnified cut @p crop. */
+cv::Point2d inCrop(const Eigen::Vector2d& uv, const cv::Rect& crop)
+{
+	return {(uv.x() - crop.x) * kZoom, (uv.y() - crop.y) * kZoom};
+}
+
+void drawEllipse(cv::Mat& img, const vision::ImageEllipse& e, const cv::Rect& crop,
+                 const cv::Scalar& colour)
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(e.cov);
+	const Eigen::Vector2d ax = eig.eigenvalues().cwiseMax(0).cwiseSqrt() * e.n_sigma * kZoom;
+	const Eigen::Vector2d v = eig.eigenvectors().col(1);
+	const double angle_deg = std::atan2(v.y(), v.x()) * 180 / M_PI;
+	cv::ellipse(img, inCrop(e.centre, crop), cv::Size2d(std::max(ax[1], 1.0), std::max(ax[0], 1.0)),
+	            angle_deg, 0, 360, colour, 1, cv::LINE_AA);
+}
+
+/** Left and right cuts around the search ellipses (yellow), magnified, with the matches green
+ * (accepted) or red (refused), side by side, the feature and the verdict written on them. */
 cv::Mat searchPicture(const hw::StereoImages& pair, const vision::CycleRecord& c)
 {
 	const auto& m = c.measurement;
@@ -56,15 +64,18 @@ cv::Mat searchPicture(const hw::StereoImages& pair, const vision::CycleRecord& c
 	const mrpt::img::CImage* img[2] = {&pair.left, &pair.right};
 	for (int i = 0; i < 2; ++i)
 	{
-		cv::Mat full = colourOf(*img[i]);
-		drawEllipse(full, *e[i], {0, 220, 255});
+		const cv::Mat full = colourOf(*img[i]);
+		const cv::Rect crop = cropAround(e[i]->centre, full.size());
+		cv::resize(full(crop), sides[i], {}, kZoom, kZoom, cv::INTER_NEAREST);
+		drawEllipse(sides[i], *e[i], crop, {0, 220, 255});
 		if (p[i]->found)
-			cv::drawMarker(full, cv::Point2d(p[i]->uv.x(), p[i]->uv.y()), match,
-			               cv::MARKER_CROSS, 12, 1);
-		sides[i] = full(cropAround(e[i]->centre, full.size())).clone();
+			cv::drawMarker(sides[i], inCrop(p[i]->uv, crop), match, cv::MARKER_CROSS, 16, 2);
 	}
 	cv::Mat out;
 	cv::hconcat(sides[0], sides[1], out);
+	const std::string verdict = c.accepted ? "accepted" : m.found ? "refused" : "not found";
+	cv::putText(out, c.label + " " + verdict, {4, 16}, cv::FONT_HERSHEY_SIMPLEX, 0.5, match, 1,
+	            cv::LINE_AA);
 	return out;
 }
 

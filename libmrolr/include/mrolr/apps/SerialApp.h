@@ -7,7 +7,8 @@
  *       serves its base, head and arm on three pseudo-terminals and its stereo camera on a local
  *       TCP socket, and prints one line per device (`base /dev/pts/N`, `head …`, `arm …`,
  *       `camera 127.0.0.1:PORT`), until SIGINT / SIGTERM or for S seconds; then writes the truth
- *       to T.json (eval/MissionTruth.h) and exits 0;
+ *       to T.json (eval/MissionTruth.h) and the true pose after every base step to T.rawlog
+ *       beside it (GROUND_TRUTH records, apps/TruthRecording.h), and exits 0;
  *   mrolr-serial send PORT VERB [FIELD...] [--baud B] [--timeout-ms T] [--retries R] [--json]
  *       sends one request to a device and prints the fields of its OK reply (exit 1 with the
  *       driver's error otherwise).

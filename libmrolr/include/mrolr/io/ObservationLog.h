@@ -18,7 +18,7 @@ namespace mrolr::io
 class ObservationLogWriter
 {
  public:
-	/** Creates @p path (and its folder and images folder); throws std::runtime_error naming the
+	/** Creates @p path (and its folder; the images folder with the first image); throws std::runtime_error naming the
 	 * path when it cannot. */
 	explicit ObservationLogWriter(const std::string& path);
 	/** Serializes @p obs, appends it and flushes it to the operating system; throws

@@ -1,5 +1,6 @@
 #include <mrolr/apps/MissionApp.h>
-#include <mrolr/apps/MissionRecording.h>
+#include <mrolr/apps/ReplayCheck.h>
+#include <mrolr/apps/TruthRecording.h>
 #include "MissionSummary.h"
 #include <mrolr/apps/RunConfiguration.h>
 #include <mrolr/apps/SerialEmulation.h>

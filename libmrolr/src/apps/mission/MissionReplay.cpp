@@ -1,7 +1,8 @@
 // mrolr-mission --replay: the robot side on the recording's devices, then the check against the
 // run it replays (docs/mission.md "Recording and replay").
 #include <mrolr/apps/MissionApp.h>
-#include <mrolr/apps/MissionRecording.h>
+#include <mrolr/apps/ReplayCheck.h>
+#include <mrolr/apps/TruthRecording.h>
 #include "MissionSummary.h"
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/eval/MissionOutputs.h>

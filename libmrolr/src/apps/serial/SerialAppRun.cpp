@@ -1,6 +1,7 @@
 #include <mrolr/apps/SerialApp.h>
 #include <mrolr/apps/SerialEmulation.h>
 #include <mrolr/apps/StopSignals.h>
+#include <mrolr/apps/TruthRecording.h>
 #include <mrolr/eval/MissionTruth.h>
 #include <mrolr/hw_serial/SerialClient.h>
 #include <mrolr/hw_serial/SerialPortTransport.h>
@@ -36,11 +37,13 @@ bool keepRunning(double seconds, std::chrono::steady_clock::time_point start,
 	       seconds;
 }
 
+/** T.json, and beside it T.rawlog with the true pose after every base step (GROUND_TRUTH). */
 void writeTruth(const sim::Lab& lab, const std::string& path)
 {
 	std::ofstream out(path);
 	out << eval::truthJson(eval::truthOf(lab)).dump(2) << "\n";
 	if (!out) throw std::runtime_error(path + ": cannot write the truth");
+	writeTruthRawlog(lab, (std::filesystem::path(path).replace_extension(".rawlog")).string());
 }
 }  // namespace
 

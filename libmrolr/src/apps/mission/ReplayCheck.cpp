@@ -1,38 +1,10 @@
-// The world side's truth in the recording, and a replay's report checked against the original.
-#include <mrolr/apps/MissionRecording.h>
-#include <mrolr/geometry/Frames.h>
-
-#include <mrpt/obs/CObservationRobotPose.h>
+// A replay's report checked against the original run's.
+#include <mrolr/apps/ReplayCheck.h>
 
 #include <set>
 
 namespace mrolr::apps
 {
-std::function<void(io::ObservationLogWriter&)> truthRecorder(const sim::Lab& lab)
-{
-	return [&lab](io::ObservationLogWriter& log)
-	{
-		if (lab.truth().steps.empty()) return;
-		const auto& s = lab.truth().steps.back();
-		auto gt = mrpt::obs::CObservationRobotPose::Create();
-		gt->sensorLabel = "GROUND_TRUTH";
-		gt->timestamp = mrpt::Clock::fromDouble(1.7e9 + s.time_s);
-		gt->pose.mean = mrpt::poses::CPose3D(geometry::vehicleToMrpt(s.xv_zxphi));
-		log.write(*gt);
-	};
-}
-
-std::vector<sim::TruthLog::Step> recordedTruthSteps(const std::string& rawlog_path)
-{
-	std::vector<sim::TruthLog::Step> steps;
-	for (const auto& obs : io::readObservationLog(rawlog_path).observations)
-		if (obs->sensorLabel == "GROUND_TRUTH")
-			if (const auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs))
-				steps.push_back({mrpt::Clock::toDouble(gt->timestamp) - 1.7e9,
-				                 geometry::vehicleFromMrpt(mrpt::poses::CPose2D(gt->pose.mean))});
-	return steps;
-}
-
 namespace
 {
 /** Keys whose values are wall-clock times or belong to the run, not to what the robot decided. */
