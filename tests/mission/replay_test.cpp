@@ -77,9 +77,14 @@ json estimates(const json& report)
 }
 }  // namespace
 
-TEST(Replay, ReproducesTheRunFromItsRecordingAlone)
+TEST(Replay, ReproducesTheMainMissionFromItsRecordingAlone)
 {
-	const auto rec = record("replay_test_original");
+	// `make mission`: the shipped configuration, its plan, seed 1
+	const auto odir = mission::test::freshTempDir("replay_test_original");
+	const Recorded rec{runApp({"mrolr-mission", "--config",
+	                           mission::test::configDir() + "/mission_sim.ini", "--out", odir,
+	                           "--quiet"}),
+	                   odir + "/mission.rawlog"};
 	const auto& a = rec.run;
 	ASSERT_EQ(a.code, 0) << a.out;
 	ASSERT_TRUE(a.report["found"].get<bool>());
@@ -119,7 +124,7 @@ TEST(Replay, AChangedConfigurationThatLooksElsewhereStopsAtTheFirstDivergenceAnd
 	                       mission::test::freshTempDir("replay_test_diverged", false), "--quiet"});
 	EXPECT_EQ(b.code, 3);
 	const std::string d = b.report["replay"]["divergence"].get<std::string>();
-	EXPECT_NE(d.find("replay diverged at device call"), std::string::npos) << d;
+	EXPECT_NE(d.find("in stage search: replay diverged at device call"), std::string::npos) << d;
 	EXPECT_NE(d.find("the robot asked head.moveTo("), std::string::npos) << d;
 	EXPECT_NE(d.find("where the recording has head.moveTo("), std::string::npos) << d;
 	EXPECT_TRUE(b.report["stopped"].get<bool>());

@@ -287,8 +287,8 @@ MissionResult Mission::run()
 	}
 	catch (const hw::ReplayDivergence& e)
 	{  // a replay asked for what its recording does not hold: stop there, naming it
-		m.r.divergence = e.what();
-		m.stopSafely(e.what());
+		m.r.divergence = "in stage " + m.r.timeline.stage() + ": " + e.what();
+		m.stopSafely(m.r.divergence);
 	}
 	catch (const hw::DeviceFailure& e)
 	{  // a device stopped answering: stop where we are, keep what was recorded
