@@ -73,6 +73,13 @@ struct RandomDevices : hw::BaseDevice, hw::HeadDevice, hw::ArmDevice
 	bool docked() const override { return true; }
 };
 
+mission::RobotDevices devicesOf(RandomDevices& d)
+{
+	mission::RobotDevices out;
+	out.base = &d, out.head = &d, out.arm = &d;
+	return out;
+}
+
 /** The same requests made of any devices, with what they answered written out as numbers. */
 std::vector<double> session(mission::RobotDevices d, std::atomic<bool>* stop_seen = nullptr,
                             std::atomic<bool>* stop_flag = nullptr)
@@ -117,8 +124,7 @@ TEST(DeviceRecording, APlaybackAnswersEveryRequestWithExactlyWhatTheDevicesAnswe
 	RandomDevices dev;
 	std::vector<double> live;
 	{
-		mission::DeviceRecorder rec(dir + "/r.rawlog", {&dev, &dev, &dev},
-		                            geometry::BiSightHead(geometry::BiSightOptions{}));
+		mission::DeviceRecorder rec(dir + "/r.rawlog", devicesOf(dev), geometry::BiSightHead());
 		live = session(rec.devices());
 		EXPECT_EQ(rec.calls(), 9u);
 	}
@@ -143,8 +149,7 @@ TEST(DeviceRecording, FaultsReplayAsTheSameExceptionWithTheSameMessage)
 		return w;
 	};
 	{
-		mission::DeviceRecorder rec(dir + "/r.rawlog", {&dev, &dev, &dev},
-		                            geometry::BiSightHead(geometry::BiSightOptions{}));
+		mission::DeviceRecorder rec(dir + "/r.rawlog", devicesOf(dev), geometry::BiSightHead());
 		live = faults(rec.devices());
 		dev.fail_next_move = true;
 		live.push_back(thrownBy<geometry::FixationError>(
@@ -179,8 +184,7 @@ TEST(DeviceRecording, ARequestTheRecordingDoesNotHoldIsADivergenceNamingCallDevi
 	const auto dir = mission::test::freshTempDir("device_recording_divergence");
 	RandomDevices dev;
 	{
-		mission::DeviceRecorder rec(dir + "/r.rawlog", {&dev, &dev, &dev},
-		                            geometry::BiSightHead(geometry::BiSightOptions{}));
+		mission::DeviceRecorder rec(dir + "/r.rawlog", devicesOf(dev), geometry::BiSightHead());
 		session(rec.devices());
 	}
 	mission::DevicePlayback play(dir + "/r.rawlog");
@@ -212,8 +216,7 @@ TEST(DeviceRecording, AStopRequestIsRaisedInTheReplayAtTheCallWhereTheRunRaisedI
 	std::atomic<bool> signal{false};
 	std::atomic<bool> seen_live{false}, seen_replay{false};
 	{
-		mission::DeviceRecorder rec(dir + "/r.rawlog", {&dev, &dev, &dev},
-		                            geometry::BiSightHead(geometry::BiSightOptions{}));
+		mission::DeviceRecorder rec(dir + "/r.rawlog", devicesOf(dev), geometry::BiSightHead());
 		auto& flag = rec.stopFlag(&signal);
 		auto d = rec.devices();
 		d.base->step({0.1, 0.2, 0.5});
@@ -238,8 +241,7 @@ TEST(DeviceRecording, ATornLastRecordIsLeftOutAndNamed)
 	const auto dir = mission::test::freshTempDir("device_recording_torn");
 	RandomDevices dev;
 	{
-		mission::DeviceRecorder rec(dir + "/r.rawlog", {&dev, &dev, &dev},
-		                            geometry::BiSightHead(geometry::BiSightOptions{}));
+		mission::DeviceRecorder rec(dir + "/r.rawlog", devicesOf(dev), geometry::BiSightHead());
 		session(rec.devices());
 	}
 	const auto size = fs::file_size(dir + "/r.rawlog");

@@ -83,6 +83,16 @@ mrpt::obs::CObservation::Ptr stereoOf(const DeviceCall& c, size_t index,
 }
 }  // namespace
 
+std::vector<double> valuesOf(const geometry::HeadAngles& a)
+{
+	return {a.pan, a.tilt, a.verg_left, a.verg_right};
+}
+
+geometry::HeadAngles anglesFrom(const std::vector<double>& v)
+{
+	return {v.at(0), v.at(1), v.at(2), v.at(3)};
+}
+
 const char* labelOf(CallKind kind)
 {
 	return info(kind).label;

@@ -59,16 +59,6 @@ namespace
 {
 using Impl = DevicePlayback::Impl;
 
-std::vector<double> anglesOf(const geometry::HeadAngles& a)
-{
-	return {a.pan, a.tilt, a.verg_left, a.verg_right};
-}
-
-geometry::HeadAngles anglesFrom(const std::vector<double>& v)
-{
-	return {v[0], v[1], v[2], v[3]};
-}
-
 class PlaybackBase : public hw::BaseDevice
 {
  public:
@@ -99,7 +89,7 @@ class PlaybackHead : public hw::HeadDevice
 	explicit PlaybackHead(Impl& p) : p_(p) {}
 	double moveTo(const geometry::HeadAngles& target) override
 	{
-		return p_.serve(CallKind::HeadMove, anglesOf(target)).answer[0];
+		return p_.serve(CallKind::HeadMove, valuesOf(target)).answer[0];
 	}
 	geometry::HeadAngles angles() const override
 	{

@@ -9,19 +9,43 @@ using Impl = DeviceRecorder::Impl;
 /** Pairs kept for the decisions' pictures: a whole sweep's views. */
 constexpr size_t kRecentPairs = 32;
 
+/** A request of @p kind with @p values, its answer still to come. */
+DeviceCall request(CallKind kind, std::vector<double> values = {})
+{
+	DeviceCall c;
+	c.kind = kind;
+	c.request = std::move(values);
+	return c;
+}
+
+/** A reading of one value through @p r, recorded as a number. */
+template <typename F>
+auto readNumber(Impl& r, CallKind kind, F&& read)
+{
+	auto c = request(kind);
+	decltype(read()) v{};
+	r.call(c,
+	       [&]
+	       {
+		       v = read();
+		       c.answer = {double(v)};
+	       });
+	return v;
+}
+
 class RecordingBase : public hw::BaseDevice
 {
  public:
 	explicit RecordingBase(Impl& r) : r_(r) {}
 	void step(const base::WheelControl& u) override
 	{
-		DeviceCall c{CallKind::BaseStep, {u.v1_mps, u.v2_mps, u.dt_s}};
+		auto c = request(CallKind::BaseStep, {u.v1_mps, u.v2_mps, u.dt_s});
 		r_.call(c, [&] { r_.dev.base->step(u); });
 		if (*r_.after_step) (*r_.after_step)(r_.log);
 	}
 	hw::Odometry odometry() const override
 	{
-		DeviceCall c{CallKind::BaseOdometry};
+		auto c = request(CallKind::BaseOdometry);
 		hw::Odometry o;
 		r_.call(c,
 		        [&]
@@ -40,18 +64,13 @@ class RecordingBase : public hw::BaseDevice
 	Impl& r_;
 };
 
-std::vector<double> anglesOf(const geometry::HeadAngles& a)
-{
-	return {a.pan, a.tilt, a.verg_left, a.verg_right};
-}
-
 class RecordingHead : public hw::HeadDevice
 {
  public:
 	explicit RecordingHead(Impl& r) : r_(r) {}
 	double moveTo(const geometry::HeadAngles& target) override
 	{
-		DeviceCall c{CallKind::HeadMove, anglesOf(target)};
+		auto c = request(CallKind::HeadMove, valuesOf(target));
 		double settle = 0;
 		r_.call(c,
 		        [&]
@@ -63,26 +82,26 @@ class RecordingHead : public hw::HeadDevice
 	}
 	geometry::HeadAngles angles() const override
 	{
-		DeviceCall c{CallKind::HeadAngles};
+		auto c = request(CallKind::HeadAngles);
 		geometry::HeadAngles a;
 		r_.call(c,
 		        [&]
 		        {
 			        a = r_.dev.head->angles();
-			        c.answer = anglesOf(a);
+			        c.answer = valuesOf(a);
 		        });
 		return a;
 	}
 	hw::StereoImages grab() override
 	{
-		DeviceCall c{CallKind::HeadGrab};
+		auto c = request(CallKind::HeadGrab);
 		hw::StereoImages p;
 		r_.call(c,
 		        [&]
 		        {
 			        p = r_.dev.head->grab();
 			        r_.clock_s = std::max(r_.clock_s, p.time_s);
-			        c.answer = anglesOf(p.angles);
+			        c.answer = valuesOf(p.angles);
 			        c.answer.insert(c.answer.end(), {p.time_s, double(p.frame)});
 			        c.images = p;
 		        });
@@ -101,12 +120,12 @@ class RecordingArm : public hw::ArmDevice
 	explicit RecordingArm(Impl& r) : r_(r) {}
 	void moveTo(const hw::ArmJoints& j) override
 	{
-		DeviceCall c{CallKind::ArmMove, {j.begin(), j.end()}};
+		auto c = request(CallKind::ArmMove, {j.begin(), j.end()});
 		r_.call(c, [&] { r_.dev.arm->moveTo(j); });
 	}
 	hw::ArmJoints joints() const override
 	{
-		DeviceCall c{CallKind::ArmJoints};
+		auto c = request(CallKind::ArmJoints);
 		hw::ArmJoints j{};
 		r_.call(c,
 		        [&]
@@ -118,49 +137,28 @@ class RecordingArm : public hw::ArmDevice
 	}
 	void setGripper(bool closed) override
 	{
-		DeviceCall c{CallKind::ArmGripper, {closed ? 1.0 : 0.0}};
+		auto c = request(CallKind::ArmGripper, {closed ? 1.0 : 0.0});
 		r_.call(c, [&] { r_.dev.arm->setGripper(closed); });
 	}
 	bool gripperClosed() const override
 	{
-		return flag(CallKind::ArmGripperClosed, [this] { return r_.dev.arm->gripperClosed(); });
+		return readNumber(r_, CallKind::ArmGripperClosed, [this] { return r_.dev.arm->gripperClosed(); });
 	}
 	double gripperWidthMm() const override
 	{
-		DeviceCall c{CallKind::ArmGripperWidth};
-		double w = 0;
-		r_.call(c,
-		        [&]
-		        {
-			        w = r_.dev.arm->gripperWidthMm();
-			        c.answer = {w};
-		        });
-		return w;
+		return readNumber(r_, CallKind::ArmGripperWidth, [this] { return r_.dev.arm->gripperWidthMm(); });
 	}
 	void dock(bool docked) override
 	{
-		DeviceCall c{CallKind::ArmDock, {docked ? 1.0 : 0.0}};
+		auto c = request(CallKind::ArmDock, {docked ? 1.0 : 0.0});
 		r_.call(c, [&] { r_.dev.arm->dock(docked); });
 	}
 	bool docked() const override
 	{
-		return flag(CallKind::ArmDocked, [this] { return r_.dev.arm->docked(); });
+		return readNumber(r_, CallKind::ArmDocked, [this] { return r_.dev.arm->docked(); });
 	}
 
  private:
-	template <typename F>
-	bool flag(CallKind kind, F&& read) const
-	{
-		DeviceCall c{kind};
-		bool v = false;
-		r_.call(c,
-		        [&]
-		        {
-			        v = read();
-			        c.answer = {v ? 1.0 : 0.0};
-		        });
-		return v;
-	}
 	Impl& r_;
 };
 }  // namespace

@@ -117,7 +117,8 @@ cv::Mat recognisedPicture(const hw::StereoImages& pair, const model::WireFrame& 
 			const Eigen::Vector3d a = T_OinL * samples[i].p, b = T_OinL * samples[i + 1].p;
 			if (a.z() <= 1 || b.z() <= 1) continue;
 			const auto pa = cam.project(a), pb = cam.project(b);
-			cv::line(img, {pa.x(), pa.y()}, {pb.x(), pb.y()}, {0, 0, 255}, 2, cv::LINE_AA);
+			cv::line(img, cv::Point2d(pa.x(), pa.y()), cv::Point2d(pb.x(), pb.y()), {0, 0, 255}, 2,
+			         cv::LINE_AA);
 		}
 	};
 	for (const auto& l : target.lines) draw(model::sampleLine(l, 10.0, 0));

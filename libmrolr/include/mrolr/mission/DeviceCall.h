@@ -54,6 +54,10 @@ struct DeviceCall
 	double time_s = 0;  ///< the devices' clock when it was made (timestamps, for viewers)
 };
 
+/** Head angles as recorded values (pan, tilt, verg_left, verg_right) and back. */
+std::vector<double> valuesOf(const geometry::HeadAngles& a);
+geometry::HeadAngles anglesFrom(const std::vector<double>& v);
+
 /** The sensor label of a call's record. */
 const char* labelOf(CallKind kind);
 /** The call of a sensor label, if it is one. */
