@@ -9,6 +9,7 @@
 #include <mrolr/apps/EvalApp.h>
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/io/ObservationLog.h>
+#include <mrolr/io/Rawlog.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -193,6 +194,12 @@ TEST(Recording, AMissionKilledMidRunLeavesARawlogReadableUpToItsLastRecord)
 	EXPECT_FALSE(fs::exists(tmp + "/out/report.json")) << "killed before its end";
 	const auto log = io::readObservationLog(rawlog);
 	EXPECT_GT(log.observations.size(), 100u);
+	// read as records too: odometry readings and stereo pairs, each pair with its images
+	const auto records = io::readRawlog(rawlog);
+	size_t pairs = 0;
+	for (const auto& r : records) pairs += r.has_stereo && r.left.getWidth() == 640;
+	EXPECT_EQ(pairs, countLabel(rawlog, "HEAD_GRAB"));
+	EXPECT_GT(pairs, 10u);
 	// MRPT's own tool reads it too, to the same last record
 	const std::string info = tmp + "/info.txt";
 	ASSERT_EQ(std::system(("rawlog-edit --info -i " + rawlog + " > " + info + " 2>&1").c_str()), 0);

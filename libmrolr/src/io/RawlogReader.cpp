@@ -1,5 +1,6 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/io/Rawlog.h>
+#include "RawlogFromObservations.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -67,8 +68,29 @@ RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& pat
 }
 }  // namespace
 
+namespace
+{
+/** True when the first record of @p path is an observation (observations-only format). */
+bool observationsOnly(const std::string& path)
+{
+	mrpt::io::CFileGZInputStream file;
+	if (!file.open(path)) return false;
+	try
+	{
+		auto in = mrpt::serialization::archiveFrom(file);
+		return std::dynamic_pointer_cast<mrpt::obs::CObservation>(in.ReadObject()) != nullptr;
+	}
+	catch (const std::exception&)
+	{
+		return false;
+	}
+}
+}  // namespace
+
 std::vector<RawlogRecord> readRawlog(const std::string& path)
 {
+	if (std::filesystem::exists(path) && observationsOnly(path))
+		return recordsOf(readObservationLog(path), path);
 	mrpt::io::CFileGZInputStream file;
 	if (!std::filesystem::exists(path) || !file.open(path))
 		throw std::runtime_error("cannot read rawlog " + path);

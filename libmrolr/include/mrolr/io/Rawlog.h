@@ -62,8 +62,10 @@ class RawlogWriter
 	Eigen::Vector3d last_odometry_ = Eigen::Vector3d::Zero();
 };
 
-/** Reads every record of a rawlog written by RawlogWriter, images loaded into memory. Throws
- * std::runtime_error naming the file and the record for anything unexpected. */
+/** Reads every record of a rawlog written by RawlogWriter, images loaded into memory. A
+ * mission's recording (observations-only, ObservationLog.h) reads as one record per odometry
+ * reading and one per stereo pair, up to its last whole record. Throws std::runtime_error naming
+ * the file and the record for anything unexpected. */
 std::vector<RawlogRecord> readRawlog(const std::string& path);
 
 /** The external images folder MRPT expects for @p rawlog_path: `<dir>/<stem>_Images`. */

@@ -1,0 +1,88 @@
+// An observations-only rawlog (a mission's recording, ObservationLog.h) as RawlogRecords: one
+// record per odometry reading and one per stereo pair, as RawlogWriter's recordings have them.
+#include "RawlogFromObservations.h"
+
+#include <mrolr/geometry/Frames.h>
+
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRawDAQ.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt/obs/CObservationStereoImages.h>
+
+namespace mrolr::io
+{
+namespace
+{
+double timeOf(const mrpt::obs::CObservation& o)
+{
+	return mrpt::Clock::toDouble(o.timestamp) - 1.7e9;
+}
+
+Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3DQuat& q)
+{
+	Eigen::Isometry3d T;
+	T.matrix() =
+	    mrpt::poses::CPose3D(q).getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>().asEigen();
+	return T;
+}
+
+/** The state the records carry forward: the latest odometry, head angles and truth. */
+struct Latest
+{
+	RawlogRecord state;
+	std::optional<Eigen::Vector3d> truth;
+	mrpt::obs::CObservationStereoImages::Ptr pair;
+};
+
+void readOdometry(const mrpt::obs::CObservationOdometry& o, Latest& l, std::vector<RawlogRecord>& out)
+{
+	l.state.time_s = timeOf(o);
+	l.state.odometry_zxphi = geometry::vehicleFromMrpt(o.odometry);
+	l.state.ticks_right = o.encoderRightTicks, l.state.ticks_left = o.encoderLeftTicks;
+	out.push_back(l.state);
+	out.back().true_zxphi = l.truth;
+	l.truth.reset();
+}
+
+void readGrab(const mrpt::obs::CObservationRawDAQ& grab, Latest& l, const std::string& path,
+              std::vector<RawlogRecord>& out)
+{
+	if (!l.pair || grab.AIN_double.size() < 4) return;  // a failed grab: no pair
+	RawlogRecord r = l.state;
+	r.time_s = timeOf(grab);
+	r.head_rad = Eigen::Vector4d(grab.AIN_double.data());
+	r.has_stereo = true;
+	r.left = loadExternal(l.pair->imageLeft, path);
+	r.right = loadExternal(l.pair->imageRight, path);
+	r.camera = l.pair->leftCamera;
+	r.T_LcvInVehicle = isometryOf(l.pair->cameraPose);
+	r.T_RcvInLcv = isometryOf(l.pair->rightCameraPose);
+	out.push_back(std::move(r));
+	l.pair.reset();
+}
+}  // namespace
+
+std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path)
+{
+	std::vector<RawlogRecord> out;
+	Latest l;
+	for (const auto& obs : log.observations)
+	{
+		if (const auto o = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
+			readOdometry(*o, l, out);
+		else if (const auto s = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(obs))
+			l.pair = s;
+		else if (const auto g = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs);
+		         g && g->sensorLabel == "GROUND_TRUTH")
+			l.truth = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(g->pose.mean));
+		else if (const auto d = std::dynamic_pointer_cast<mrpt::obs::CObservationRawDAQ>(obs))
+		{
+			if (d->sensorLabel == "HEAD_ANGLES" && d->AIN_double.size() == 4)
+				l.state.head_rad = Eigen::Vector4d(d->AIN_double.data());
+			if (d->sensorLabel == "HEAD_GRAB") readGrab(*d, l, path, out);
+		}
+	}
+	return out;
+}
+
+}  // namespace mrolr::io
