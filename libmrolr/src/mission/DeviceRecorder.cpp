@@ -9,6 +9,14 @@ using Impl = DeviceRecorder::Impl;
 /** Pairs kept for the decisions' pictures: a whole sweep's views. */
 constexpr size_t kRecentPairs = 32;
 
+/** @p p with pixels of its own. */
+hw::StereoImages deepCopy(hw::StereoImages p)
+{
+	p.left = p.left.makeDeepCopy();
+	p.right = p.right.makeDeepCopy();
+	return p;
+}
+
 /** A request of @p kind with @p values, its answer still to come. */
 DeviceCall request(CallKind kind, std::vector<double> values = {})
 {
@@ -41,7 +49,8 @@ class RecordingBase : public hw::BaseDevice
 	{
 		auto c = request(CallKind::BaseStep, {u.v1_mps, u.v2_mps, u.dt_s});
 		r_.call(c, [&] { r_.dev.base->step(u); });
-		if (*r_.after_step) (*r_.after_step)(r_.log);
+		if (*r_.world_truth)
+			if (auto truth = (*r_.world_truth)()) r_.post(std::move(truth));
 	}
 	hw::Odometry odometry() const override
 	{
@@ -99,7 +108,7 @@ class RecordingHead : public hw::HeadDevice
 		r_.call(c,
 		        [&]
 		        {
-			        p = r_.dev.head->grab();
+			        p = deepCopy(r_.dev.head->grab());  // the writer thread reads it later
 			        r_.clock_s = std::max(r_.clock_s, p.time_s);
 			        c.answer = valuesOf(p.angles);
 			        c.answer.insert(c.answer.end(), {p.time_s, double(p.frame)});
@@ -169,7 +178,7 @@ DeviceRecorder::DeviceRecorder(const std::string& rawlog_path, RobotDevices devi
 {
 	if (!impl_->dev.base || !impl_->dev.head || !impl_->dev.arm)
 		throw std::invalid_argument("DeviceRecorder: every device (base, head, arm) must be given");
-	impl_->after_step = &after_step;
+	impl_->world_truth = &world_truth;
 	impl_->base = std::make_unique<RecordingBase>(*impl_);
 	impl_->head_device = std::make_unique<RecordingHead>(*impl_);
 	impl_->arm = std::make_unique<RecordingArm>(*impl_);
@@ -188,9 +197,14 @@ std::atomic<bool>& DeviceRecorder::stopFlag(std::atomic<bool>* signal)
 	return impl_->gate;
 }
 
-io::ObservationLogWriter& DeviceRecorder::log()
+void DeviceRecorder::write(mrpt::obs::CObservation::Ptr obs)
 {
-	return impl_->log;
+	impl_->post(std::move(obs));
+}
+
+void DeviceRecorder::flush()
+{
+	impl_->log.flush();
 }
 
 size_t DeviceRecorder::calls() const

@@ -105,6 +105,18 @@ std::string rows(const Eigen::Isometry3d& T)
 	return s.str();
 }
 
+/** A picture as an image observation, its pixels in the images folder as @p name. */
+mrpt::obs::CObservationImage::Ptr pictureOf(const std::string& label, const cv::Mat& picture,
+                                            const std::string& name, mrpt::Clock::time_point stamp,
+                                            const io::ObservationLogWriter& w)
+{
+	auto img = mrpt::obs::CObservationImage::Create();
+	img->sensorLabel = label;
+	img->timestamp = stamp;
+	img->image = w.external(mrpt::img::CImage(picture, mrpt::img::SHALLOW_COPY), name);
+	return img;
+}
+
 /** The model carried to T_OinL (mm) drawn on the left image of the view. */
 cv::Mat recognisedPicture(const hw::StereoImages& pair, const model::WireFrame& target,
                           const Eigen::Isometry3d& T_OinL, const geometry::PinholeCamera& cam)
@@ -137,26 +149,23 @@ void DeviceRecorder::estimate(const PathSample& s)
 	const int at[3] = {0, 1, 3};
 	for (int i = 0; i < 3; ++i)
 		for (int k = 0; k < 3; ++k) o->pose.cov(at[i], at[k]) = s.P_vv(i, k);
-	impl_->log.write(*o);
+	impl_->post(o);
 }
 
 void DeviceRecorder::measurement(const vision::CycleRecord& c)
 {
 	if (!c.measured) return;
 	auto& r = *impl_;
-	r.log.write(*io::labelledComment("NAV_MEASUREMENT", measurementText(c), r.stamp()));
+	r.post(io::labelledComment("NAV_MEASUREMENT", measurementText(c), r.stamp()));
 	for (auto it = r.recent.rbegin(); it != r.recent.rend(); ++it)
 		if (it->angles.pan == c.measurement.angles.pan &&
 		    it->angles.tilt == c.measurement.angles.tilt &&
 		    it->angles.verg_left == c.measurement.angles.verg_left &&
 		    it->angles.verg_right == c.measurement.angles.verg_right)
-		{
-			auto img = mrpt::obs::CObservationImage::Create();
-			img->sensorLabel = "NAV_SEARCH";
-			img->timestamp = r.stamp();
-			img->image = r.log.external(mrpt::img::CImage(searchPicture(*it, c), mrpt::img::SHALLOW_COPY),
-			                            "NAV_SEARCH_" + std::to_string(r.log.count()) + ".png");
-			r.log.write(*img);
+		{  // drawn and written by the writer thread
+			const std::string name = "NAV_SEARCH_" + std::to_string(r.pictures++) + ".png";
+			r.log.post([pair = *it, c, name, stamp = r.stamp()](io::ObservationLogWriter& w)
+			           { w.write(*pictureOf("NAV_SEARCH", searchPicture(pair, c), name, stamp, w)); });
 			return;
 		}
 }
@@ -170,19 +179,15 @@ void DeviceRecorder::recognised(const SearchResult& s, const Eigen::Vector3d& xv
 	  << ", confidence " << s.recognition.confidence << ", at the estimate (z, x, phi) ("
 	  << xv.transpose() << "): T_OinC0 (mm) " << rows(s.T_OinC0) << ", T_OinL (mm) "
 	  << rows(s.T_OinL);
-	r.log.write(*io::labelledComment("RECOGNISED", t.str(), r.stamp()));
+	r.post(io::labelledComment("RECOGNISED", t.str(), r.stamp()));
 	if (!s.frame) return;
 	for (auto it = r.recent.rbegin(); it != r.recent.rend(); ++it)
 		if (it->frame == *s.frame)
 		{
-			auto img = mrpt::obs::CObservationImage::Create();
-			img->sensorLabel = "RECOGNISED";
-			img->timestamp = r.stamp();
-			img->image = r.log.external(
-			    mrpt::img::CImage(recognisedPicture(*it, target, s.T_OinL, r.head.camera()),
-			                      mrpt::img::SHALLOW_COPY),
-			    "RECOGNISED_" + std::to_string(r.log.count()) + ".png");
-			r.log.write(*img);
+			const std::string name = "RECOGNISED_" + std::to_string(r.pictures++) + ".png";
+			const cv::Mat picture = recognisedPicture(*it, target, s.T_OinL, r.head.camera());
+			r.log.post([picture, name, stamp = r.stamp()](io::ObservationLogWriter& w)
+			           { w.write(*pictureOf("RECOGNISED", picture, name, stamp, w)); });
 			return;
 		}
 }
@@ -195,12 +200,12 @@ void DeviceRecorder::graspPlanned(const RetrievalResult& g)
 	t << "\nT_GinA (mm) " << rows(g.T_GinA) << "\njoints (d1 mm, q1..q6 deg)";
 	for (double v : g.joints.toMmDeg()) t << " " << v;
 	t << "\nverified " << g.verified << ", correction " << g.correction_mm << " mm";
-	impl_->log.write(*io::labelledComment("GRASP_PLAN", t.str(), impl_->stamp()));
+	impl_->post(io::labelledComment("GRASP_PLAN", t.str(), impl_->stamp()));
 }
 
 void DeviceRecorder::note(const TimelineEvent& e)
 {
-	impl_->log.write(*io::labelledComment("NOTE", "[" + e.stage + "] " + e.text, impl_->stamp()));
+	impl_->post(io::labelledComment("NOTE", "[" + e.stage + "] " + e.text, impl_->stamp()));
 }
 
 }  // namespace mrolr::mission

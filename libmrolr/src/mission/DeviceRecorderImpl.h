@@ -1,6 +1,7 @@
 #pragma once
 // The state behind DeviceRecorder, shared by its device decorators and its decision writers.
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/io/ObservationQueue.h>
 #include <mrolr/mission/DeviceRecorder.h>
 
 #include <mrpt/obs/CObservationComment.h>
@@ -17,36 +18,44 @@ struct DeviceRecorder::Impl
 	    : log(path), dev(std::move(d)), head(h)
 	{
 	}
-	io::ObservationLogWriter log;
+	io::ObservationQueue log;  ///< the writer thread: images encoded and records written there
 	RobotDevices dev;
 	geometry::BiSightHead head;
-	size_t calls = 0;
+	size_t calls = 0, pictures = 0;
 	double clock_s = 0;  ///< the latest of the devices' clocks (odometry, grabs): the records' time
 	bool bumper = false;
 	std::deque<hw::StereoImages> recent;  ///< the latest pairs, for the decisions' pictures
 	std::atomic<bool> gate{false};
 	std::atomic<bool>* signal = nullptr;
-	std::function<void(io::ObservationLogWriter&)>* after_step = nullptr;
+	std::function<mrpt::obs::CObservation::Ptr()>* world_truth = nullptr;
 	std::unique_ptr<hw::BaseDevice> base;
 	std::unique_ptr<hw::HeadDevice> head_device;
 	std::unique_ptr<hw::ArmDevice> arm;
 
 	mrpt::Clock::time_point stamp() const { return mrpt::Clock::fromDouble(1.7e9 + clock_s); }
 
+	/** Queues @p obs for the writer thread. */
+	void post(mrpt::obs::CObservation::Ptr obs)
+	{
+		log.post([obs](io::ObservationLogWriter& w) { w.write(*obs); });
+	}
+
 	/** A stop requested since the last call is raised now, and marked before this call. */
 	void checkStop()
 	{
 		if (!signal || !signal->load() || gate.load()) return;
-		log.write(*io::labelledComment(
+		post(io::labelledComment(
 		    kStopLabel, "stop requested (signal): the mission stops before its next motion",
 		    stamp()));
 		gate = true;
 	}
 
+	/** Queues the call's records; its pair's images are encoded by the writer thread. */
 	void write(DeviceCall& c)
 	{
 		c.time_s = clock_s;
-		for (const auto& obs : observationsOf(c, calls, head, log)) log.write(*obs);
+		log.post([c, index = calls, h = head](io::ObservationLogWriter& w)
+		         { for (const auto& obs : observationsOf(c, index, h, w)) w.write(*obs); });
 		++calls;
 	}
 
@@ -78,14 +87,14 @@ struct DeviceRecorder::Impl
 		odo->hasEncodersInfo = true;
 		odo->encoderRightTicks = int32_t(o.ticks_right);
 		odo->encoderLeftTicks = int32_t(o.ticks_left);
-		log.write(*odo);
+		post(odo);
 		if (o.bumper && !bumper)
 		{
 			auto b = mrpt::obs::CObservationRawDAQ::Create();
 			b->sensorLabel = "BUMPER";
 			b->timestamp = stamp();
 			b->DIN = {1};
-			log.write(*b);
+			post(b);
 		}
 		bumper = o.bumper;
 	}

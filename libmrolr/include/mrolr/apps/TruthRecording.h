@@ -11,10 +11,10 @@
 
 namespace mrolr::apps
 {
-/** Writes the lab's true vehicle pose after each base step as a CObservationRobotPose labelled
- * `GROUND_TRUTH` (MRPT axes: x = z, y = x, yaw = φ; stamped 1.7e9 s + the base's time): the world
- * side's record, which a replay never reads. */
-std::function<void(io::ObservationLogWriter&)> truthRecorder(const sim::Lab& lab);
+/** The lab's latest true vehicle pose as a CObservationRobotPose labelled `GROUND_TRUTH` (MRPT
+ * axes: x = z, y = x, yaw = φ; stamped 1.7e9 s + the base's time; null before the first): the
+ * world side's record after each base step, which a replay never reads. */
+std::function<mrpt::obs::CObservation::Ptr()> truthRecorder(const sim::Lab& lab);
 
 /** Every true step the lab logged, as GROUND_TRUTH records, into a new rawlog at @p path. */
 void writeTruthRawlog(const sim::Lab& lab, const std::string& path);

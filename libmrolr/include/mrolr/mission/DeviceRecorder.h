@@ -1,7 +1,8 @@
 #pragma once
 /** The recording of a mission as it happens (docs/mission.md "Recording and replay"): devices
  * that pass every call on to the real ones and write it, with the device's answer, into
- * mission.rawlog before returning (DeviceCall.h), so that a replay (DevicePlayback.h) can answer
+ * mission.rawlog (DeviceCall.h; a writer thread encodes the images and writes the records in
+ * order while the robot goes on, io/ObservationQueue.h), so that a replay (DevicePlayback.h) can answer
  * the same requests with the same answers. Beside the calls it writes what a reader of the
  * rawlog wants to see: each odometry reading as a CObservationOdometry (`ODOMETRY`), a pressed
  * bumper (`BUMPER`), and the robot's decisions (DecisionLog). */
@@ -30,9 +31,13 @@ class DeviceRecorder : public DecisionLog
 	/** The stop flag to give the mission: raised at the first device call after @p signal is
 	 * (SIGINT, SIGTERM), and the recording marks that call, so a replay raises it there too. */
 	std::atomic<bool>& stopFlag(std::atomic<bool>* signal);
-	/** Called after each base step, for the world side to add its truth to the recording. */
-	std::function<void(io::ObservationLogWriter&)> after_step;
-	io::ObservationLogWriter& log();
+	/** Called after each base step: the world side's truth, recorded beside (may be null). */
+	std::function<mrpt::obs::CObservation::Ptr()> world_truth;
+	/** Records @p obs after what was recorded so far. */
+	void write(mrpt::obs::CObservation::Ptr obs);
+	/** Waits until everything recorded so far is in the file (throws std::runtime_error naming
+	 * the file when a write failed; a failed write also stops the next device call). */
+	void flush();
 	size_t calls() const;
 
 	void estimate(const PathSample& s) override;

@@ -194,8 +194,8 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	                                 geometry::BiSightHead(options.bisight));
 	if (world)
 	{  // the world side's truth, beside what the robot recorded (a replay never reads it)
-		recorder.after_step = truthRecorder(world->lab());
-		recorder.after_step(recorder.log());
+		recorder.world_truth = truthRecorder(world->lab());
+		recorder.write(recorder.world_truth());
 	}
 	mission::Mission m(options, recorder.devices(),
 	                   world ? world->sensors() : mission::SimulatedSensors{});
@@ -204,6 +204,7 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 	m.decisions = &recorder;
 	result = m.run();
 	stop_signal = signals.received();
+	recorder.flush();  // the whole recording in the file before the outputs name it
 	if (!quiet) progress << "\n";
 	const auto truth = world ? std::optional(eval::truthOf(world->lab())) : std::nullopt;
 	auto written = eval::writeMissionOutputs(result, options, truth ? &*truth : nullptr, out_dir);

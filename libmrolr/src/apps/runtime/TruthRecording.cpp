@@ -18,11 +18,12 @@ mrpt::obs::CObservationRobotPose::Ptr truthOf(const sim::TruthLog::Step& s)
 }
 }  // namespace
 
-std::function<void(io::ObservationLogWriter&)> truthRecorder(const sim::Lab& lab)
+std::function<mrpt::obs::CObservation::Ptr()> truthRecorder(const sim::Lab& lab)
 {
-	return [&lab](io::ObservationLogWriter& log)
+	return [&lab]() -> mrpt::obs::CObservation::Ptr
 	{
-		if (!lab.truth().steps.empty()) log.write(*truthOf(lab.truth().steps.back()));
+		if (lab.truth().steps.empty()) return nullptr;
+		return truthOf(lab.truth().steps.back());
 	};
 }
 
