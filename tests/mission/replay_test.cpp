@@ -101,6 +101,17 @@ TEST(Replay, ReproducesTheMainMissionFromItsRecordingAlone)
 	EXPECT_EQ(a.report["recognition"]["T_OinC0_mm"], b.report["recognition"]["T_OinC0_mm"]);
 	EXPECT_EQ(a.report["retrieval"]["joints_d1mm_qdeg"], b.report["retrieval"]["joints_d1mm_qdeg"]);
 	EXPECT_EQ(a.report["retrieval"]["T_GinA_mm"], b.report["retrieval"]["T_GinA_mm"]);
+	EXPECT_EQ(a.report["retrieval"]["T_OinA_mm"], b.report["retrieval"]["T_OinA_mm"]);
+	EXPECT_EQ(a.report["T_OinA"], b.report["T_OinA"]);
+	// the recording's figures are reported, and every pair the robot received is in it
+	const auto& figures = a.report["recording"];
+	EXPECT_EQ(figures["rawlog_bytes"].get<uint64_t>(), fs::file_size(rec.rawlog));
+	size_t pairs = 0;
+	for (const auto& o : io::readObservationLog(rec.rawlog).observations)
+		pairs += o->sensorLabel == "BISIGHT";
+	EXPECT_EQ(pairs, a.report["stereo_pairs"].get<size_t>() + a.report["navigation_pairs"].get<size_t>());
+	EXPECT_GE(figures["images"].get<size_t>(), 2 * pairs);
+	EXPECT_GT(figures["writer_seconds"].get<double>(), 0.0);
 	for (const char* k : {"success", "failure", "found", "retrieved", "returned_home", "stopped",
 	                      "stages", "found_at_station", "measurements", "navigation_pairs"})
 		EXPECT_EQ(a.report[k], b.report[k]) << k;

@@ -34,6 +34,7 @@ void ObservationLogWriter::write(const mrpt::obs::CObservation& obs)
 	file_.flush();  // in the kernel now: a killed process keeps this record
 	if (!file_) throw std::runtime_error("cannot write to rawlog " + path_);
 	++count_;
+	bytes_ += buffer.getTotalBytesCount();
 }
 
 mrpt::img::CImage ObservationLogWriter::external(const mrpt::img::CImage& img,
@@ -43,6 +44,8 @@ mrpt::img::CImage ObservationLogWriter::external(const mrpt::img::CImage& img,
 	std::error_code ec;
 	fs::create_directories(images_dir_, ec);  // on the first image
 	if (ec || !img.saveToFile(file)) throw std::runtime_error("cannot write image " + file);
+	image_bytes_ += fs::file_size(file, ec);
+	++images_;
 	mrpt::img::CImage e;
 	e.setExternalStorage(name);
 	return e;

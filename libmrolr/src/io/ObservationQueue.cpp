@@ -2,6 +2,7 @@
 #include <mrolr/io/ObservationQueue.h>
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 namespace mrolr::io
@@ -30,9 +31,12 @@ void ObservationQueue::rethrowFailure()
 void ObservationQueue::post(Write write)
 {
 	std::unique_lock lock(m_);
+	const auto t0 = std::chrono::steady_clock::now();
 	changed_.wait(lock, [this] { return queue_.size() < capacity_ || !failure_.empty(); });
+	wait_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	rethrowFailure();
 	queue_.push_back(std::move(write));
+	max_queued_ = std::max(max_queued_, queue_.size());
 	changed_.notify_all();
 }
 
@@ -41,6 +45,13 @@ void ObservationQueue::flush()
 	std::unique_lock lock(m_);
 	changed_.wait(lock, [this] { return (queue_.empty() && !busy_) || !failure_.empty(); });
 	rethrowFailure();
+}
+
+ObservationQueue::Stats ObservationQueue::stats()
+{
+	std::unique_lock lock(m_);
+	return {log_.count(), log_.images(), log_.bytes(), log_.imageBytes(), write_s_, wait_s_,
+	        max_queued_};
 }
 
 void ObservationQueue::run()
@@ -56,6 +67,7 @@ void ObservationQueue::run()
 		const bool failed_before = !failure_.empty();
 		lock.unlock();
 		std::string failed;
+		const auto t0 = std::chrono::steady_clock::now();
 		try
 		{
 			if (!failed_before) next(log_);  // after a failure nothing more is written
@@ -64,7 +76,9 @@ void ObservationQueue::run()
 		{
 			failed = e.what();
 		}
+		const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		lock.lock();
+		write_s_ += took;
 		busy_ = false;
 		if (!failed.empty() && failure_.empty()) failure_ = failed;
 		changed_.notify_all();

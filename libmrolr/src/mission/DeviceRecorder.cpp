@@ -207,6 +207,11 @@ void DeviceRecorder::flush()
 	impl_->log.flush();
 }
 
+io::ObservationQueue::Stats DeviceRecorder::stats()
+{
+	return impl_->log.stats();
+}
+
 size_t DeviceRecorder::calls() const
 {
 	return impl_->calls;

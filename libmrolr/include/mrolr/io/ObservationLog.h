@@ -28,6 +28,10 @@ class ObservationLogWriter
 	 * that refers to it, for an observation to carry. */
 	mrpt::img::CImage external(const mrpt::img::CImage& img, const std::string& name) const;
 	size_t count() const { return count_; }
+	/** Bytes written to the rawlog, and to its images folder (and how many images). */
+	uint64_t bytes() const { return bytes_; }
+	uint64_t imageBytes() const { return image_bytes_; }
+	size_t images() const { return images_; }
 	const std::string& path() const { return path_; }
 	const std::string& imagesDir() const { return images_dir_; }
 
@@ -35,6 +39,9 @@ class ObservationLogWriter
 	std::string path_, images_dir_;
 	std::ofstream file_;
 	size_t count_ = 0;
+	uint64_t bytes_ = 0;
+	mutable uint64_t image_bytes_ = 0;
+	mutable size_t images_ = 0;
 };
 
 /** A comment observation whose label survives the file: MRPT 2.5 does not serialize a

@@ -33,6 +33,17 @@ class ObservationQueue
 	void flush();
 	const std::string& path() const { return path_; }
 
+	/** What the writer did, for the report (call after flush()). */
+	struct Stats
+	{
+		size_t records = 0, images = 0;
+		uint64_t bytes = 0, image_bytes = 0;
+		double write_s = 0;  ///< wall seconds the writer thread spent writing
+		double wait_s = 0;   ///< wall seconds post() waited for room: the poster's cost
+		size_t max_queued = 0;
+	};
+	Stats stats();
+
  private:
 	void run();
 	void rethrowFailure();
@@ -43,6 +54,8 @@ class ObservationQueue
 	std::deque<Write> queue_;
 	bool busy_ = false, stopping_ = false;
 	std::string failure_;
+	double write_s_ = 0, wait_s_ = 0;
+	size_t max_queued_ = 0;
 	std::mutex m_;
 	std::condition_variable changed_;
 	std::thread writer_;

@@ -7,6 +7,7 @@
  * rawlog wants to see: each odometry reading as a CObservationOdometry (`ODOMETRY`), a pressed
  * bumper (`BUMPER`), and the robot's decisions (DecisionLog). */
 #include <mrolr/mission/DecisionLog.h>
+#include <mrolr/io/ObservationQueue.h>
 #include <mrolr/mission/DeviceCall.h>
 #include <mrolr/mission/Mission.h>
 
@@ -38,6 +39,8 @@ class DeviceRecorder : public DecisionLog
 	/** Waits until everything recorded so far is in the file (throws std::runtime_error naming
 	 * the file when a write failed; a failed write also stops the next device call). */
 	void flush();
+	/** The recording's figures (after flush()): records, images, bytes, the writer's time. */
+	io::ObservationQueue::Stats stats();
 	size_t calls() const;
 
 	void estimate(const PathSample& s) override;

@@ -41,6 +41,28 @@ std::string utcStamp()
 	return s.str();
 }
 
+/** report.json `recording`: the rawlog's size and the writer's time. */
+json recordingJson(const io::ObservationQueue::Stats& s, const std::string& rawlog)
+{
+	return {{"rawlog", rawlog},
+	        {"records", s.records},
+	        {"rawlog_bytes", s.bytes},
+	        {"images", s.images},
+	        {"image_bytes", s.image_bytes},
+	        {"writer_seconds", s.write_s},
+	        {"robot_waited_seconds", s.wait_s},
+	        {"max_queued", s.max_queued}};
+}
+
+void printRecording(std::ostream& out, const json& r)
+{
+	out << std::fixed << std::setprecision(1) << "  recording: " << r["records"] << " records ("
+	    << r["rawlog_bytes"].get<double>() / 1e6 << " MB) and " << r["images"] << " images ("
+	    << r["image_bytes"].get<double>() / 1e6 << " MB), written in "
+	    << r["writer_seconds"].get<double>() << " s off the robot's path (it waited "
+	    << std::setprecision(2) << r["robot_waited_seconds"].get<double>() << " s)\n";
+}
+
 /** "section.key=value" → (section, key, value); the key is after the last '.' before '='. */
 std::array<std::string, 3> splitOverride(const std::string& text)
 {
@@ -216,10 +238,15 @@ int MissionApp::run(std::ostream& out, std::ostream& progress)
 		std::ofstream(files.back()) << eval::truthJson(*truth).dump(2) << "\n";
 	}
 	files.push_back(run_config);
+	report["recording"] = recordingJson(recorder.stats(), rawlog);
+	std::ofstream(written.files.front()) << report.dump(2) << "\n";  // report.json
 	if (json)
 		out << report.dump(2) << "\n";
 	else
+	{
 		printSummary(out, report, out_dir);
+		printRecording(out, report["recording"]);
+	}
 	if (stop_signal) return 128 + stop_signal;
 	return report["success"].get<bool>() ? 0 : 3;
 }
