@@ -12,7 +12,7 @@ PACKAGES=(
   liborocos-kdl-dev
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
-  xvfb xauth x11-apps imagemagick
+  xvfb xauth x11-apps imagemagick xdotool
 )
 
 missing=()
