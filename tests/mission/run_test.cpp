@@ -90,19 +90,23 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 	          static_cast<size_t>(r.search.views) + 1);
 	EXPECT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Obstacle),
 	          static_cast<size_t>(r.obstacle.looks));
+	// Every stereo pair the robot received is recorded (navigation's too), stored as external
+	// images beside the pictures of its decisions.
+	const size_t pairs = r.shots.size() + size_t(r.navigation_pairs);
 	size_t images = 0;
 	for (const auto& e : fs::directory_iterator(dir + "/mission_Images"))
-		images += e.path().extension() == ".png";
-	EXPECT_EQ(images, 2 * r.shots.size());
-	// The rawlog reads back: one record per motion step and per stereo pair, the truth on the
-	// steps only (the world side's).
+		images += e.path().filename().string().rfind("BISIGHT_", 0) == 0;
+	EXPECT_EQ(images, 2 * pairs);
+	EXPECT_GE(j["recording"]["images"].get<size_t>(), images);
+	// The rawlog reads back as records: one per odometry reading and per stereo pair, the truth
+	// (the world side's) on the odometry readings that follow a step.
 	const auto records = io::readRawlog(dir + "/mission.rawlog");
-	EXPECT_EQ(records.size(), r.path.size() + r.shots.size());
 	size_t stereo = 0, truth = 0;
 	for (const auto& rec : records)
 		stereo += rec.has_stereo && rec.left.getWidth() == 640, truth += rec.true_zxphi.has_value();
-	EXPECT_EQ(stereo, r.shots.size());
-	EXPECT_EQ(truth, r.path.size());
+	EXPECT_EQ(stereo, pairs);
+	EXPECT_EQ(records.size() - stereo, r.path.size());
+	EXPECT_EQ(truth, records.size() - stereo);
 	mrpt::opengl::COpenGLScene scene;
 	ASSERT_TRUE(scene.loadFromFile(dir + "/mission.3Dscene"));
 	EXPECT_TRUE(scene.getByName("path.true"));

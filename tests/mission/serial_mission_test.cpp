@@ -7,6 +7,7 @@
 #include <mrolr/apps/SerialEmulation.h>
 #include <mrolr/eval/MissionOutputs.h>
 #include <mrolr/io/Rawlog.h>
+#include <mrolr/mission/DeviceRecorder.h>
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/util/Cli.h>
@@ -55,6 +56,15 @@ struct SerialRig
 		emulation->useIn(o, links);
 		devices = std::make_unique<MissionDevices>(o.devices, SimDevices{nullptr, &lab->head(), nullptr});
 		mission = std::make_unique<Mission>(o, devices->devices());  // connected: ID? on every port
+	}
+	/** The mission run with its recording in @p dir/mission.rawlog, as mrolr-mission runs it. */
+	MissionResult runRecorded(const std::string& dir)
+	{
+		DeviceRecorder recorder(dir + "/mission.rawlog", devices->devices(),
+		                        geometry::BiSightHead(o.bisight));
+		auto r = Mission(o, recorder.devices()).run();
+		recorder.flush();
+		return r;
 	}
 	nlohmann::json report(const MissionResult& r) const
 	{
@@ -136,7 +146,8 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 	hw::FaultOptions hang;
 	hang.silent_after_replies = 2;  // GRIP 0 and the pre-grasp MOVE, then nothing
 	rig.emulation->arm().emulator().setFaults(hang);
-	const auto r = rig.mission->run();
+	const auto dir = mission::test::freshTempDir("serial_mission_test_arm_hangs");
+	const auto r = rig.runRecorded(dir);
 	EXPECT_FALSE(r.success);
 	EXPECT_TRUE(r.stopped);
 	EXPECT_TRUE(r.found);
@@ -153,7 +164,6 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 	EXPECT_EQ(r.path.back().device_time_s, rig.lab->simBase().odometry().time_s);
 	EXPECT_FALSE(r.returned_home);
 	// Everything recorded so far is written and reads back.
-	const auto dir = mission::test::freshTempDir("serial_mission_test_arm_hangs", false);
 	eval::writeMissionOutputs(r, rig.o, nullptr, dir);
 	const auto j = nlohmann::json::parse(std::ifstream(dir + "/report.json"));
 	EXPECT_FALSE(j["success"].get<bool>());
@@ -163,9 +173,21 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 	std::ifstream md(dir + "/report.md");
 	EXPECT_NE(std::string(std::istreambuf_iterator<char>(md), {}).find("device.arm on /dev/"),
 	          std::string::npos);
+	// one record per odometry reading and per stereo pair, the last call the arm's fault
 	const auto records = io::readRawlog(dir + "/mission.rawlog");
-	EXPECT_EQ(records.size(), r.path.size() + r.shots.size());
+	size_t pairs = 0;
+	for (const auto& rec : records) pairs += rec.has_stereo;
+	EXPECT_EQ(pairs, r.shots.size() + size_t(r.navigation_pairs));
 	EXPECT_GT(r.shots.size(), 0u);
+	const auto calls = readDeviceCalls(dir + "/mission.rawlog").calls;
+	ASSERT_FALSE(calls.empty());
+	size_t faults = 0;
+	for (const auto& c : calls) faults += c.fault.has_value();
+	EXPECT_GE(faults, 1u);
+	bool arm_fault = false;
+	for (const auto& c : calls)
+		arm_fault |= c.fault && c.fault->message.find("device.arm") != std::string::npos;
+	EXPECT_TRUE(arm_fault);
 }
 
 TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
@@ -197,7 +219,8 @@ TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 	hw::FaultOptions hang;
 	hang.silent = true;
 	rig.emulation->base().emulator().setFaults(hang);
-	const auto r = rig.mission->run();
+	const auto dir = mission::test::freshTempDir("serial_mission_test_base_hangs");
+	const auto r = rig.runRecorded(dir);
 	EXPECT_TRUE(r.stopped);
 	EXPECT_NE(r.failure.find("device.base on " + rig.emulation->base().slavePath()),
 	          std::string::npos)
@@ -207,9 +230,11 @@ TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 	for (const auto& e : r.timeline.events())
 		could_not_stop |= e.text.find("could not command the base to stop") == 0;
 	EXPECT_TRUE(could_not_stop);
-	const auto dir = mission::test::freshTempDir("serial_mission_test_base_hangs", false);
 	EXPECT_NO_THROW(eval::writeMissionOutputs(r, rig.o, nullptr, dir));
-	EXPECT_TRUE(io::readRawlog(dir + "/mission.rawlog").empty());
+	EXPECT_TRUE(io::readRawlog(dir + "/mission.rawlog").empty()) << "no odometry, no pair";
+	const auto calls = readDeviceCalls(dir + "/mission.rawlog").calls;
+	ASSERT_FALSE(calls.empty());
+	EXPECT_TRUE(calls.back().fault.has_value()) << "the base's fault is the last call recorded";
 }
 
 TEST(SerialMission, WithoutTheHardwareTheMissionFailsNamingPortAndKeyBeforeAnythingMoves)

@@ -108,13 +108,13 @@ class RecordingHead : public hw::HeadDevice
 		r_.call(c,
 		        [&]
 		        {
-			        p = deepCopy(r_.dev.head->grab());  // the writer thread reads it later
+			        p = r_.dev.head->grab();
 			        r_.clock_s = std::max(r_.clock_s, p.time_s);
 			        c.answer = valuesOf(p.angles);
 			        c.answer.insert(c.answer.end(), {p.time_s, double(p.frame)});
-			        c.images = p;
+			        c.images = deepCopy(p);  // the writer thread's own pixels
 		        });
-		r_.recent.push_back(p);
+		r_.recent.push_back(*c.images);
 		if (r_.recent.size() > kRecentPairs) r_.recent.pop_front();
 		return p;
 	}
