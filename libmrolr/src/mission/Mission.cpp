@@ -299,6 +299,7 @@ MissionResult Mission::run()
 		m.stopSafely(std::string("a device refused a command: ") + e.what());
 	}
 	m.finish();
+	m.r.timeline.on_note = nullptr;  // the result outlives this mission's decision log
 	return m.r;
 }
 
