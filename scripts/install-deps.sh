@@ -13,6 +13,10 @@ PACKAGES=(
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
   xvfb xauth x11-apps imagemagick xdotool
+  # ROS 1 from Debian (the ros area, docs/ros.md): libmrpt-dev already brings roscpp,
+  # rosbag_storage, cv_bridge, tf2 and sensor/geometry/stereo messages; a master on loopback
+  python3-rosmaster rosout
+  libnav-msgs-dev libtrajectory-msgs-dev libtf2-ros-dev libvisualization-msgs-dev
 )
 
 missing=()

@@ -106,6 +106,8 @@ std::vector<RawlogRecord> readRawlog(const std::string& path)
 		if (!sf) fail(path, out.size(), "not an action/observation pair");
 		out.push_back(recordOf(*sf, path, out.size()));
 	}
+	if (out.empty() && std::filesystem::file_size(path) > 0)
+		throw std::runtime_error(path + ": not a rawlog (its first record is unreadable)");
 	return out;
 }
 

@@ -1,0 +1,135 @@
+// A mission's recording as a ROS bag: every pair, odometry reading and truth record in it, with
+// the right encodings, sizes and poses; and MRPT's own rosbag2rawlog reads every image back.
+#include <mrolr/apps/MissionApp.h>
+#include <mrolr/apps/Rawlog2BagApp.h>
+#include <mrolr/io/Rawlog.h>
+#include <mrolr/util/Cli.h>
+#include <mrolr/ros/Conversions.h>
+
+#include <geometry_msgs/PoseStamped.h>
+#include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <sensor_msgs/Image.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace mrolr;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string freshDir(const std::string& name)
+{
+	const auto d = fs::temp_directory_path() / ("mrolr_" + name);
+	fs::remove_all(d);
+	fs::create_directories(d);
+	return d.string();
+}
+
+/** A short mission recorded by mrolr-mission: the route runs into the table (a few pairs). */
+std::string recordMission(const std::string& dir)
+{
+	std::ofstream(dir + "/plan.ini") << "[plan]\nroute = W0 T\nstations = W5\nhome = W6\n"
+	                                    "[waypoints]\nW0 = 0 0 0\nT = 2.4 0 0\nW5 = 0.5 0 0\n"
+	                                    "W6 = 0 0 0\n";
+	apps::MissionApp app;
+	app.initialize({"mrolr-mission", "--config", std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini",
+	                "--plan", dir + "/plan.ini", "--set", "mission.obstacle_mode=false", "--out",
+	                dir + "/run", "--quiet"});
+	std::ostringstream out, progress;
+	app.run(out, progress);
+	return dir + "/run/mission.rawlog";
+}
+}  // namespace
+
+TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
+{
+	const auto dir = freshDir("rawlog2bag_mission");
+	const auto rawlog = recordMission(dir);
+	const auto records = io::readRawlog(rawlog);
+	size_t pairs = 0, truths = 0;
+	for (const auto& r : records) pairs += r.has_stereo, truths += r.true_zxphi.has_value();
+	ASSERT_GT(pairs, 3u);
+	apps::Rawlog2BagApp app;
+	app.initialize({"mrolr-rawlog2bag", rawlog, dir + "/m.bag", "--quiet"});
+	std::ostringstream out, progress;
+	ASSERT_EQ(app.run(out, progress), 0);
+	EXPECT_EQ(app.summary.pairs, pairs);
+
+	rosbag::Bag bag(dir + "/m.bag", rosbag::bagmode::Read);
+	std::map<std::string, size_t> count;
+	for (const auto& m : rosbag::View(bag)) ++count[m.getTopic()];
+	EXPECT_EQ(count["/stereo/left/image_raw"], pairs);
+	EXPECT_EQ(count["/stereo/right/image_raw"], pairs);
+	EXPECT_EQ(count["/stereo/left/camera_info"], pairs);
+	EXPECT_EQ(count["/odom"], records.size() - pairs);
+	EXPECT_EQ(count["/ground_truth/pose"], truths);
+	EXPECT_EQ(count["/tf_static"], 1u);
+	EXPECT_EQ(count["/tf"], (records.size() - pairs) + 2 * pairs);
+	// the first pair's images: mono8, full size, the recorded pixels
+	const io::RawlogRecord* first = nullptr;
+	for (const auto& r : records)
+		if (r.has_stereo && !first) first = &r;
+	for (const auto& m : rosbag::View(bag, rosbag::TopicQuery("/stereo/right/image_raw")))
+	{
+		const auto img = m.instantiate<sensor_msgs::Image>();
+		ASSERT_TRUE(img);
+		EXPECT_EQ(img->encoding, "mono8");
+		EXPECT_EQ(img->width, 640u);
+		EXPECT_EQ(img->height, 480u);
+		const cv::Mat back = mrolr::ros::fromImageMsg(*img).asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+		EXPECT_EQ(cv::norm(back, first->right.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY), cv::NORM_INF), 0);
+		EXPECT_NEAR(mrolr::ros::fromRosTime(img->header.stamp), first->time_s, 1e-6);
+		break;
+	}
+	// one pose: the last odometry reading
+	const io::RawlogRecord* last = nullptr;
+	for (const auto& r : records)
+		if (!r.has_stereo) last = &r;
+	nav_msgs::Odometry::ConstPtr odo;
+	for (const auto& m : rosbag::View(bag, rosbag::TopicQuery("/odom")))
+		odo = m.instantiate<nav_msgs::Odometry>();
+	ASSERT_TRUE(odo);
+	EXPECT_TRUE(mrolr::ros::fromPoseMsg(odo->pose.pose).isApprox(mrolr::ros::planarPose(last->odometry_zxphi), 1e-12));
+	bag.close();
+
+	// MRPT's rosbag2rawlog, with the shipped configuration, gives every image back
+	const std::string back = dir + "/back.rawlog", info = dir + "/info.txt";
+	const std::string cmd = "rosbag2rawlog -w -c " + std::string(MROLR_SOURCE_DIR) +
+	                        "/config/rosbag2rawlog.yml -f world -o " + back + " " + dir +
+	                        "/m.bag > /dev/null 2>&1 && rawlog-edit --info -i " + back + " > " +
+	                        info + " 2>&1";
+	ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+	std::stringstream s;
+	s << std::ifstream(info).rdbuf();
+	EXPECT_NE(s.str().find("Overall number of objects         : " + std::to_string(2 * pairs)),
+	          std::string::npos)
+	    << s.str();
+}
+
+TEST(Rawlog2Bag, BadArgumentsAndUnreadableFilesAreNamed)
+{
+	apps::Rawlog2BagApp app;
+	EXPECT_THROW(app.initialize({"mrolr-rawlog2bag", "in.rawlog", "out.txt"}), util::UsageError);
+	apps::Rawlog2BagApp missing;
+	missing.initialize({"mrolr-rawlog2bag", "/nonexistent/in.rawlog", "/tmp/x.bag"});
+	std::ostringstream out, progress;
+	try
+	{
+		missing.run(out, progress);
+		ADD_FAILURE() << "a missing rawlog converted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("/nonexistent/in.rawlog"), std::string::npos);
+	}
+	const auto dir = freshDir("rawlog2bag_garbage");
+	std::ofstream(dir + "/g.rawlog") << "garbage";
+	apps::Rawlog2BagApp garbage;
+	garbage.initialize({"mrolr-rawlog2bag", dir + "/g.rawlog", dir + "/g.bag", "--quiet"});
+	EXPECT_THROW(garbage.run(out, progress), std::runtime_error);
+}
