@@ -11,7 +11,7 @@ find_path(MROLR_RCUTILS_INCLUDE_DIR rcutils/types.h PATH_SUFFIXES rcutils)
 find_path(MROLR_RCPPUTILS_INCLUDE_DIR rcpputils/shared_library.hpp PATH_SUFFIXES rcpputils)
 find_path(MROLR_AMENT_INDEX_INCLUDE_DIR ament_index_cpp/get_package_prefix.hpp PATH_SUFFIXES ament_index_cpp)
 set(_mrolr_ros1_libs roscpp rosbag_storage rostime roscpp_serialization cpp_common roslz4
-    rosconsole xmlrpcpp console_bridge class_loader ament_index_cpp)
+    rosconsole xmlrpcpp console_bridge class_loader ament_index_cpp tf2)
 set(_mrolr_ros1_paths "")
 set(MrolrRos1_FOUND TRUE)
 foreach(_lib ${_mrolr_ros1_libs})

@@ -7,10 +7,13 @@
 #include <mrolr/ros/Conversions.h>
 
 #include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <tf2/buffer_core.h>
+#include <tf2_msgs/TFMessage.h>
 #include <sensor_msgs/Image.h>
 
 #include <filesystem>
@@ -51,8 +54,11 @@ TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
 	const auto dir = freshDir("rawlog2bag_mission");
 	const auto rawlog = recordMission(dir);
 	const auto records = io::readRawlog(rawlog);
-	size_t pairs = 0, truths = 0;
-	for (const auto& r : records) pairs += r.has_stereo, truths += r.true_zxphi.has_value();
+	size_t pairs = 0, truths = 0, estimates = 0;
+	for (const auto& r : records)
+		pairs += r.has_stereo, truths += r.true_zxphi.has_value(),
+		    estimates += r.estimate_zxphi.has_value();
+	ASSERT_GT(estimates, 0u);
 	ASSERT_GT(pairs, 3u);
 	apps::Rawlog2BagApp app;
 	app.initialize({"mrolr-rawlog2bag", rawlog, dir + "/m.bag", "--quiet"});
@@ -68,8 +74,9 @@ TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
 	EXPECT_EQ(count["/stereo/left/camera_info"], pairs);
 	EXPECT_EQ(count["/odom"], records.size() - pairs);
 	EXPECT_EQ(count["/ground_truth/pose"], truths);
-	EXPECT_EQ(count["/tf_static"], 1u);
-	EXPECT_EQ(count["/tf"], (records.size() - pairs) + 2 * pairs);
+	EXPECT_EQ(count["/mrolr/estimate"], estimates);
+	EXPECT_EQ(count["/tf_static"], 0u) << "world → odom comes with each estimate";
+	EXPECT_EQ(count["/tf"], (records.size() - pairs) + 2 * pairs + estimates);
 	// the first pair's images: mono8, full size, the recorded pixels
 	const io::RawlogRecord* first = nullptr;
 	for (const auto& r : records)
@@ -95,6 +102,30 @@ TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
 		odo = m.instantiate<nav_msgs::Odometry>();
 	ASSERT_TRUE(odo);
 	EXPECT_TRUE(mrolr::ros::fromPoseMsg(odo->pose.pose).isApprox(mrolr::ros::planarPose(last->odometry_zxphi), 1e-12));
+	// the last estimate: its pose and covariance
+	const io::RawlogRecord* estimated = nullptr;
+	for (const auto& r : records)
+		if (r.estimate_zxphi) estimated = &r;
+	geometry_msgs::PoseWithCovarianceStamped::ConstPtr est;
+	for (const auto& m : rosbag::View(bag, rosbag::TopicQuery("/mrolr/estimate")))
+		est = m.instantiate<geometry_msgs::PoseWithCovarianceStamped>();
+	ASSERT_TRUE(est);
+	EXPECT_TRUE(mrolr::ros::fromPoseMsg(est->pose.pose)
+	                .isApprox(mrolr::ros::planarPose(*estimated->estimate_zxphi), 1e-12));
+	EXPECT_TRUE(mrolr::ros::planarCovarianceFrom(est->pose.covariance).isApprox(estimated->estimate_P));
+	EXPECT_GT(estimated->estimate_P(0, 0), 0.0);
+	// tf joins world to both cameras (what rosbag2rawlog and RViz need); at the bag's end
+	// world → base_link is the last estimate
+	tf2::BufferCore tf(::ros::Duration(1e6));
+	for (const auto& m : rosbag::View(bag, rosbag::TopicQuery("/tf")))
+		for (const auto& t : m.instantiate<tf2_msgs::TFMessage>()->transforms)
+			tf.setTransform(t, "bag");
+	EXPECT_TRUE(tf.canTransform("world", "right_camera", ::ros::Time(0)));
+	geometry_msgs::TransformStamped wb = tf.lookupTransform("world", "base_link", ::ros::Time(0));
+	ASSERT_TRUE(records.back().estimate_zxphi) << "the recording ends with a step's estimate";
+	const auto& last_est = *records.back().estimate_zxphi;
+	EXPECT_NEAR(wb.transform.translation.x, mrolr::ros::planarPose(last_est).translation().x(), 1e-9);
+	EXPECT_NEAR(wb.transform.translation.y, mrolr::ros::planarPose(last_est).translation().y(), 1e-9);
 	bag.close();
 
 	// MRPT's rosbag2rawlog, with the shipped configuration, gives every image back

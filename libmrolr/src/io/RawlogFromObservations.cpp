@@ -44,6 +44,20 @@ void readOdometry(const mrpt::obs::CObservationOdometry& o, Latest& l, std::vect
 	l.truth.reset();
 }
 
+/** The estimate after a step, on that step's odometry record (the last one before it). */
+void readEstimate(const mrpt::obs::CObservationRobotPose& e, std::vector<RawlogRecord>& out)
+{
+	for (auto it = out.rbegin(); it != out.rend(); ++it)
+		if (!it->has_stereo)
+		{
+			it->estimate_zxphi = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(e.pose.mean));
+			const int at[3] = {0, 1, 3};  // (x, y, yaw) of (x, y, z, yaw, pitch, roll)
+			for (int i = 0; i < 3; ++i)
+				for (int k = 0; k < 3; ++k) it->estimate_P(i, k) = e.pose.cov(at[i], at[k]);
+			return;
+		}
+}
+
 void readGrab(const mrpt::obs::CObservationRawDAQ& grab, Latest& l, const std::string& path,
               std::vector<RawlogRecord>& out)
 {
@@ -75,6 +89,8 @@ std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string
 		else if (const auto g = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs);
 		         g && g->sensorLabel == "GROUND_TRUTH")
 			l.truth = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(g->pose.mean));
+		else if (g && g->sensorLabel == "ESTIMATE")
+			readEstimate(*g, out);
 		else if (const auto d = std::dynamic_pointer_cast<mrpt::obs::CObservationRawDAQ>(obs))
 		{
 			if (d->sensorLabel == "HEAD_ANGLES" && d->AIN_double.size() == 4)

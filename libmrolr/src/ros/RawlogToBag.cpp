@@ -4,9 +4,11 @@
 #include <mrolr/ros/RawlogToBag.h>
 
 #include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace mrolr::ros
@@ -64,6 +66,17 @@ void writeState(const io::RawlogRecord& r, BagOut& out)
 	out.write("/odom", t, toOdometryMsg(r.odometry_zxphi, t));
 	out.tf(toTransformMsg(planarPose(r.odometry_zxphi), "odom", "base_link", t));
 	out.write("/head/joint_states", t, headJointsMsg(r.head_rad, t));
+	if (r.estimate_zxphi)
+	{  // REP 105: world → odom is the estimate's correction of the dead reckoning
+		geometry_msgs::PoseWithCovarianceStamped e;
+		e.header.stamp = toRosTime(t);
+		e.header.frame_id = "world";
+		e.pose.pose = toPoseMsg(planarPose(*r.estimate_zxphi));
+		e.pose.covariance = planarCovariance(r.estimate_P);
+		out.write("/mrolr/estimate", t, e);
+		out.tf(toTransformMsg(planarPose(*r.estimate_zxphi) * planarPose(r.odometry_zxphi).inverse(),
+		                      "world", "odom", t));
+	}
 	if (r.true_zxphi)
 	{
 		geometry_msgs::PoseStamped p;
@@ -80,7 +93,9 @@ BagSummary rawlogToBag(const std::string& rawlog, const std::string& bag,
 {
 	const auto records = io::readRawlog(rawlog);
 	BagOut out(bag);
-	if (!records.empty())
+	const bool estimated = std::any_of(records.begin(), records.end(),
+	                                   [](const io::RawlogRecord& r) { return r.estimate_zxphi.has_value(); });
+	if (!records.empty() && !estimated)  // no estimate: world and odom stay together
 		out.tf(toTransformMsg(Eigen::Isometry3d::Identity(), "world", "odom", records.front().time_s),
 		       "/tf_static");
 	for (size_t i = 0; i < records.size(); ++i)

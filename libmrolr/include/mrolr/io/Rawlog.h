@@ -34,6 +34,10 @@ struct RawlogRecord
 	Eigen::Vector3d odometry_zxphi = Eigen::Vector3d::Zero();
 	long ticks_right = 0, ticks_left = 0;
 	std::optional<Eigen::Vector3d> true_zxphi;  ///< the world side's truth, when it is known
+	/** The robot's estimate after this odometry reading's step, with its covariance P_vv (a
+	 * mission's recording: its `ESTIMATE`). */
+	std::optional<Eigen::Vector3d> estimate_zxphi;
+	Eigen::Matrix3d estimate_P = Eigen::Matrix3d::Zero();
 	Eigen::Vector4d head_rad = Eigen::Vector4d::Zero();  ///< pan, tilt, verg_left, verg_right
 	bool has_stereo = false;
 	mrpt::img::CImage left, right;  ///< 8-bit greyscale

@@ -8,9 +8,11 @@
  * | /stereo/left/camera_info, /stereo/right/camera_info | sensor_msgs/CameraInfo | the same |
  * | /odom | nav_msgs/Odometry (the encoders' dead reckoning) | odom → base_link |
  * | /head/joint_states | sensor_msgs/JointState: pan, tilt, verg_left, verg_right | — |
+ * | /mrolr/estimate | geometry_msgs/PoseWithCovarianceStamped (the robot's, a mission's) | world |
  * | /ground_truth/pose | geometry_msgs/PoseStamped (the world's, when recorded) | world |
- * | /tf | odom → base_link per odometry reading; base_link → left_camera → right_camera per pair | |
- * | /tf_static | world → odom (the start pose) | |
+ * | /tf | odom → base_link per odometry reading; world → odom per estimate (REP 105: the
+ *   estimate's correction of the dead reckoning); base_link → left_camera → right_camera per pair | |
+ * | /tf_static | world → odom, when the rawlog holds no estimate | |
  *
  * The camera frames are optical (x right, y down, z forward); base_link is on the ground under
  * the head's centre C0, x forward, y left, z up. */
