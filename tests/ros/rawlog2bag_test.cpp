@@ -118,14 +118,18 @@ TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
 	// world → base_link is the last estimate
 	tf2::BufferCore tf(::ros::Duration(1e6));
 	for (const auto& m : rosbag::View(bag, rosbag::TopicQuery("/tf")))
-		for (const auto& t : m.instantiate<tf2_msgs::TFMessage>()->transforms)
-			tf.setTransform(t, "bag");
+	{
+		const auto tfs = m.instantiate<tf2_msgs::TFMessage>();  // kept alive while read
+		for (const auto& t : tfs->transforms) tf.setTransform(t, "bag");
+	}
 	EXPECT_TRUE(tf.canTransform("world", "right_camera", ::ros::Time(0)));
-	geometry_msgs::TransformStamped wb = tf.lookupTransform("world", "base_link", ::ros::Time(0));
-	ASSERT_TRUE(records.back().estimate_zxphi) << "the recording ends with a step's estimate";
-	const auto& last_est = *records.back().estimate_zxphi;
-	EXPECT_NEAR(wb.transform.translation.x, mrolr::ros::planarPose(last_est).translation().x(), 1e-9);
-	EXPECT_NEAR(wb.transform.translation.y, mrolr::ros::planarPose(last_est).translation().y(), 1e-9);
+	// world → base_link at the end: the last estimate's correction applied to the last odometry
+	const Eigen::Isometry3d expected = mrolr::ros::planarPose(*estimated->estimate_zxphi) *
+	                                   mrolr::ros::planarPose(estimated->odometry_zxphi).inverse() *
+	                                   mrolr::ros::planarPose(last->odometry_zxphi);
+	const auto wb = tf.lookupTransform("world", "base_link", ::ros::Time(0));
+	EXPECT_NEAR(wb.transform.translation.x, expected.translation().x(), 1e-9);
+	EXPECT_NEAR(wb.transform.translation.y, expected.translation().y(), 1e-9);
 	bag.close();
 
 	// MRPT's rosbag2rawlog, with the shipped configuration, gives every image back
