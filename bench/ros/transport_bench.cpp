@@ -16,21 +16,24 @@
 
 #include <atomic>
 #include <memory>
-#include <random>
+#include <opencv2/core.hpp>
 
 using namespace mrolr;
 
 namespace
 {
+/** A 640x480 grey image of uniform noise (incompressible, like the rendered pairs). */
 mrpt::img::CImage noise(unsigned seed)
 {
-	std::mt19937 rng(seed);
-	mrpt::img::CImage im(640, 480, mrpt::img::CH_GRAY);
-	for (unsigned y = 0; y < 480; ++y)
-		for (unsigned x = 0; x < 640; ++x) im.ptrLine<uint8_t>(y)[x] = uint8_t(rng());
-	return im;
+	cv::Mat m(480, 640, CV_8UC1);
+	cv::theRNG().state = seed;
+	cv::randu(m, 0, 256);
+	return mrpt::img::CImage(m, mrpt::img::DEEP_COPY);
 }
+}  // namespace
 
+namespace
+{
 /** The other process: echoes /pair/left and /pair/right back on /echo/left and /echo/right. */
 [[noreturn]] void echo()
 {

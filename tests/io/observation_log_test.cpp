@@ -5,6 +5,8 @@
 
 #include <mrpt/obs/CObservationRawDAQ.h>
 
+#include "../common/FreshTempDir.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,14 +16,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string freshDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_" + name);
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
 mrpt::obs::CObservationRawDAQ::Ptr numbered(double i)
 {
 	auto o = mrpt::obs::CObservationRawDAQ::Create();
@@ -43,7 +37,7 @@ std::vector<double> numbersIn(const std::string& path)
 
 TEST(ObservationLog, ReadsBackEveryRecordInOrderAndCommentsKeepTheirLabels)
 {
-	const auto dir = freshDir("observation_log_order");
+	const auto dir = mrolr::test_support::freshTempDir("observation_log_order");
 	{
 		io::ObservationLogWriter w(dir + "/a.rawlog");
 		for (int i = 0; i < 5; ++i) w.write(*numbered(i));
@@ -63,7 +57,7 @@ TEST(ObservationLog, ReadsBackEveryRecordInOrderAndCommentsKeepTheirLabels)
 
 TEST(ObservationLog, ATornLastRecordIsNamedAndTheOnesBeforeItRead)
 {
-	const auto dir = freshDir("observation_log_torn");
+	const auto dir = mrolr::test_support::freshTempDir("observation_log_torn");
 	{
 		io::ObservationLogWriter w(dir + "/a.rawlog");
 		for (int i = 0; i < 4; ++i) w.write(*numbered(i));
@@ -76,7 +70,7 @@ TEST(ObservationLog, ATornLastRecordIsNamedAndTheOnesBeforeItRead)
 
 TEST(ObservationQueue, WritesInTheOrderPostedAndEverythingQueuedBeforeItCloses)
 {
-	const auto dir = freshDir("observation_queue_order");
+	const auto dir = mrolr::test_support::freshTempDir("observation_queue_order");
 	{
 		io::ObservationQueue q(dir + "/a.rawlog", 4);  // a small queue: post() has to wait
 		for (int i = 0; i < 200; ++i)
@@ -89,7 +83,7 @@ TEST(ObservationQueue, WritesInTheOrderPostedAndEverythingQueuedBeforeItCloses)
 
 TEST(ObservationQueue, AFailedWriteIsThrownByTheNextPostNamingTheFile)
 {
-	const auto dir = freshDir("observation_queue_failure");
+	const auto dir = mrolr::test_support::freshTempDir("observation_queue_failure");
 	io::ObservationQueue q(dir + "/a.rawlog");
 	q.post([](io::ObservationLogWriter& w) { w.write(*numbered(1)); });
 	q.post([](io::ObservationLogWriter&) { throw std::runtime_error("disk full"); });

@@ -1,6 +1,8 @@
 #pragma once
 // The shipped mission files in memory, for tests that override keys, and a whole in-process run
 // as mrolr-mission does it: the robot side on the simulated lab's devices, then eval.
+#include "../common/FreshTempDir.h"
+
 #include <mrolr/apps/SimulatedWorld.h>
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/mission/Mission.h>
@@ -17,14 +19,7 @@
 
 namespace mrolr::mission::test
 {
-/** `<tmp>/mrolr_<name>`, removed if it was there, then created empty (or left absent). */
-inline std::string freshTempDir(const std::string& name, bool create = true)
-{
-	const auto d = std::filesystem::temp_directory_path() / ("mrolr_" + name);
-	std::filesystem::remove_all(d);
-	if (create) std::filesystem::create_directories(d);
-	return d.string();
-}
+using mrolr::test_support::freshTempDir;
 
 inline std::string configDir()
 {

@@ -8,6 +8,8 @@
 
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include "../common/FreshTempDir.h"
+
 #include <gtest/gtest.h>
 #include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
@@ -25,14 +27,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string freshDir(const std::string& name)
-{
-	const auto d = fs::temp_directory_path() / ("mrolr_" + name);
-	fs::remove_all(d);
-	fs::create_directories(d);
-	return d.string();
-}
-
 /** A short mission recorded by mrolr-mission: the route runs into the table (a few pairs). */
 std::string recordMission(const std::string& dir)
 {
@@ -51,7 +45,7 @@ std::string recordMission(const std::string& dir)
 
 TEST(Rawlog2Bag, AMissionsRecordingBecomesABagWithEveryPairOdometryAndTruth)
 {
-	const auto dir = freshDir("rawlog2bag_mission");
+	const auto dir = mrolr::test_support::freshTempDir("rawlog2bag_mission");
 	const auto rawlog = recordMission(dir);
 	const auto records = io::readRawlog(rawlog);
 	size_t pairs = 0, truths = 0, estimates = 0;
@@ -162,7 +156,7 @@ TEST(Rawlog2Bag, BadArgumentsAndUnreadableFilesAreNamed)
 	{
 		EXPECT_NE(std::string(e.what()).find("/nonexistent/in.rawlog"), std::string::npos);
 	}
-	const auto dir = freshDir("rawlog2bag_garbage");
+	const auto dir = mrolr::test_support::freshTempDir("rawlog2bag_garbage");
 	std::ofstream(dir + "/g.rawlog") << "garbage";
 	apps::Rawlog2BagApp garbage;
 	garbage.initialize({"mrolr-rawlog2bag", dir + "/g.rawlog", dir + "/g.bag", "--quiet"});
