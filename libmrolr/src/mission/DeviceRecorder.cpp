@@ -199,7 +199,7 @@ std::atomic<bool>& DeviceRecorder::stopFlag(std::atomic<bool>* signal)
 
 void DeviceRecorder::write(mrpt::obs::CObservation::Ptr obs)
 {
-	impl_->post(std::move(obs));
+	if (obs) impl_->post(std::move(obs));
 }
 
 void DeviceRecorder::flush()

@@ -34,7 +34,7 @@ class DeviceRecorder : public DecisionLog
 	std::atomic<bool>& stopFlag(std::atomic<bool>* signal);
 	/** Called after each base step: the world side's truth, recorded beside (may be null). */
 	std::function<mrpt::obs::CObservation::Ptr()> world_truth;
-	/** Records @p obs after what was recorded so far. */
+	/** Records @p obs after what was recorded so far (nothing for a null one). */
 	void write(mrpt::obs::CObservation::Ptr obs);
 	/** Waits until everything recorded so far is in the file (throws std::runtime_error naming
 	 * the file when a write failed; a failed write also stops the next device call). */
