@@ -98,15 +98,15 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 		images += e.path().filename().string().rfind("BISIGHT_", 0) == 0;
 	EXPECT_EQ(images, 2 * pairs);
 	EXPECT_GE(j["recording"]["images"].get<size_t>(), images);
-	// The rawlog reads back as records: one per odometry reading and per stereo pair, the truth
-	// (the world side's) on the odometry readings that follow a step.
+	// The rawlog reads back as records: one per odometry reading and per stereo pair, each with
+	// the truth of its step (the world side's).
 	const auto records = io::readRawlog(dir + "/mission.rawlog");
 	size_t stereo = 0, truth = 0;
 	for (const auto& rec : records)
 		stereo += rec.has_stereo && rec.left.getWidth() == 640, truth += rec.true_zxphi.has_value();
 	EXPECT_EQ(stereo, pairs);
 	EXPECT_EQ(records.size() - stereo, r.path.size());
-	EXPECT_EQ(truth, records.size() - stereo);
+	EXPECT_EQ(truth, records.size());
 	mrpt::opengl::COpenGLScene scene;
 	ASSERT_TRUE(scene.loadFromFile(dir + "/mission.3Dscene"));
 	EXPECT_TRUE(scene.getByName("path.true"));

@@ -26,11 +26,11 @@ Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3DQuat& q)
 	return T;
 }
 
-/** The state the records carry forward: the latest odometry, head angles and truth. */
+/** The state the records carry forward: the latest odometry, head angles and truth (the base
+ * stands still between its steps, so a pair's truth is its step's). */
 struct Latest
 {
 	RawlogRecord state;
-	std::optional<Eigen::Vector3d> truth;
 	mrpt::obs::CObservationStereoImages::Ptr pair;
 };
 
@@ -40,8 +40,6 @@ void readOdometry(const mrpt::obs::CObservationOdometry& o, Latest& l, std::vect
 	l.state.odometry_zxphi = geometry::vehicleFromMrpt(o.odometry);
 	l.state.ticks_right = o.encoderRightTicks, l.state.ticks_left = o.encoderLeftTicks;
 	out.push_back(l.state);
-	out.back().true_zxphi = l.truth;
-	l.truth.reset();
 }
 
 /** The estimate after a step, on that step's odometry record (the last one before it). */
@@ -88,7 +86,7 @@ std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string
 			l.pair = s;
 		else if (const auto g = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs);
 		         g && g->sensorLabel == "GROUND_TRUTH")
-			l.truth = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(g->pose.mean));
+			l.state.true_zxphi = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(g->pose.mean));
 		else if (g && g->sensorLabel == "ESTIMATE")
 			readEstimate(*g, out);
 		else if (const auto d = std::dynamic_pointer_cast<mrpt::obs::CObservationRawDAQ>(obs))

@@ -8,8 +8,9 @@
 
 namespace mrolr::io
 {
-/** One record per odometry reading (with the truth written before it, if any) and one per
- * grabbed pair (`BISIGHT` then its `HEAD_GRAB`), carrying the latest odometry and head angles;
+/** One record per odometry reading and one per grabbed pair (`BISIGHT` then its `HEAD_GRAB`),
+ * each carrying the latest odometry, head angles and truth (`GROUND_TRUTH`, the world side's,
+ * when the recording has it: the base stands still between steps);
  * @p path locates the external images. */
 std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path);
 
