@@ -279,10 +279,6 @@ RecordedCalls readDeviceCalls(const std::string& path)
 	return out;
 }
 
-}  // namespace mrolr::mission
-
-namespace mrolr::mission
-{
 hw::StereoImages loadPair(const hw::StereoImages& recorded, const std::string& rawlog_path)
 {
 	hw::StereoImages p = recorded;
@@ -290,4 +286,5 @@ hw::StereoImages loadPair(const hw::StereoImages& recorded, const std::string& r
 	p.right = io::loadExternal(recorded.right, rawlog_path);
 	return p;
 }
+
 }  // namespace mrolr::mission
