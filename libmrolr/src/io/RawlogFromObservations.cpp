@@ -13,11 +13,6 @@ namespace mrolr::io
 {
 namespace
 {
-double timeOf(const mrpt::obs::CObservation& o)
-{
-	return mrpt::Clock::toDouble(o.timestamp) - 1.7e9;
-}
-
 Eigen::Isometry3d isometryOf(const mrpt::poses::CPose3DQuat& q)
 {
 	Eigen::Isometry3d T;
@@ -36,7 +31,7 @@ struct Latest
 
 void readOdometry(const mrpt::obs::CObservationOdometry& o, Latest& l, std::vector<RawlogRecord>& out)
 {
-	l.state.time_s = timeOf(o);
+	l.state.time_s = timeOf(o.timestamp);
 	l.state.odometry_zxphi = geometry::vehicleFromMrpt(o.odometry);
 	l.state.ticks_right = o.encoderRightTicks, l.state.ticks_left = o.encoderLeftTicks;
 	out.push_back(l.state);
@@ -61,7 +56,7 @@ void readGrab(const mrpt::obs::CObservationRawDAQ& grab, Latest& l, const std::s
 {
 	if (!l.pair || grab.AIN_double.size() < 4) return;  // a failed grab: no pair
 	RawlogRecord r = l.state;
-	r.time_s = timeOf(grab);
+	r.time_s = timeOf(grab.timestamp);
 	r.head_rad = Eigen::Vector4d(grab.AIN_double.data());
 	r.has_stereo = true;
 	r.left = loadExternal(l.pair->imageLeft, path);

@@ -56,7 +56,7 @@ RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& pat
 	const auto gt = sf.getObservationByClass<mrpt::obs::CObservationRobotPose>();
 	if (!odo || !head) fail(path, i, "missing ODOMETRY or HEAD_ANGLES");
 	if (head->AIN_double.size() != 4) fail(path, i, "HEAD_ANGLES must hold 4 values");
-	r.time_s = mrpt::Clock::toDouble(odo->timestamp) - 1.7e9;
+	r.time_s = timeOf(odo->timestamp);
 	r.odometry_zxphi = geometry::vehicleFromMrpt(odo->odometry);
 	r.ticks_right = odo->encoderRightTicks;
 	r.ticks_left = odo->encoderLeftTicks;

@@ -33,11 +33,6 @@ std::string imagesDirFor(const std::string& rawlog_path)
 
 namespace
 {
-mrpt::Clock::time_point stamp(double t)
-{
-	return mrpt::Clock::fromDouble(1.7e9 + t);
-}
-
 mrpt::poses::CPose3D poseOfMatrix(const Eigen::Isometry3d& T)
 {
 	mrpt::math::CMatrixDouble44 H;
@@ -60,7 +55,7 @@ mrpt::obs::CObservationStereoImages::Ptr stereoObs(const RawlogRecord& r, const 
 {
 	auto o = mrpt::obs::CObservationStereoImages::Create();
 	o->sensorLabel = "BISIGHT";
-	o->timestamp = stamp(r.time_s);
+	o->timestamp = stampOf(r.time_s);
 	char name[64];
 	std::snprintf(name, sizeof(name), "BISIGHT_%06zu", index);
 	o->imageLeft = external(r.left, dir, std::string(name) + "_left.png");
@@ -77,7 +72,7 @@ mrpt::obs::CSensoryFrame frameOf(const RawlogRecord& r, const std::string& dir, 
 	mrpt::obs::CSensoryFrame sf;
 	auto odo = mrpt::obs::CObservationOdometry::Create();
 	odo->sensorLabel = "ODOMETRY";
-	odo->timestamp = stamp(r.time_s);
+	odo->timestamp = stampOf(r.time_s);
 	odo->odometry = geometry::vehicleToMrpt(r.odometry_zxphi);
 	odo->hasEncodersInfo = true;
 	odo->encoderRightTicks = int32_t(r.ticks_right);
@@ -85,7 +80,7 @@ mrpt::obs::CSensoryFrame frameOf(const RawlogRecord& r, const std::string& dir, 
 	sf.insert(odo);
 	auto head = mrpt::obs::CObservationRawDAQ::Create();
 	head->sensorLabel = "HEAD_ANGLES";
-	head->timestamp = stamp(r.time_s);
+	head->timestamp = stampOf(r.time_s);
 	head->AIN_double = {r.head_rad[0], r.head_rad[1], r.head_rad[2], r.head_rad[3]};
 	head->AIN_channel_count = 4;
 	sf.insert(head);
@@ -93,7 +88,7 @@ mrpt::obs::CSensoryFrame frameOf(const RawlogRecord& r, const std::string& dir, 
 	{
 		auto gt = mrpt::obs::CObservationRobotPose::Create();
 		gt->sensorLabel = "GROUND_TRUTH";
-		gt->timestamp = stamp(r.time_s);
+		gt->timestamp = stampOf(r.time_s);
 		gt->pose.mean = mrpt::poses::CPose3D(geometry::vehicleToMrpt(*r.true_zxphi));
 		sf.insert(gt);
 	}
@@ -117,7 +112,7 @@ void RawlogWriter::write(const RawlogRecord& r)
 {
 	mrpt::obs::CActionCollection acts;
 	mrpt::obs::CActionRobotMovement2D move;
-	move.timestamp = stamp(r.time_s);
+	move.timestamp = stampOf(r.time_s);
 	const auto delta = geometry::vehicleToMrpt(r.odometry_zxphi) -
 	                   geometry::vehicleToMrpt(count_ == 0 ? r.odometry_zxphi : last_odometry_);
 	move.computeFromOdometry(delta, mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());

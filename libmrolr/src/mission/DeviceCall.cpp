@@ -48,11 +48,6 @@ const CallInfo& info(CallKind k)
 	return kCalls.at(static_cast<size_t>(k));
 }
 
-mrpt::Clock::time_point stamp(double t)
-{
-	return mrpt::Clock::fromDouble(1.7e9 + t);  // MRPT rejects timestamp 0 (io/Rawlog.h)
-}
-
 mrpt::poses::CPose3DQuat poseOf(const Eigen::Isometry3d& T)
 {
 	mrpt::math::CMatrixDouble44 H;
@@ -67,7 +62,7 @@ mrpt::obs::CObservation::Ptr stereoOf(const DeviceCall& c, size_t index,
 {
 	auto o = mrpt::obs::CObservationStereoImages::Create();
 	o->sensorLabel = "BISIGHT";
-	o->timestamp = stamp(c.time_s);
+	o->timestamp = io::stampOf(c.time_s);
 	char name[64];
 	std::snprintf(name, sizeof(name), "BISIGHT_%07zu", index);
 	o->imageLeft = log.external(c.images->left, std::string(name) + "_left.png");
@@ -181,11 +176,11 @@ std::vector<mrpt::obs::CObservation::Ptr> observationsOf(const DeviceCall& c, si
 	if (c.fault)
 	{
 		out.push_back(io::labelledComment(kFaultLabel, c.fault->type + "\n" + c.fault->message,
-		                                  stamp(c.time_s)));
+		                                  io::stampOf(c.time_s)));
 	}
 	auto daq = mrpt::obs::CObservationRawDAQ::Create();
 	daq->sensorLabel = labelOf(c.kind);
-	daq->timestamp = stamp(c.time_s);
+	daq->timestamp = io::stampOf(c.time_s);
 	daq->AOUT_double = c.request;
 	daq->AIN_double = c.answer;
 	daq->AIN_channel_count = static_cast<uint16_t>(c.answer.size());
@@ -224,7 +219,7 @@ DeviceCall callOf(const mrpt::obs::CObservationRawDAQ& daq, CallKind kind,
 {
 	const auto& in = info(kind);
 	DeviceCall c{kind, daq.AOUT_double, daq.AIN_double, std::nullopt, std::move(fault),
-	             mrpt::Clock::toDouble(daq.timestamp) - 1.7e9};
+	             io::timeOf(daq.timestamp)};
 	fault.reset();
 	if (c.request.size() != in.request)
 		malformed(path, i, in.label, "holds " + std::to_string(c.request.size()) +

@@ -2,6 +2,7 @@
 // The state behind DeviceRecorder, shared by its device decorators and its decision writers.
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/io/ObservationQueue.h>
+#include <mrolr/io/Rawlog.h>
 #include <mrolr/mission/DeviceRecorder.h>
 
 #include <mrpt/obs/CObservationComment.h>
@@ -32,7 +33,7 @@ struct DeviceRecorder::Impl
 	std::unique_ptr<hw::HeadDevice> head_device;
 	std::unique_ptr<hw::ArmDevice> arm;
 
-	mrpt::Clock::time_point stamp() const { return mrpt::Clock::fromDouble(1.7e9 + clock_s); }
+	mrpt::Clock::time_point stamp() const { return io::stampOf(clock_s); }
 
 	/** Queues @p obs for the writer thread. */
 	void post(mrpt::obs::CObservation::Ptr obs)

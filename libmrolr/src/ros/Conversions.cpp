@@ -12,12 +12,12 @@ namespace mrolr::ros
 {
 ::ros::Time toRosTime(double time_s)
 {
-	return ::ros::Time(kTimeOffset_s + time_s);
+	return ::ros::Time(io::kTimeOffset_s + time_s);
 }
 
 double fromRosTime(const ::ros::Time& t)
 {
-	return t.toSec() - kTimeOffset_s;
+	return t.toSec() - io::kTimeOffset_s;
 }
 
 namespace

@@ -14,6 +14,7 @@
  *    in records that carry it (written by the world side; a robot alone has no truth).
  * Every observation carries the timestamp 1.7e9 s + time_s (MRPT rejects timestamp 0). */
 
+#include <mrpt/core/Clock.h>
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/TCamera.h>
 
@@ -27,6 +28,17 @@
 
 namespace mrolr::io
 {
+/** A run's time t (s) is stored as the timestamp 1.7e9 s + t: MRPT rejects timestamp 0. */
+inline constexpr double kTimeOffset_s = 1.7e9;
+inline mrpt::Clock::time_point stampOf(double time_s)
+{
+	return mrpt::Clock::fromDouble(kTimeOffset_s + time_s);
+}
+inline double timeOf(mrpt::Clock::time_point stamp)
+{
+	return mrpt::Clock::toDouble(stamp) - kTimeOffset_s;
+}
+
 /** One time step of a run. Angles in radians; poses (z, x, φ) in W. */
 struct RawlogRecord
 {

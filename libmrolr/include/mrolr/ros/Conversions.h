@@ -7,6 +7,8 @@
  * Images are converted here, not by MRPT 2.5.8's ros1bridge, whose image conversion labels every
  * image `bgr8` (mono ones included) and whose stereo conversion fills the right message from the
  * left image. */
+#include <mrolr/io/Rawlog.h>
+
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/TCamera.h>
 
@@ -25,8 +27,7 @@
 
 namespace mrolr::ros
 {
-/** The offset of MROLR's times in ROS time (ROS time 0 is "no time"). */
-inline constexpr double kTimeOffset_s = 1.7e9;
+/** ROS time io::kTimeOffset_s + t, as the rawlogs stamp it (ROS time 0 is "no time"). */
 ::ros::Time toRosTime(double time_s);
 double fromRosTime(const ::ros::Time& t);
 

@@ -1,6 +1,7 @@
 // The world side's truth as GROUND_TRUTH records.
 #include <mrolr/apps/TruthRecording.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/io/Rawlog.h>
 
 #include <mrpt/obs/CObservationRobotPose.h>
 
@@ -12,7 +13,7 @@ mrpt::obs::CObservationRobotPose::Ptr truthOf(const sim::TruthLog::Step& s)
 {
 	auto gt = mrpt::obs::CObservationRobotPose::Create();
 	gt->sensorLabel = "GROUND_TRUTH";
-	gt->timestamp = mrpt::Clock::fromDouble(1.7e9 + s.time_s);
+	gt->timestamp = io::stampOf(s.time_s);
 	gt->pose.mean = mrpt::poses::CPose3D(geometry::vehicleToMrpt(s.xv_zxphi));
 	return gt;
 }
@@ -33,7 +34,7 @@ std::vector<sim::TruthLog::Step> recordedTruthSteps(const std::string& rawlog_pa
 	for (const auto& obs : io::readObservationLog(rawlog_path).observations)
 		if (obs->sensorLabel == "GROUND_TRUTH")
 			if (const auto gt = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obs))
-				steps.push_back({mrpt::Clock::toDouble(gt->timestamp) - 1.7e9,
+				steps.push_back({io::timeOf(gt->timestamp),
 				                 geometry::vehicleFromMrpt(mrpt::poses::CPose2D(gt->pose.mean))});
 	return steps;
 }

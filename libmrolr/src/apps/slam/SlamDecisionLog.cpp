@@ -1,4 +1,5 @@
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/io/Rawlog.h>
 #include "SlamRecordings.h"
 
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -32,7 +33,7 @@ void writeEllipse(std::ostream& s, const char* key, const vision::ImageEllipse& 
 
 mrpt::Clock::time_point stamp(size_t step)
 {
-	return mrpt::Clock::fromDouble(1.7e9 + double(step));  // MRPT rejects timestamp 0
+	return io::stampOf(double(step));
 }
 
 mrpt::obs::CObservationRobotPose::Ptr poseObs(const std::string& label, const Eigen::Vector3d& x,
