@@ -1,7 +1,7 @@
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/apps/ReplayCheck.h>
 #include <mrolr/apps/TruthRecording.h>
-#include "MissionSummary.h"
+#include <mrolr/apps/MissionSummary.h>
 #include <mrolr/apps/RunConfiguration.h>
 #include <mrolr/apps/SerialEmulation.h>
 #include <mrolr/apps/SimulatedWorld.h>

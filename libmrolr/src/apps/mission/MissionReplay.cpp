@@ -3,7 +3,7 @@
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/apps/ReplayCheck.h>
 #include <mrolr/apps/TruthRecording.h>
-#include "MissionSummary.h"
+#include <mrolr/apps/MissionSummary.h>
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/eval/MissionOutputs.h>
 #include <mrolr/mission/DevicePlayback.h>

@@ -1,5 +1,5 @@
 // mrolr-mission's summary and progress lines.
-#include "MissionSummary.h"
+#include <mrolr/apps/MissionSummary.h>
 
 #include <iomanip>
 #include <sstream>
