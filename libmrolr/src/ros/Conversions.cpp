@@ -5,19 +5,33 @@
 #include <opencv2/imgproc.hpp>
 #include <sensor_msgs/image_encodings.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
 namespace mrolr::ros
 {
+namespace
+{
+/** The offset as a whole ROS time: the run's time is added as a duration, so it keeps its
+ * nanoseconds (1.7e9 + t as one double would round t to 2.4e-7 s). */
+const ::ros::Time kOffset(static_cast<uint32_t>(io::kTimeOffset_s), 0);
+}  // namespace
+
 ::ros::Time toRosTime(double time_s)
 {
-	return ::ros::Time(io::kTimeOffset_s + time_s);
+	return kOffset + ::ros::Duration(time_s);
 }
 
 double fromRosTime(const ::ros::Time& t)
 {
-	return t.toSec() - io::kTimeOffset_s;
+	return secondsOf(t - kOffset);
+}
+
+double secondsOf(const ::ros::Duration& d)
+{
+	return double(d.sec) + double(d.nsec) / 1e9;
 }
 
 namespace
@@ -134,6 +148,13 @@ Eigen::Isometry3d planarPose(const Eigen::Vector3d& xv)
 	return T;
 }
 
+Eigen::Vector3d planarPoseFrom(const geometry_msgs::Pose& p)
+{
+	const auto& q = p.orientation;
+	const double yaw = std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+	return geometry::vehicleFromMrpt(mrpt::poses::CPose2D(p.position.x, p.position.y, yaw));
+}
+
 namespace
 {
 constexpr int kPlanarAxes[3] = {0, 1, 5};  // z → x, x → y, φ → yaw in (x, y, z, roll, pitch, yaw)
@@ -172,6 +193,22 @@ sensor_msgs::JointState headJointsMsg(const Eigen::Vector4d& head_rad, double ti
 	j.name = {"pan", "tilt", "verg_left", "verg_right"};
 	j.position = {head_rad[0], head_rad[1], head_rad[2], head_rad[3]};
 	return j;
+}
+
+std::vector<double> jointPositions(const sensor_msgs::JointState& m,
+                                   const std::vector<std::string>& names)
+{
+	if (m.position.size() != m.name.size())
+		throw std::invalid_argument("JointState: " + std::to_string(m.name.size()) + " names but " +
+		                            std::to_string(m.position.size()) + " positions");
+	std::vector<double> out;
+	for (const auto& n : names)
+	{
+		const auto it = std::find(m.name.begin(), m.name.end(), n);
+		if (it == m.name.end()) throw std::invalid_argument("JointState: no joint '" + n + "'");
+		out.push_back(m.position[size_t(it - m.name.begin())]);
+	}
+	return out;
 }
 
 }  // namespace mrolr::ros

@@ -24,12 +24,18 @@
 #include <sensor_msgs/JointState.h>
 
 #include <string>
+#include <vector>
 
 namespace mrolr::ros
 {
-/** ROS time io::kTimeOffset_s + t, as the rawlogs stamp it (ROS time 0 is "no time"). */
+/** ROS time io::kTimeOffset_s + t, as the rawlogs stamp it (ROS time 0 is "no time"), to the
+ * nanosecond. */
 ::ros::Time toRosTime(double time_s);
 double fromRosTime(const ::ros::Time& t);
+/** A duration in seconds as sec + nsec / 1e9 (a division, so a duration given with up to nine
+ * decimals, such as 0.1 s, comes back as the same double; ros::Duration::toSec multiplies by
+ * 1e-9 and gives 0.30000000000000004 for 0.3). */
+double secondsOf(const ::ros::Duration& d);
 
 /** An 8-bit image: `mono8` with one channel, `bgr8` with three (OpenCV's order). Throws
  * std::invalid_argument for any other depth or channel count. */
@@ -52,6 +58,9 @@ geometry_msgs::TransformStamped toTransformMsg(const Eigen::Isometry3d& T_childI
 
 /** A vehicle pose (z, x, φ) in W as a planar pose in `frame`, x = z, y = x, yaw = φ. */
 Eigen::Isometry3d planarPose(const Eigen::Vector3d& xv_zxphi);
+/** The vehicle pose (z, x, φ) of a planar pose (x, y, yaw; roll and pitch ignored): the inverse
+ * of planarPose, φ wrapped to (−π, π]. */
+Eigen::Vector3d planarPoseFrom(const geometry_msgs::Pose& p);
 /** Its covariance (P_vv over z, x, φ) in ROS's row-major 6×6 over (x, y, z, roll, pitch, yaw);
  * the three unobserved axes get @p unobserved_var. */
 boost::array<double, 36> planarCovariance(const Eigen::Matrix3d& P_vv,
@@ -64,5 +73,10 @@ nav_msgs::Odometry toOdometryMsg(const Eigen::Vector3d& xv_zxphi, double time_s)
 
 /** The head's joints as sensor_msgs/JointState: `pan`, `tilt`, `verg_left`, `verg_right` (rad). */
 sensor_msgs::JointState headJointsMsg(const Eigen::Vector4d& head_rad, double time_s);
+
+/** The positions of the joints @p names in @p m, in that order; throws std::invalid_argument
+ * naming a joint that is missing or a message whose arrays disagree in length. */
+std::vector<double> jointPositions(const sensor_msgs::JointState& m,
+                                   const std::vector<std::string>& names);
 
 }  // namespace mrolr::ros
