@@ -1,0 +1,64 @@
+#pragma once
+// What mrolr-ros-robot shows of itself on ROS (docs/ros.md "Watching it in RViz"): its estimate
+// with covariance, its estimated tf chain world → odom and base_link → cameras, the recognised
+// object's pose, the mission's stage, and at the end its map with the 95 % ellipsoids. Only the
+// robot's own beliefs: it reads no topic.
+#include <mrolr/geometry/BiSightHead.h>
+#include <mrolr/mission/DecisionLog.h>
+#include <mrolr/mission/Mission.h>
+
+#include <ros/ros.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <memory>
+
+namespace mrolr::apps
+{
+/** The map as markers in `world` (REP 105 axes): a sphere per landmark, its 95 % ellipsoid
+ * (χ²₃ = 7.815) as a translucent scaled sphere, and its label. */
+visualization_msgs::MarkerArray mapMarkers(const std::vector<mission::MappedLandmark>& map,
+                                           double time_s);
+
+class RobotView : public mission::DecisionLog
+{
+ public:
+	/** @p next also gets every decision (the recording); may be null. */
+	RobotView(::ros::NodeHandle& nh, const geometry::BiSightHead& head, mission::DecisionLog* next);
+	void estimate(const mission::PathSample& s) override;
+	void measurement(const vision::CycleRecord& c) override;
+	void recognised(const mission::SearchResult& r, const Eigen::Vector3d& xv_estimate,
+	                const model::WireFrame& target) override;
+	void graspPlanned(const mission::RetrievalResult& r) override;
+	void note(const mission::TimelineEvent& e) override;
+	/** The cameras where the robot's calibration puts them at @p pair's angles (tf). */
+	void cameras(const hw::StereoImages& pair);
+	/** The final map and stage (latched, so a late RViz still sees them). */
+	void finished(const mission::MissionResult& r);
+
+ private:
+	geometry::BiSightHead head_;
+	mission::DecisionLog* next_;
+	::ros::Publisher estimate_, tf_, object_, stage_, map_;
+	double last_time_s_ = 0;
+};
+
+/** A head whose grabs also go to RobotView::cameras. */
+class ViewedHead : public hw::HeadDevice
+{
+ public:
+	ViewedHead(hw::HeadDevice& head, RobotView& view) : head_(head), view_(view) {}
+	double moveTo(const geometry::HeadAngles& t) override { return head_.moveTo(t); }
+	geometry::HeadAngles angles() const override { return head_.angles(); }
+	hw::StereoImages grab() override
+	{
+		auto pair = head_.grab();
+		view_.cameras(pair);
+		return pair;
+	}
+
+ private:
+	hw::HeadDevice& head_;
+	RobotView& view_;
+};
+
+}  // namespace mrolr::apps
