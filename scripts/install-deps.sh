@@ -14,8 +14,9 @@ PACKAGES=(
   libbenchmark-dev
   xvfb xauth x11-apps imagemagick xdotool
   # ROS 1 from Debian (the ros area, docs/ros.md): libmrpt-dev already brings roscpp,
-  # rosbag_storage, cv_bridge, tf2 and sensor/geometry/stereo messages; a master on loopback
-  python3-rosmaster rosout
+  # rosbag_storage, cv_bridge, tf2 and sensor/geometry/stereo messages; a master on loopback;
+  # RViz to watch the robot (scripts/ros-mission.sh --rviz)
+  python3-rosmaster rosout rviz
   libnav-msgs-dev libtrajectory-msgs-dev libtf2-ros-dev libvisualization-msgs-dev
 )
 

@@ -5,8 +5,11 @@
 #   then everything it started is stopped, the bag closed, and the mission's summary printed.
 #
 #   scripts/ros-mission.sh [--world W.ini] [--plan P.ini] [--config C.ini] [--out DIR]
-#                          [--bag OUT.bag] [--no-bag]
+#                          [--bag OUT.bag] [--no-bag] [--rviz]
 #
+# --rviz also opens RViz on config/mrolr.rviz (the estimate with its covariance, the path, the map
+# with its 95 % ellipsoids, tf, the recognised object, the left camera) and keeps the nodes up
+# until RViz is closed.
 # Nothing leaves the machine: ROS_MASTER_URI and ROS_IP are on loopback. Exit status: the robot
 # node's (0 success, 3 the mission failed, 1 an error, 130/143 interrupted).
 set -euo pipefail
@@ -14,9 +17,9 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BIN=${MROLR_BIN:-$ROOT/${BUILD_DIR:-build}/bin}
 CONFIG=config/mission_sim.ini
-WORLD="" PLAN="" OUT="" BAG="" NO_BAG=0
+WORLD="" PLAN="" OUT="" BAG="" NO_BAG=0 RVIZ=0
 
-usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; }
 die() { echo "ros-mission: $*" >&2; exit 2; }
 need_value() { [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value (see --help)"; }
 
@@ -28,6 +31,7 @@ while [ $# -gt 0 ]; do
     --out) need_value "$@"; OUT=$2; shift 2 ;;
     --bag) need_value "$@"; BAG=$2; shift 2 ;;
     --no-bag) NO_BAG=1; shift ;;
+    --rviz) RVIZ=1; shift ;;
     -h|--help) usage; exit 0 ;;
     *) die "unknown argument '$1' (see --help)" ;;
   esac
@@ -36,6 +40,7 @@ done
 for b in mrolr-ros-lab mrolr-ros-robot mrolr-ros-bag; do
   [ -x "$BIN/$b" ] || die "$BIN/$b is not built (run 'make build'; ROS is found by scripts/install-deps.sh)"
 done
+[ "$RVIZ" = 0 ] || command -v rviz > /dev/null || die "rviz is not installed (run scripts/install-deps.sh)"
 [ -x /usr/bin/rosmaster ] || die "/usr/bin/rosmaster is missing (run scripts/install-deps.sh)"
 for f in "$CONFIG" ${WORLD:+"$WORLD"} ${PLAN:+"$PLAN"}; do
   [ -f "$f" ] || [ -f "$ROOT/$f" ] || die "no such file: $f"
@@ -89,9 +94,20 @@ if [ -n "$BAG" ]; then  # the recorder must be listening before the robot starts
   for _ in $(seq 100); do grep -q "recording into" "$OUT/bag.log" 2>/dev/null && break; sleep 0.1; done
 fi
 
+if [ "$RVIZ" = 1 ]; then
+  rviz -d "$ROOT/config/mrolr.rviz" > "$OUT/rviz.log" 2>&1 &
+  RVIZ_PID=$!
+  PIDS+=($RVIZ_PID)
+  sleep 5  # RViz subscribes before the robot starts
+fi
+
 status=0
 "$BIN/mrolr-ros-robot" --config "$CONFIG" "${PLAN_ARGS[@]}" --out "$OUT" --quiet || status=$?
 
+if [ "$RVIZ" = 1 ]; then
+  echo "ros-mission: the mission is over; close RViz to stop the nodes"
+  wait "$RVIZ_PID" 2>/dev/null || true
+fi
 kill -0 "$LAB_PID" 2>/dev/null || echo "ros-mission: the lab node had stopped (see $OUT/lab.log)" >&2
 stop_all
 trap - EXIT

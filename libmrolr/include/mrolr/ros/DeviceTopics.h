@@ -54,6 +54,7 @@ inline const std::string kArmFault = "arm/fault";
 
 /** The robot's own view (mrolr-ros-robot). */
 inline const std::string kEstimate = "mrolr/estimate";
+inline const std::string kPath = "mrolr/path";
 inline const std::string kMap = "mrolr/map";
 inline const std::string kObjectPose = "mrolr/object_pose";
 inline const std::string kStage = "mrolr/stage";

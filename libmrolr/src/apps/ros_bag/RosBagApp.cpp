@@ -7,6 +7,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -109,6 +110,7 @@ void recordAll(Recorder& r)
 	r.record<tf2_msgs::TFMessage>("/tf");
 	r.record<geometry_msgs::PoseWithCovarianceStamped>(t::kEstimate);
 	r.record<geometry_msgs::PoseStamped>(t::kObjectPose);
+	r.record<nav_msgs::Path>(t::kPath);
 	r.record<visualization_msgs::MarkerArray>(t::kMap);
 	r.record<geometry_msgs::PoseStamped>(t::kTruthPose);
 }

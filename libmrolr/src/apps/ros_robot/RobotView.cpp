@@ -73,13 +73,13 @@ visualization_msgs::MarkerArray mapMarkers(const std::vector<mission::MappedLand
 		out.markers.push_back(e);
 		auto c = marker("landmarks", id, visualization_msgs::Marker::SPHERE, time_s);
 		c.pose.position.x = p.x(), c.pose.position.y = p.y(), c.pose.position.z = p.z();
-		c.scale.x = c.scale.y = c.scale.z = 0.03;
+		c.scale.x = c.scale.y = c.scale.z = 0.06;
 		c.color.r = c.color.g = c.color.b = 0.1f, c.color.a = 1;
 		out.markers.push_back(c);
 		auto t = marker("labels", id, visualization_msgs::Marker::TEXT_VIEW_FACING, time_s);
 		t.pose.position = c.pose.position;
-		t.pose.position.z += 0.08;
-		t.scale.z = 0.06;
+		t.pose.position.z += 0.15;
+		t.scale.z = 0.14;
 		t.color.r = t.color.g = t.color.b = t.color.a = 1;
 		t.text = l.label;
 		out.markers.push_back(t);
@@ -92,6 +92,7 @@ RobotView::RobotView(::ros::NodeHandle& nh, const geometry::BiSightHead& head,
                      mission::DecisionLog* next)
     : head_(head), next_(next),
       estimate_(nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(ros::topics::kEstimate, 16)),
+      path_(nh.advertise<nav_msgs::Path>(ros::topics::kPath, 2, true)),
       tf_(nh.advertise<tf2_msgs::TFMessage>("/tf", 32)),
       object_(nh.advertise<geometry_msgs::PoseStamped>(ros::topics::kObjectPose, 2, true)),
       stage_(nh.advertise<std_msgs::String>(ros::topics::kStage, 8, true)),
@@ -108,6 +109,12 @@ void RobotView::estimate(const mission::PathSample& s)
 	e.pose.pose = ros::toPoseMsg(ros::planarPose(s.estimate));
 	e.pose.covariance = ros::planarCovariance(s.P_vv);
 	estimate_.publish(e);
+	geometry_msgs::PoseStamped p;
+	p.header = e.header;
+	p.pose = e.pose.pose;
+	path_msg_.header = e.header;
+	path_msg_.poses.push_back(p);
+	path_.publish(path_msg_);
 	// REP 105: world → odom is the estimate's correction of the dead reckoning
 	publishTf(tf_, ros::toTransformMsg(ros::planarPose(s.estimate) * ros::planarPose(s.odometry).inverse(),
 	                                   "world", "odom", s.device_time_s));

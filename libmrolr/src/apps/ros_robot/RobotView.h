@@ -1,12 +1,13 @@
 #pragma once
 // What mrolr-ros-robot shows of itself on ROS (docs/ros.md "Watching it in RViz"): its estimate
-// with covariance, its estimated tf chain world → odom and base_link → cameras, the recognised
+// with covariance and its path, its estimated tf chain world → odom and base_link → cameras, the recognised
 // object's pose, the mission's stage, and at the end its map with the 95 % ellipsoids. Only the
 // robot's own beliefs: it reads no topic.
 #include <mrolr/geometry/BiSightHead.h>
 #include <mrolr/mission/DecisionLog.h>
 #include <mrolr/mission/Mission.h>
 
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -38,7 +39,8 @@ class RobotView : public mission::DecisionLog
  private:
 	geometry::BiSightHead head_;
 	mission::DecisionLog* next_;
-	::ros::Publisher estimate_, tf_, object_, stage_, map_;
+	::ros::Publisher estimate_, path_, tf_, object_, stage_, map_;
+	nav_msgs::Path path_msg_;  ///< the estimates so far
 	double last_time_s_ = 0;
 };
 
