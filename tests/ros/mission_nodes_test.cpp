@@ -86,6 +86,12 @@ TEST(RosMission, TheScriptRunsTheDefaultMissionAsInProcessAndItsBagReadsBack)
 	const json ros = readJson(dir + "/ros/report.json");
 	EXPECT_EQ(ros["transport"], "ros");
 	expectSameMission(ros, in_process);
+	{  // its recording replays without a lab, with the run's configuration kept beside it
+		apps::MissionApp replay;
+		replay.initialize({"mrolr-mission", "--replay", dir + "/ros/mission.rawlog", "--quiet"});
+		std::ostringstream o, p;
+		EXPECT_EQ(replay.run(o, p), 0) << o.str();
+	}
 
 	// the bag: pairs, odometry, joints, tf, the estimate and the truth
 	rosbag::Bag bag(dir + "/ros/mission.bag", rosbag::bagmode::Read);

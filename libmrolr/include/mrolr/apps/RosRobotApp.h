@@ -13,7 +13,7 @@
  * (`mrolr/object_pose`), its stage (`mrolr/stage`) and at the end its map with the 95 %
  * ellipsoids (`mrolr/map`, visualization_msgs/MarkerArray). Writes report.json, report.md and
  * mission.rawlog (every device call, as mrolr-mission records it; `mrolr-mission --replay` replays
- * it) into DIR (default out/<name>-ros-<UTC timestamp>) and prints the mission's summary. Exit 0
+ * it with the run's configuration, kept in DIR/run/) into DIR (default out/<name>-ros-<UTC timestamp>) and prints the mission's summary. Exit 0
  * when the mission succeeded, 3 when it ran and failed (a lab that went silent included: the
  * failure names the device, the topic and the node), 130 / 143 on SIGINT / SIGTERM, 1 for an error
  * before anything moved (no master, no lab, a malformed file), 2 for bad arguments. */
@@ -40,6 +40,7 @@ class RosRobotApp
 	bool json = false, quiet = false, help_shown = false;
 	int timeout_ms = 3000, motion_timeout_ms = 20000, master_timeout_ms = 10000,
 	    lab_timeout_ms = 20000;
+	std::vector<std::string> command;  ///< the arguments as given (kept in <out>/run/)
 	mission::MissionOptions options;
 	mission::MissionResult result;
 	nlohmann::json report;

@@ -3,6 +3,7 @@
 
 #include <mrolr/apps/MissionSummary.h>
 #include <mrolr/apps/RosRobotApp.h>
+#include <mrolr/apps/RunConfiguration.h>
 #include <mrolr/apps/TclapSupport.h>
 #include <mrolr/mission/DeviceRecorder.h>
 #include <mrolr/mission/MissionOutputs.h>
@@ -26,6 +27,7 @@ namespace mrolr::apps
 {
 void RosRobotApp::initialize(const std::vector<std::string>& args)
 {
+	command = args;
 	TCLAP::CmdLine cmd(
 	    "mrolr-ros-robot: the fetch mission on ROS 1 device topics (docs/ros.md); the devices are "
 	    "served by mrolr-ros-lab or real drivers",
@@ -132,6 +134,7 @@ int RosRobotApp::run(std::ostream& out, std::ostream& progress)
 	ros::RosDevices devices(nh, ro);  // waits for the lab; hw::DeviceFailure names what is missing
 	if (out_dir.empty()) out_dir = "out/" + options.name + "-ros-" + utcStamp();
 	std::filesystem::create_directories(out_dir);
+	writeRunConfiguration({config_path, {}, "", command}, options, out_dir);  // for --replay
 	const std::string rawlog = (std::filesystem::path(out_dir) / "mission.rawlog").string();
 	const geometry::BiSightHead head(options.bisight);
 	mission::DeviceRecorder recorder(rawlog, {&devices.base, &devices.head, &devices.arm, {}}, head);
