@@ -169,6 +169,8 @@ TEST(RosMission, AKilledLabStopsTheRobotSafelyNamingItAndTheRobotNeverReadsTheTr
 	mrolr::ros::LoopbackMaster master;
 	int argc = 0;
 	::ros::init(argc, nullptr, "ros_mission_test", ::ros::init_options::NoSigintHandler);
+	test::ChildProcess bag({kBin + "/mrolr-ros-bag", "--out", dir + "/m.bag"});
+	ASSERT_NE(bag.readLine(60).find("recording into"), std::string::npos);
 	test::ChildProcess lab({kBin + "/mrolr-ros-lab", "--config", kConfig});
 	ASSERT_NE(lab.readLine(60).find("serving the lab"), std::string::npos);
 	test::ChildProcess robot({kBin + "/mrolr-ros-robot", "--config", kConfig, "--out", dir,
@@ -196,6 +198,12 @@ TEST(RosMission, AKilledLabStopsTheRobotSafelyNamingItAndTheRobotNeverReadsTheTr
 	const std::string failure = r["failure"];
 	EXPECT_NE(failure.find("over ROS"), std::string::npos) << failure;
 	EXPECT_NE(failure.find("/mrolr_lab"), std::string::npos) << failure;
-	// what it recorded up to there is in the file
+	// what it recorded up to there is in the file, and the bag closes readable on SIGTERM
 	EXPECT_GT(std::filesystem::file_size(dir + "/mission.rawlog"), 1000u);
+	bag.signal(SIGTERM);
+	EXPECT_EQ(bag.wait(30), 0);
+	rosbag::Bag b(dir + "/m.bag", rosbag::bagmode::Read);
+	EXPECT_GT(count(b, "/stereo/left/image_raw"), 0u);
+	EXPECT_GT(count(b, "/mrolr/estimate"), 0u);
+	EXPECT_GT(count(b, "/mrolr/stage"), 0u);  // the last one says it stopped
 }
