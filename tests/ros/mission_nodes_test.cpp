@@ -129,7 +129,9 @@ TEST(RosMission, TheScriptRunsTheDefaultMissionAsInProcessAndItsBagReadsBack)
 		const auto tfs = m.instantiate<tf2_msgs::TFMessage>();
 		for (const auto& t : tfs->transforms) tf.setTransform(t, "bag");
 	}
-	EXPECT_TRUE(tf.canTransform("world", "right_camera", ::ros::Time(0)));
+	for (const auto* frame : {"odom", "base_link", "c0", "left_camera", "right_camera", "arm_base",
+	                          "gripper"})
+		EXPECT_TRUE(tf.canTransform("world", frame, ::ros::Time(0))) << frame;
 	bag.close();
 
 	// MRPT's rosbag2rawlog reads every image back

@@ -89,8 +89,8 @@ visualization_msgs::MarkerArray mapMarkers(const std::vector<mission::MappedLand
 }
 
 RobotView::RobotView(::ros::NodeHandle& nh, const geometry::BiSightHead& head,
-                     mission::DecisionLog* next)
-    : head_(head), next_(next),
+                     const arm::RtxOptions& rtx, const arm::ArmMount& mount)
+    : head_(head), rtx_(rtx), mount_(mount),
       estimate_(nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(ros::topics::kEstimate, 16)),
       path_(nh.advertise<nav_msgs::Path>(ros::topics::kPath, 2, true)),
       tf_(nh.advertise<tf2_msgs::TFMessage>("/tf", 32)),
@@ -118,12 +118,12 @@ void RobotView::estimate(const mission::PathSample& s)
 	// REP 105: world → odom is the estimate's correction of the dead reckoning
 	publishTf(tf_, ros::toTransformMsg(ros::planarPose(s.estimate) * ros::planarPose(s.odometry).inverse(),
 	                                   "world", "odom", s.device_time_s));
-	if (next_) next_->estimate(s);
+	if (next) next->estimate(s);
 }
 
 void RobotView::measurement(const vision::CycleRecord& c)
 {
-	if (next_) next_->measurement(c);
+	if (next) next->measurement(c);
 }
 
 void RobotView::recognised(const mission::SearchResult& r, const Eigen::Vector3d& xv,
@@ -137,12 +137,12 @@ void RobotView::recognised(const mission::SearchResult& r, const Eigen::Vector3d
 	p.pose = ros::toPoseMsg(
 	    toRosAxes(geometry::T_C0inW(xv, head_.options().head_height_m) * T_OinC0_m));
 	object_.publish(p);
-	if (next_) next_->recognised(r, xv, target);
+	if (next) next->recognised(r, xv, target);
 }
 
 void RobotView::graspPlanned(const mission::RetrievalResult& r)
 {
-	if (next_) next_->graspPlanned(r);
+	if (next) next->graspPlanned(r);
 }
 
 void RobotView::note(const mission::TimelineEvent& e)
@@ -150,20 +150,33 @@ void RobotView::note(const mission::TimelineEvent& e)
 	std_msgs::String s;
 	s.data = e.stage + ": " + e.text;
 	stage_.publish(s);
-	if (next_) next_->note(e);
+	if (next) next->note(e);
 }
 
 void RobotView::cameras(const hw::StereoImages& pair)
 {
+	// base_link (REP 103 axes) → c0 (thesis axes): the head's centre M_h above the ground
 	const Eigen::Isometry3d T_C0inV = geometry::T_C0inW({0, 0, 0}, head_.options().head_height_m);
-	const auto L = head_.T_CamCvInC0(geometry::Side::Left, pair.angles);
-	const auto R = head_.T_CamCvInC0(geometry::Side::Right, pair.angles);
-	Eigen::Isometry3d T_LinBase;
-	T_LinBase.matrix() =
-	    geometry::cameraPoseToMrpt(T_C0inV * L).getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>()
-	        .asEigen();
-	publishTf(tf_, ros::toTransformMsg(T_LinBase, "base_link", "left_camera", pair.time_s));
-	publishTf(tf_, ros::toTransformMsg(L.inverse() * R, "left_camera", "right_camera", pair.time_s));
+	Eigen::Isometry3d T_C0inBase = Eigen::Isometry3d::Identity();
+	T_C0inBase.linear() = geometry::R_mrptFromThesis() * T_C0inV.linear();
+	T_C0inBase.translation() = geometry::R_mrptFromThesis() * T_C0inV.translation();
+	const double t = pair.time_s;
+	publishTf(tf_, ros::toTransformMsg(T_C0inBase, "base_link", "c0", t));
+	publishTf(tf_, ros::toTransformMsg(head_.T_CamCvInC0(geometry::Side::Left, pair.angles), "c0",
+	                                   "left_camera", t));
+	publishTf(tf_, ros::toTransformMsg(head_.T_CamCvInC0(geometry::Side::Right, pair.angles), "c0",
+	                                   "right_camera", t));
+}
+
+void RobotView::arm(const hw::ArmJoints& joints)
+{
+	constexpr double kMPerMm = 1e-3;
+	Eigen::Isometry3d T_AinC0 = mount_.T_C0inA.inverse();
+	T_AinC0.translation() *= kMPerMm;
+	Eigen::Isometry3d T_GinA = rtx_.T06(arm::RtxJoints::fromMmDeg(joints));
+	T_GinA.translation() *= kMPerMm;
+	publishTf(tf_, ros::toTransformMsg(T_AinC0, "c0", "arm_base", last_time_s_));
+	publishTf(tf_, ros::toTransformMsg(T_GinA, "arm_base", "gripper", last_time_s_));
 }
 
 void RobotView::finished(const mission::MissionResult& r)

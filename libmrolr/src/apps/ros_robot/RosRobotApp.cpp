@@ -137,11 +137,13 @@ int RosRobotApp::run(std::ostream& out, std::ostream& progress)
 	writeRunConfiguration({config_path, {}, "", command}, options, out_dir);  // for --replay
 	const std::string rawlog = (std::filesystem::path(out_dir) / "mission.rawlog").string();
 	const geometry::BiSightHead head(options.bisight);
-	mission::DeviceRecorder recorder(rawlog, {&devices.base, &devices.head, &devices.arm, {}}, head);
-	RobotView view(nh, head, &recorder);
-	auto recorded = recorder.devices();
-	ViewedHead viewed(*recorded.head, view);
-	recorded.head = &viewed;
+	// the views see the devices' own answers; the recorder records only the mission's calls
+	RobotView view(nh, head, options.rtx, options.dock);
+	ViewedHead viewed_head(devices.head, view);
+	ViewedArm viewed_arm(devices.arm, view);
+	mission::DeviceRecorder recorder(rawlog, {&devices.base, &viewed_head, &viewed_arm, {}}, head);
+	view.next = &recorder;
+	const auto recorded = recorder.devices();
 	ShutdownWatch signals;
 	mission::Mission m(options, recorded);
 	if (!quiet) summary::attachProgress(m, progress);
