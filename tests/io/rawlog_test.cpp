@@ -97,6 +97,33 @@ TEST(Rawlog, WrittenThenReadGivesTheSameObservations)
 	fs::remove_all(fs::path(path).parent_path());
 }
 
+TEST(Rawlog, ReadWithPathsOnlyItNamesTheImagesThatHoldThePixels)
+{
+	const std::string path = tempRawlog("paths.rawlog");
+	const auto in = sampleRecords();
+	{
+		mrolr::io::RawlogWriter w(path);
+		for (const auto& r : in) w.write(r);
+	}
+	const auto out = mrolr::io::readRawlog(path, mrolr::io::ImageLoading::Paths);
+	ASSERT_EQ(out.size(), in.size());
+	size_t pairs = 0;
+	for (size_t i = 0; i < in.size(); ++i)
+	{
+		ASSERT_EQ(out[i].has_stereo, in[i].has_stereo);
+		if (!in[i].has_stereo) continue;
+		++pairs;
+		EXPECT_TRUE(out[i].left.isEmpty());  // nothing loaded
+		mrpt::img::CImage left, right;
+		ASSERT_TRUE(left.loadFromFile(out[i].left_file)) << out[i].left_file;
+		ASSERT_TRUE(right.loadFromFile(out[i].right_file)) << out[i].right_file;
+		EXPECT_TRUE(sameImage(left, in[i].left));
+		EXPECT_TRUE(sameImage(right, in[i].right));
+	}
+	EXPECT_GT(pairs, 0u);
+	fs::remove_all(fs::path(path).parent_path());
+}
+
 TEST(Rawlog, RawlogEditReadsIt)
 {
 	const std::string path = tempRawlog("info.rawlog");

@@ -121,9 +121,14 @@ ObservationLog readObservationLog(const std::string& path)
 	return log;
 }
 
+std::string externalFile(const mrpt::img::CImage& external, const std::string& rawlog_path)
+{
+	return (fs::path(imagesDirFor(rawlog_path)) / external.getExternalStorageFile()).string();
+}
+
 mrpt::img::CImage loadExternal(const mrpt::img::CImage& external, const std::string& rawlog_path)
 {
-	const auto file = (fs::path(imagesDirFor(rawlog_path)) / external.getExternalStorageFile()).string();
+	const auto file = externalFile(external, rawlog_path);
 	mrpt::img::CImage img;
 	if (!fs::exists(file) || !img.loadFromFile(file))
 		throw std::runtime_error(rawlog_path + ": cannot read its external image " + file);

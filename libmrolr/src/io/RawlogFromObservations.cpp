@@ -52,15 +52,17 @@ void readEstimate(const mrpt::obs::CObservationRobotPose& e, std::vector<RawlogR
 }
 
 void readGrab(const mrpt::obs::CObservationRawDAQ& grab, Latest& l, const std::string& path,
-              std::vector<RawlogRecord>& out)
+              ImageLoading images, std::vector<RawlogRecord>& out)
 {
 	if (!l.pair || grab.AIN_double.size() < 4) return;  // a failed grab: no pair
 	RawlogRecord r = l.state;
 	r.time_s = timeOf(grab.timestamp);
 	r.head_rad = Eigen::Vector4d(grab.AIN_double.data());
 	r.has_stereo = true;
-	r.left = loadExternal(l.pair->imageLeft, path);
-	r.right = loadExternal(l.pair->imageRight, path);
+	r.left_file = externalFile(l.pair->imageLeft, path);
+	r.right_file = externalFile(l.pair->imageRight, path);
+	if (images == ImageLoading::Load)
+		r.left = loadExternal(l.pair->imageLeft, path), r.right = loadExternal(l.pair->imageRight, path);
 	r.camera = l.pair->leftCamera;
 	r.T_LcvInVehicle = isometryOf(l.pair->cameraPose);
 	r.T_RcvInLcv = isometryOf(l.pair->rightCameraPose);
@@ -69,7 +71,8 @@ void readGrab(const mrpt::obs::CObservationRawDAQ& grab, Latest& l, const std::s
 }
 }  // namespace
 
-std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path)
+std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path,
+                                    ImageLoading images)
 {
 	std::vector<RawlogRecord> out;
 	Latest l;
@@ -88,7 +91,7 @@ std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string
 		{
 			if (d->sensorLabel == "HEAD_ANGLES" && d->AIN_double.size() == 4)
 				l.state.head_rad = Eigen::Vector4d(d->AIN_double.data());
-			if (d->sensorLabel == "HEAD_GRAB") readGrab(*d, l, path, out);
+			if (d->sensorLabel == "HEAD_GRAB") readGrab(*d, l, path, images, out);
 		}
 	}
 	return out;

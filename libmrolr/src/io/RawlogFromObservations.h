@@ -12,6 +12,7 @@ namespace mrolr::io
  * each carrying the latest odometry, head angles and truth (`GROUND_TRUTH`, the world side's,
  * when the recording has it: the base stands still between steps);
  * @p path locates the external images. */
-std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path);
+std::vector<RawlogRecord> recordsOf(const ObservationLog& log, const std::string& path,
+                                    ImageLoading images = ImageLoading::Load);
 
 }  // namespace mrolr::io

@@ -33,11 +33,12 @@ mrpt::img::CImage loaded(const mrpt::img::CImage& external)
 	return img;
 }
 
-void readStereo(const mrpt::obs::CObservationStereoImages& s, RawlogRecord& r)
+void readStereo(const mrpt::obs::CObservationStereoImages& s, RawlogRecord& r, ImageLoading images)
 {
 	r.has_stereo = true;
-	r.left = loaded(s.imageLeft);
-	r.right = loaded(s.imageRight);
+	r.left_file = s.imageLeft.getExternalStorageFileAbsolutePath();
+	r.right_file = s.imageRight.getExternalStorageFileAbsolutePath();
+	if (images == ImageLoading::Load) r.left = loaded(s.imageLeft), r.right = loaded(s.imageRight);
 	r.camera = s.leftCamera;
 	r.T_LcvInVehicle = isometryOf(s.cameraPose);
 	r.T_RcvInLcv = isometryOf(s.rightCameraPose);
@@ -48,7 +49,8 @@ void readStereo(const mrpt::obs::CObservationStereoImages& s, RawlogRecord& r)
 	throw std::runtime_error(path + ": record " + std::to_string(i) + ": " + why);
 }
 
-RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& path, size_t i)
+RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& path, size_t i,
+                      ImageLoading images)
 {
 	RawlogRecord r;
 	const auto odo = sf.getObservationByClass<mrpt::obs::CObservationOdometry>();
@@ -63,7 +65,7 @@ RawlogRecord recordOf(const mrpt::obs::CSensoryFrame& sf, const std::string& pat
 	r.head_rad = Eigen::Vector4d(head->AIN_double.data());
 	if (gt) r.true_zxphi = geometry::vehicleFromMrpt(mrpt::poses::CPose2D(gt->pose.mean));
 	if (const auto s = sf.getObservationByClass<mrpt::obs::CObservationStereoImages>())
-		readStereo(*s, r);
+		readStereo(*s, r, images);
 	return r;
 }
 }  // namespace
@@ -87,10 +89,10 @@ bool observationsOnly(const std::string& path)
 }
 }  // namespace
 
-std::vector<RawlogRecord> readRawlog(const std::string& path)
+std::vector<RawlogRecord> readRawlog(const std::string& path, ImageLoading images)
 {
 	if (std::filesystem::exists(path) && observationsOnly(path))
-		return recordsOf(readObservationLog(path), path);
+		return recordsOf(readObservationLog(path), path, images);
 	mrpt::io::CFileGZInputStream file;
 	if (!std::filesystem::exists(path) || !file.open(path))
 		throw std::runtime_error("cannot read rawlog " + path);
@@ -104,7 +106,7 @@ std::vector<RawlogRecord> readRawlog(const std::string& path)
 	while (mrpt::obs::CRawlog::readActionObservationPair(in, acts, sf, pos))
 	{
 		if (!sf) fail(path, out.size(), "not an action/observation pair");
-		out.push_back(recordOf(*sf, path, out.size()));
+		out.push_back(recordOf(*sf, path, out.size(), images));
 	}
 	if (out.empty() && std::filesystem::file_size(path) > 0)
 		throw std::runtime_error(path + ": not a rawlog (its first record is unreadable)");

@@ -48,11 +48,19 @@ class BagOut
 	rosbag::Bag bag_;
 };
 
+/** A pair's image, read now: one pair in memory at a time. */
+mrpt::img::CImage imageOf(const std::string& file)
+{
+	mrpt::img::CImage img;
+	if (!img.loadFromFile(file)) throw std::runtime_error("cannot read the pair's image " + file);
+	return img;
+}
+
 void writePair(const io::RawlogRecord& r, BagOut& out)
 {
 	const double t = r.time_s;
-	out.write("/stereo/left/image_raw", t, toImageMsg(r.left, t, "left_camera"));
-	out.write("/stereo/right/image_raw", t, toImageMsg(r.right, t, "right_camera"));
+	out.write("/stereo/left/image_raw", t, toImageMsg(imageOf(r.left_file), t, "left_camera"));
+	out.write("/stereo/right/image_raw", t, toImageMsg(imageOf(r.right_file), t, "right_camera"));
 	out.write("/stereo/left/camera_info", t, toCameraInfo(r.camera, t, "left_camera"));
 	out.write("/stereo/right/camera_info", t, toCameraInfo(r.camera, t, "right_camera"));
 	out.tf(toTransformMsg(r.T_LcvInVehicle, "base_link", "left_camera", t));
@@ -91,7 +99,7 @@ void writeState(const io::RawlogRecord& r, BagOut& out)
 BagSummary rawlogToBag(const std::string& rawlog, const std::string& bag,
                        const std::function<void(size_t, size_t)>& progress)
 {
-	const auto records = io::readRawlog(rawlog);
+	const auto records = io::readRawlog(rawlog, io::ImageLoading::Paths);
 	BagOut out(bag);
 	const bool estimated = std::any_of(records.begin(), records.end(),
 	                                   [](const io::RawlogRecord& r) { return r.estimate_zxphi.has_value(); });

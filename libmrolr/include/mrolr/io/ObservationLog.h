@@ -68,5 +68,7 @@ ObservationLog readObservationLog(const std::string& path);
 /** The pixels of an image stored externally beside rawlog @p rawlog_path (throws naming the file
  * when it is missing or unreadable). */
 mrpt::img::CImage loadExternal(const mrpt::img::CImage& external, const std::string& rawlog_path);
+/** The file loadExternal reads for @p external. */
+std::string externalFile(const mrpt::img::CImage& external, const std::string& rawlog_path);
 
 }  // namespace mrolr::io

@@ -52,7 +52,8 @@ struct RawlogRecord
 	Eigen::Matrix3d estimate_P = Eigen::Matrix3d::Zero();
 	Eigen::Vector4d head_rad = Eigen::Vector4d::Zero();  ///< pan, tilt, verg_left, verg_right
 	bool has_stereo = false;
-	mrpt::img::CImage left, right;  ///< 8-bit greyscale
+	mrpt::img::CImage left, right;  ///< 8-bit greyscale (empty when read with ImageLoading::Paths)
+	std::string left_file, right_file;  ///< the external images' paths (ImageLoading::Paths)
 	mrpt::img::TCamera camera;      ///< intrinsics of both cameras
 	Eigen::Isometry3d T_LcvInVehicle = Eigen::Isometry3d::Identity();  ///< MRPT axes vehicle
 	Eigen::Isometry3d T_RcvInLcv = Eigen::Isometry3d::Identity();  ///< right cv cam in left cv cam
@@ -78,11 +79,21 @@ class RawlogWriter
 	Eigen::Vector3d last_odometry_ = Eigen::Vector3d::Zero();
 };
 
-/** Reads every record of a rawlog written by RawlogWriter, images loaded into memory. A
+/** Whether readRawlog loads the pairs' images, or only names their files (for a reader that
+ * takes one pair at a time, so that a long recording does not have to fit in memory). */
+enum class ImageLoading
+{
+	Load,
+	Paths
+};
+
+/** Reads every record of a rawlog written by RawlogWriter, images loaded into memory (or only
+ * their files named, with ImageLoading::Paths). A
  * mission's recording (observations-only, ObservationLog.h) reads as one record per odometry
  * reading and one per stereo pair, up to its last whole record. Throws std::runtime_error naming
  * the file and the record for anything unexpected. */
-std::vector<RawlogRecord> readRawlog(const std::string& path);
+std::vector<RawlogRecord> readRawlog(const std::string& path,
+                                     ImageLoading images = ImageLoading::Load);
 
 /** The external images folder MRPT expects for @p rawlog_path: `<dir>/<stem>_Images`. */
 std::string imagesDirFor(const std::string& rawlog_path);
