@@ -21,6 +21,7 @@
 #include <tf2_msgs/TFMessage.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -77,6 +78,7 @@ TEST(RosMission, TheScriptRunsTheDefaultMissionAsInProcessAndItsBagReadsBack)
 	const json in_process = inProcessReport(dir + "/in_process");
 	ASSERT_TRUE(in_process["success"].get<bool>());
 
+	setenv("MROLR_BIN", kBin.c_str(), 1);  // this build's nodes, whatever the build folder
 	test::ChildProcess script({"/bin/bash", std::string(MROLR_SOURCE_DIR) + "/scripts/ros-mission.sh",
 	                           "--config", kConfig, "--out", dir + "/ros"});
 	std::string out, line;
