@@ -214,3 +214,26 @@ TEST(Recording, AMissionKilledMidRunLeavesARawlogReadableUpToItsLastRecord)
 	EXPECT_NE(replayed["replay"]["divergence"].get<std::string>().find("after the recording's last call"),
 	          std::string::npos);
 }
+
+TEST(MissionProcess, ProgressToAFileIsPlainLinesNotOneRewrittenLine)
+{
+	const auto dir = mission::test::freshTempDir("process_progress_to_file");
+	const std::string cmd = "cd " + kRoot + " && " + kBin + "/mrolr-mission --set plan.route=W0 --out " +
+	                        dir + "/out > /dev/null 2> " + dir + "/progress.txt";
+	ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+	std::ifstream f(dir + "/progress.txt");
+	const std::string text((std::istreambuf_iterator<char>(f)), {});
+	EXPECT_EQ(text.find('\r'), std::string::npos);
+	std::istringstream lines(text);
+	size_t n = 0;
+	for (std::string line; std::getline(lines, line);)
+		if (!line.empty())
+		{
+			EXPECT_EQ(line.rfind("[mission] ", 0), 0u) << line;
+			EXPECT_LT(line.size(), 120u) << line;
+			++n;
+		}
+	const auto report = nlohmann::json::parse(std::ifstream(dir + "/out/report.json"));
+	EXPECT_GE(n, 2u);                                  // a line per stage at least
+	EXPECT_LT(n, report["robot"]["path"].size() / 2);  // not one per step
+}

@@ -15,7 +15,9 @@ using nlohmann::json;
 std::string num(const json& v, int precision = 3);
 /** The run's summary lines from its report. */
 void printSummary(std::ostream& out, const json& r, const std::string& dir);
-/** The progress line on @p progress while @p m runs. */
+/** Progress on @p progress while @p m runs: on a terminal one line rewritten in place (carriage
+ * returns); to a file or a pipe plain lines, one at each new stage and one a minute of mission
+ * time, so a log stays readable. */
 void attachProgress(mission::Mission& m, std::ostream& progress);
 
 }  // namespace mrolr::apps::summary

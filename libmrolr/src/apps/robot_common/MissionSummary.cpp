@@ -2,7 +2,10 @@
 #include <mrolr/apps/MissionSummary.h>
 
 #include <iomanip>
+#include <iostream>
 #include <sstream>
+
+#include <unistd.h>
 
 namespace mrolr::apps::summary
 {
@@ -48,14 +51,47 @@ void printSummary(std::ostream& out, const json& r, const std::string& dir)
 
 
 /** The progress line on @p progress while @p m runs. */
+namespace
+{
+/** A terminal shows a line rewritten in place; a file or a pipe gets plain lines. */
+bool isTerminal(const std::ostream& s)
+{
+	if (&s == &std::cerr) return isatty(STDERR_FILENO) == 1;
+	if (&s == &std::cout) return isatty(STDOUT_FILENO) == 1;
+	return false;
+}
+
+void progressFields(std::ostream& out, const std::string& stage, const mission::PathSample& s)
+{
+	out << "[mission] " << std::setw(12) << std::left << stage << " t=" << std::fixed
+	    << std::setprecision(0) << std::setw(5) << s.time_s << " s  z=" << std::setprecision(2)
+	    << s.estimate.x() << " x=" << s.estimate.y() << " features=" << s.features;
+}
+
+/** Mission time between two plain progress lines (besides one at each new stage). */
+constexpr double kPlainLineEvery_s = 60.0;
+}  // namespace
+
 void attachProgress(mission::Mission& m, std::ostream& progress)
 {
-	m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
+	if (isTerminal(progress))
 	{
-		progress << "\r[mission] " << std::setw(12) << std::left << stage << " t=" << std::fixed
-		         << std::setprecision(0) << std::setw(5) << s.time_s
-		         << " s  z=" << std::setprecision(2) << s.estimate.x() << " x=" << s.estimate.y()
-		         << " features=" << s.features << "   " << std::flush;
+		m.on_progress = [&progress](const std::string& stage, const mission::PathSample& s)
+		{
+			progress << "\r";
+			progressFields(progress, stage, s);
+			progress << "   " << std::flush;
+		};
+		return;
+	}
+	m.on_progress = [&progress, last_stage = std::string(), last_s = -1e300](
+	                    const std::string& stage, const mission::PathSample& s) mutable
+	{
+		if (stage == last_stage && s.time_s - last_s < kPlainLineEvery_s) return;
+		last_stage = stage, last_s = s.time_s;
+		progressFields(progress, stage, s);
+		progress << "\n" << std::flush;
 	};
 }
+
 }  // namespace mrolr::apps::summary
