@@ -1,3 +1,4 @@
+#include <cmath>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/util/Config.h>
 
@@ -93,9 +94,29 @@ Eigen::Vector3d unitVector(const Parser& p, Eigen::Vector3d v, const char* what)
 	return v;
 }
 
+/** How far (the cosine between them) a conic's major axis may lean out of its plane and still be
+ * taken as written with rounded numbers: four decimals on unit vectors give cosines up to about
+ * 2e-4 between axes that are exactly perpendicular. */
+constexpr double kRoundedPerpendicular = 1e-3;
+
+/** The major axis put back into the conic's plane when rounding explains its lean (so a file
+ * written with four decimals by another tool loads); a lean beyond that is an error naming it.
+ * An axis already in its plane to 1e-12 is kept as read, so a written model reads back bit-exact. */
+void inPlaneMajorAxis(const Parser& p, Conic3& c)
+{
+	const double lean = c.normal.dot(c.major);
+	if (std::abs(lean) > kRoundedPerpendicular)
+	{
+		const double deg = 90.0 - std::acos(std::min(1.0, std::abs(lean))) * 180.0 / M_PI;
+		p.fail("conic major axis is " + std::to_string(deg) + " deg out of its plane (rounding " +
+		       "explains at most " + std::to_string(std::asin(kRoundedPerpendicular) * 180.0 / M_PI) +
+		       " deg)");
+	}
+	if (std::abs(lean) > 1e-12) c.major = (c.major - lean * c.normal).normalized();
+}
+
 void checkConicShape(const Parser& p, const Conic3& c)
 {
-	if (std::abs(c.normal.dot(c.major)) > 1e-6) p.fail("conic major axis is not in its plane");
 	if (!(c.b > 0) || c.a < c.b) p.fail("conic semi-axes must satisfy a >= b > 0");
 	if (!(c.t2 > c.t1)) p.fail("conic arc needs t1 < t2");
 }
@@ -112,6 +133,7 @@ void parseConic(Parser& p, const std::vector<std::string>& tk)
 	c.b = number(p, tk[12], "semi-axis b");
 	c.t1 = number(p, tk[13], "t1");
 	c.t2 = number(p, tk[14], "t2");
+	inPlaneMajorAxis(p, c);
 	checkConicShape(p, c);
 	p.wf.conics.push_back(c);
 }
