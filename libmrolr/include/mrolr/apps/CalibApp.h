@@ -1,5 +1,5 @@
 #pragma once
-/** `mrolr-calib`: stereo calibration from checkerboard image pairs (issue 6, thesis 4.3.2.1).
+/** `mrolr-calib`: stereo calibration from checkerboard image pairs (thesis 4.3.2.1).
  *
  *     mrolr-calib --left 'DIR/?_left.jpg' --right 'DIR/?_right.jpg' --board 9x6 --square-mm 34 \
  *                 --out config/calib_mrpt_bumblebee.ini [--json]

@@ -1,6 +1,6 @@
 #pragma once
 /** `mrolr-head`: the BiSight head geometry from the command line, for calibrating and debugging the
- * head (issue 2; thesis 4.2.3–4.2.5 and eq 5.40). Points in metres in C0 (x left, y up, z forward),
+ * head (thesis 4.2.3–4.2.5 and eq 5.40). Points in metres in C0 (x left, y up, z forward),
  * angles in radians, pixels as doubles:
  *
  *     mrolr-head [--config FILE] [--json] [--sigma-px S] COMMAND ARGS...

@@ -1,5 +1,5 @@
 #pragma once
-/** `mrolr-model`: wire-frame models from stereo (issue 6, thesis 4.3, 6.1, 6.2, 7.1).
+/** `mrolr-model`: wire-frame models from stereo (thesis 4.3, 6.1, 6.2, 7.1).
  *
  *     mrolr-model build --turntable DIR --out M.wf [--truth T.wf] [--json]
  *                       [--align turntable|recog]

@@ -1,5 +1,5 @@
 #pragma once
-/** `mrolr-sim`: the simulated lab from the command line (issue 4, docs/sim.md):
+/** `mrolr-sim`: the simulated lab from the command line (docs/sim.md):
  *
  *     mrolr-sim --world FILE --out RUN.rawlog                 drive the waypoints and record
  *     mrolr-sim --world FILE --snapshot --pose z,x,phi_deg --head pan,tilt,vl,vr --out DIR

@@ -1,5 +1,5 @@
 #pragma once
-/** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (issue 5, thesis 5.2–5.7, 7.2).
+/** `mrolr-slam`: vision-driven EKF-SLAM on a simulated world (thesis 5.2–5.7, 7.2).
  *
  *     mrolr-slam --world maps/lab/world.ini [--config config/slam.ini] --live [--head
  * lab|synthetic]

@@ -1,5 +1,5 @@
 #pragma once
-/** Quality of a reconstructed wire-frame against the exact one (issue 6 "Quality"): the fraction of
+/** Quality of a reconstructed wire-frame against the exact one (docs/model.md "Quality"): the fraction of
  * the true edge length recovered, false segments, endpoint error and conic radius error. Both
  * models must be in the same frame and in mm.
  *

@@ -1,5 +1,5 @@
 #pragma once
-/** Horizontal rims from straight chords (issue 6, docs/model.md). A small rim between two surfaces
+/** Horizontal rims from straight chords (docs/model.md). A small rim between two surfaces
  * (the bottle's neck base) projects in every view as a flat ellipse that the stereo reconstruction
  * returns as one or two straight, nearly horizontal segments, never as an arc, so that
  * fitRimsAcrossViews has nothing to fit. Each such chord still spans the rim's width as seen from

@@ -1,5 +1,5 @@
 #pragma once
-/** Completing the arcs of horizontal rims from the views' images (issue 6, docs/model.md). A rim
+/** Completing the arcs of horizontal rims from the views' images (docs/model.md). A rim
  * found across views (fitRimsAcrossViews) keeps the arc its 3D inliers cover, but a rim between
  * two surfaces of similar grey has an image edge on part of its width only (the bottle's shoulder:
  * its lit third), and the stereo reconstruction of that part is a short, badly fitted conic in

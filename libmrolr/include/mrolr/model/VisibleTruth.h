@@ -1,6 +1,6 @@
 #pragma once
-/** The visible part of an exact wire-frame in one camera view (issue 6 "scene models ... recover
- * 60 % of the visible edge length"): a scene model can only recover the edges the left camera
+/** The visible part of an exact wire-frame in one camera view (what the quality target "scene models
+ * recover 60 % of the visible edge length" counts, docs/model.md): a scene model can only recover the edges the left camera
  * sees, so the truth is clipped by a depth image of that camera (the simulator's
  * depth_left_mm.png). Each feature is sampled densely; a sample is visible when it projects
  * inside the image and the rendered depth at its pixel (or one of the 8 neighbours, so that an

@@ -1,5 +1,5 @@
 #pragma once
-/** Reading and writing wire-frame models in the `.wf` text format (issue 6, docs/model.md):
+/** Reading and writing wire-frame models in the `.wf` text format (docs/model.md):
  *
  *     # mrolr wire-frame 1
  *     units mm

@@ -1,6 +1,6 @@
 #pragma once
 /** Verification of pose hypotheses in the stereo images (beyond the thesis, which verified in 3D
- * only; issue 7). A hypothesis T_OinL is judged by projecting the model's expected-visible edges
+ * only). A hypothesis T_OinL is judged by projecting the model's expected-visible edges
  * into the left and right images and counting how many of their samples lie on an image edge
  * (Canny) with a compatible orientation: an oriented chamfer test on OpenCV's distance transform.
  * Unlike the 3D score it does not depend on what stereo managed to reconstruct. Millimetres in the

@@ -1,5 +1,5 @@
 #pragma once
-/** Pose hypotheses from single scene features on the support plane (beyond the thesis; issue 7).
+/** Pose hypotheses from single scene features on the support plane (beyond the thesis).
  *
  * The clique matcher (thesis 6.3) needs 3–5 mutually consistent scene features of one object; on
  * reconstructed table scenes stereo often recovers too little of an object for that, although the

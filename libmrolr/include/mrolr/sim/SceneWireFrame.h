@@ -1,5 +1,5 @@
 #pragma once
-/** The exact wire-frame of a table scene (issue 6: quality of single-view scene models): every
+/** The exact wire-frame of a table scene (the reference for the quality of single-view scene models, docs/model.md): every
  * placed object's wire-frame (objectWireFrame, moved by T_OinW) and the 12 edges of every table
  * top, in W (thesis axes: x left, y up, z forward) in millimetres. Occluding contours of curved
  * surfaces are view-dependent and not part of it. */

@@ -1,5 +1,5 @@
 #pragma once
-/** Rims seen edge-on between two silhouettes (issue 6, docs/model.md step 10). A horizontal rim
+/** Rims seen edge-on between two silhouettes (docs/model.md step 10). A horizontal rim
  * whose plane passes near the camera (the bottle's shoulder and neck rims seen from the head's
  * height) images as a straight piece along the rows between the body's two silhouettes: no
  * ellipse to pair, no depth along it, and its back-projection onto a horizontal plane is

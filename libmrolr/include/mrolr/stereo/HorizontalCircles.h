@@ -1,5 +1,5 @@
 #pragma once
-/** Rims seen nearly edge-on as horizontal circles (issue 6, docs/model.md step 9). Objects stand
+/** Rims seen nearly edge-on as horizontal circles (docs/model.md step 9). Objects stand
  * upright on the table, so most rims are horizontal circles; with the head angles known, the up
  * direction in the left camera frame L is known too. A horizontal circle is then fixed by one
  * image arc and one depth: the arc's edgels are back-projected onto the horizontal plane at the
