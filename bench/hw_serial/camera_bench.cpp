@@ -35,8 +35,8 @@ hw::StereoImages pair640x480()
 static void BM_CameraSocketPairRoundTrip(benchmark::State& state)
 {
 	const auto pair = pair640x480();
-	hw::CameraServer server([&] { return pair; });
-	hw::CameraSocketClient client(server.address(), 5000);
+	hw_serial::CameraServer server([&] { return pair; });
+	hw_serial::CameraSocketClient client(server.address(), 5000);
 	for (auto _ : state) benchmark::DoNotOptimize(client.grab());
 	state.SetBytesProcessed(int64_t(state.iterations()) * 2 * 640 * 480);
 }
@@ -47,9 +47,9 @@ static void BM_CameraPairEncodeDecode(benchmark::State& state)
 	const auto pair = pair640x480();
 	for (auto _ : state)
 	{
-		const std::string frame = hw::encodeCameraImages(1, pair);
+		const std::string frame = hw_serial::encodeCameraImages(1, pair);
 		benchmark::DoNotOptimize(
-		    hw::decodeCameraImages(std::string_view(frame).substr(hw::kCameraHeaderBytes)));
+		    hw_serial::decodeCameraImages(std::string_view(frame).substr(hw_serial::kCameraHeaderBytes)));
 	}
 	state.SetBytesProcessed(int64_t(state.iterations()) * 2 * 640 * 480);
 }

@@ -19,15 +19,15 @@ struct IdleBase : hw::BaseDevice
 	hw::Odometry odometry() const override { return odo; }
 };
 
-hw::LinkOptions link()
+hw_serial::LinkOptions link()
 {
-	hw::LinkOptions o;
+	hw_serial::LinkOptions o;
 	o.device = "bench";
 	o.timeout_ms = 1000;
 	return o;
 }
 
-void roundTrips(benchmark::State& state, hw::SerialClient& client)
+void roundTrips(benchmark::State& state, hw_serial::SerialClient& client)
 {
 	for (auto _ : state) benchmark::DoNotOptimize(client.call("ODO?", {}));
 	state.SetItemsProcessed(state.iterations());
@@ -37,10 +37,10 @@ void roundTrips(benchmark::State& state, hw::SerialClient& client)
 static void BM_RoundTripMemoryPipe(benchmark::State& state)
 {
 	IdleBase base;
-	hw::BaseHandler handler(base);
-	auto [host, dev] = hw::makeMemoryPipe();
-	hw::DeviceEmulator emulator(*dev, handler);
-	hw::SerialClient client(std::move(host), link());
+	hw_serial::BaseHandler handler(base);
+	auto [host, dev] = hw_serial::makeMemoryPipe();
+	hw_serial::DeviceEmulator emulator(*dev, handler);
+	hw_serial::SerialClient client(std::move(host), link());
 	roundTrips(state, client);
 }
 BENCHMARK(BM_RoundTripMemoryPipe)->Unit(benchmark::kMicrosecond)->UseRealTime();
@@ -48,9 +48,9 @@ BENCHMARK(BM_RoundTripMemoryPipe)->Unit(benchmark::kMicrosecond)->UseRealTime();
 static void BM_RoundTripPseudoTerminal(benchmark::State& state)
 {
 	IdleBase base;
-	hw::BaseHandler handler(base);
-	hw::PtyEmulator pty(handler);
-	hw::SerialClient client(std::make_unique<hw::SerialPortTransport>(pty.slavePath(), 115200),
+	hw_serial::BaseHandler handler(base);
+	hw_serial::PtyEmulator pty(handler);
+	hw_serial::SerialClient client(std::make_unique<hw_serial::SerialPortTransport>(pty.slavePath(), 115200),
 	                        link());
 	roundTrips(state, client);
 }

@@ -93,8 +93,8 @@ static void BM_CameraSocketPairRoundTrip(benchmark::State& state)
 {
 	hw::StereoImages pair;
 	pair.left = noise(1), pair.right = noise(2);
-	hw::CameraServer server([&] { return pair; });
-	hw::CameraSocketClient client(server.address(), 5000);
+	hw_serial::CameraServer server([&] { return pair; });
+	hw_serial::CameraSocketClient client(server.address(), 5000);
 	for (auto _ : state) benchmark::DoNotOptimize(client.grab());
 	state.SetBytesProcessed(int64_t(state.iterations()) * 2 * 640 * 480);
 }

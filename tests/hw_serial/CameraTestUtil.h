@@ -55,7 +55,7 @@ class ScriptedCameraPeer
 
 	explicit ScriptedCameraPeer(Script script)
 	    : script_(std::move(script)),
-	      port_(mrolr::hw::freeLoopbackPort()),
+	      port_(mrolr::hw_serial::freeLoopbackPort()),
 	      listener_(port_, "127.0.0.1", 4, mrpt::system::LVL_ERROR)
 	{
 		thread_ = std::thread(
@@ -84,16 +84,16 @@ class ScriptedCameraPeer
 inline bool readRequest(mrpt::comms::CClientTCPSocket& c, const std::atomic<bool>& stop,
                         std::string& request)
 {
-	return mrolr::hw::readExact(c, 12, request, mrolr::hw::deadlineIn(2000), &stop) ==
-	       mrolr::hw::SocketIoStatus::Done;
+	return mrolr::hw_serial::readExact(c, 12, request, mrolr::hw_serial::deadlineIn(2000), &stop) ==
+	       mrolr::hw_serial::SocketIoStatus::Done;
 }
 
 /** Waits until the peer hangs up or the stop flag is raised (a device that never answers). */
 inline void holdSilently(mrpt::comms::CClientTCPSocket& c, const std::atomic<bool>& stop)
 {
 	std::string sink;
-	while (mrolr::hw::readExact(c, 1, sink, mrolr::hw::kNoSocketDeadline, &stop) ==
-	       mrolr::hw::SocketIoStatus::Done)
+	while (mrolr::hw_serial::readExact(c, 1, sink, mrolr::hw_serial::kNoSocketDeadline, &stop) ==
+	       mrolr::hw_serial::SocketIoStatus::Done)
 	{
 	}
 }

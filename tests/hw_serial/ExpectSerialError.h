@@ -5,17 +5,17 @@
 #include <gtest/gtest.h>
 
 template <typename Fn>
-mrolr::hw::SerialDeviceError expectSerialError(Fn fn)
+mrolr::hw_serial::SerialDeviceError expectSerialError(Fn fn)
 {
 	try
 	{
 		fn();
 	}
-	catch (const mrolr::hw::SerialDeviceError& e)
+	catch (const mrolr::hw_serial::SerialDeviceError& e)
 	{
 		return e;
 	}
 	ADD_FAILURE() << "no SerialDeviceError";
-	return mrolr::hw::SerialDeviceError(mrolr::hw::SerialDeviceError::Kind::Refused, "", "",
+	return mrolr::hw_serial::SerialDeviceError(mrolr::hw_serial::SerialDeviceError::Kind::Refused, "", "",
 	                                    "none");
 }

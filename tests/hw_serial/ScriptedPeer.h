@@ -15,7 +15,7 @@ class ScriptedPeer
  public:
 	/** Reply pieces per request, written with @p gap_ms between pieces; an empty list answers
 	 * nothing. Requests beyond the script are recorded and not answered. */
-	ScriptedPeer(std::unique_ptr<mrolr::hw::MemoryTransport> end,
+	ScriptedPeer(std::unique_ptr<mrolr::hw_serial::MemoryTransport> end,
 	             std::vector<std::vector<std::string>> script, int gap_ms = 0)
 	    : end_(std::move(end)), script_(std::move(script)), gap_ms_(gap_ms)
 	{
@@ -65,7 +65,7 @@ class ScriptedPeer
 				}
 			}
 		}
-		catch (const mrolr::hw::TransportClosed&)
+		catch (const mrolr::hw_serial::TransportClosed&)
 		{
 		}
 	}
@@ -79,7 +79,7 @@ class ScriptedPeer
 		}
 	}
 
-	std::unique_ptr<mrolr::hw::MemoryTransport> end_;
+	std::unique_ptr<mrolr::hw_serial::MemoryTransport> end_;
 	std::vector<std::vector<std::string>> script_;
 	int gap_ms_;
 	mutable std::mutex mutex_;

@@ -15,7 +15,7 @@
 #include <filesystem>
 
 using namespace mrolr;
-using Kind = hw::SerialDeviceError::Kind;
+using Kind = hw_serial::SerialDeviceError::Kind;
 namespace fs = std::filesystem;
 
 namespace
@@ -74,7 +74,7 @@ std::string configError(const mrpt::config::CConfigFileBase& cfg)
 {
 	try
 	{
-		hw::CameraSensorStereo cameras(cfg);
+		hw_serial::CameraSensorStereo cameras(cfg);
 	}
 	catch (const util::ConfigError& e)
 	{
@@ -94,7 +94,7 @@ TEST(CameraSensorStereo, GrabsTheFoldersImagesInOrderAsGrey)
 {
 	ImageFolder folder;
 	const auto cfg = stereoConfig(folder.dir.string());
-	hw::CameraSensorStereo cameras(cfg);
+	hw_serial::CameraSensorStereo cameras(cfg);
 	for (int i = 0; i < kFrames; ++i)
 	{
 		const double before_s = mrpt::Clock::toDouble(mrpt::Clock::now());
@@ -117,7 +117,7 @@ TEST(CameraSensorStereo, ColourFilesArriveAsTheirGreyConversion)
 	colour.saveToFile(folder.file("left", 0));
 	mrpt::img::CImage reloaded;
 	ASSERT_TRUE(reloaded.loadFromFile(folder.file("left", 0)));
-	hw::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
+	hw_serial::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
 	const auto pair = cameras.grab();
 	EXPECT_FALSE(pair.left.isColor());
 	EXPECT_TRUE(camtest::sameGreyPixels(pair.left, reloaded.grayscale()));
@@ -126,7 +126,7 @@ TEST(CameraSensorStereo, ColourFilesArriveAsTheirGreyConversion)
 TEST(CameraSensorStereo, PastTheLastImageIsADisconnectNamingTheSection)
 {
 	ImageFolder folder;
-	hw::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
+	hw_serial::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
 	for (int i = 0; i < kFrames; ++i) cameras.grab();
 	const auto e = expectSerialError([&] { cameras.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected) << e.what();
@@ -141,7 +141,7 @@ TEST(CameraSensorStereo, AMissingFolderFailsInTheConstructorNamingSectionAndFold
 	const mrpt::config::CConfigFileMemory cfg(
 	    imageDirSection("device.camera.left", folder.dir.string(), "left") +
 	    imageDirSection("device.camera.right", missing, "right"));
-	const auto e = expectSerialError([&] { hw::CameraSensorStereo cameras(cfg); });
+	const auto e = expectSerialError([&] { hw_serial::CameraSensorStereo cameras(cfg); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected) << e.what();
 	EXPECT_EQ(e.device(), "device.camera.right");
 	EXPECT_TRUE(has(e.what(), missing)) << e.what();
@@ -152,7 +152,7 @@ TEST(CameraSensorStereo, AFolderWithoutTheFirstImageFailsInTheConstructor)
 	ImageFolder folder;
 	fs::remove(folder.file("left", 0));
 	const auto e =
-	    expectSerialError([&] { hw::CameraSensorStereo c(stereoConfig(folder.dir.string())); });
+	    expectSerialError([&] { hw_serial::CameraSensorStereo c(stereoConfig(folder.dir.string())); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected) << e.what();
 	EXPECT_TRUE(has(e.what(), "left_000.png")) << e.what();
 }
@@ -162,7 +162,7 @@ TEST(CameraSensorStereo, ACameraIndexThatDoesNotExistFailsInTheConstructor)
 	const mrpt::config::CConfigFileMemory cfg(
 	    "[device.camera.left]\ngrabber_type = opencv\ncv_camera_index = 97\n"
 	    "[device.camera.right]\ngrabber_type = opencv\ncv_camera_index = 98\n");
-	const auto e = expectSerialError([&] { hw::CameraSensorStereo cameras(cfg); });
+	const auto e = expectSerialError([&] { hw_serial::CameraSensorStereo cameras(cfg); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected) << e.what();
 	EXPECT_EQ(e.device(), "device.camera.left");
 	EXPECT_EQ(e.port(), "opencv camera 97");
@@ -194,9 +194,9 @@ TEST(CameraSensorStereo, SectionMistakesAreConfigErrorsNamingSectionAndKey)
 TEST(CameraSensorStereo, ItsPairsTravelTheCameraSocketUnchanged)
 {
 	ImageFolder folder;
-	hw::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
-	hw::CameraServer server([&] { return cameras.grab(); });
-	hw::CameraSocketClient client(server.address(), 2000);
+	hw_serial::CameraSensorStereo cameras(stereoConfig(folder.dir.string()));
+	hw_serial::CameraServer server([&] { return cameras.grab(); });
+	hw_serial::CameraSocketClient client(server.address(), 2000);
 	const auto pair = client.grab();
 	EXPECT_TRUE(camtest::sameGreyPixels(pair.left, folder.left[0]));
 	EXPECT_TRUE(camtest::sameGreyPixels(pair.right, folder.right[0]));

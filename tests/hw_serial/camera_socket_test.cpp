@@ -13,7 +13,7 @@
 #include <thread>
 
 using namespace mrolr;
-using Kind = hw::SerialDeviceError::Kind;
+using Kind = hw_serial::SerialDeviceError::Kind;
 using camtest::noisePair;
 using camtest::sameGreyPixels;
 
@@ -27,7 +27,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0)
 }
 
 /** The error names the device section and the address, in its fields and its text. */
-void expectNamed(const hw::SerialDeviceError& e, const std::string& address)
+void expectNamed(const hw_serial::SerialDeviceError& e, const std::string& address)
 {
 	EXPECT_EQ(e.device(), "device.camera");
 	EXPECT_EQ(e.port(), address);
@@ -44,7 +44,7 @@ camtest::ScriptedCameraPeer answering(std::function<std::string(const std::strin
 		    std::string request;
 		    while (camtest::readRequest(c, stop, request))
 		    {
-			    hw::writeAll(c, reply(request), hw::deadlineIn(2000), &stop);
+			    hw_serial::writeAll(c, reply(request), hw_serial::deadlineIn(2000), &stop);
 			    request.clear();
 		    }
 		    camtest::holdSilently(c, stop);
@@ -53,15 +53,15 @@ camtest::ScriptedCameraPeer answering(std::function<std::string(const std::strin
 
 uint32_t seqOf(const std::string& request)
 {
-	return hw::decodeCameraHeader(request).seq;
+	return hw_serial::decodeCameraHeader(request).seq;
 }
 }  // namespace
 
 TEST(CameraSocket, RoundTripGivesBitIdenticalImagesTimeAndAngles)
 {
 	const hw::StereoImages sent = noisePair(640, 480, 7);
-	hw::CameraServer server([&] { return sent; });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraServer server([&] { return sent; });
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	const hw::StereoImages got = client.grab();
 	EXPECT_TRUE(sameGreyPixels(got.left, sent.left));
 	EXPECT_TRUE(sameGreyPixels(got.right, sent.right));
@@ -77,8 +77,8 @@ TEST(CameraSocket, RoundTripGivesBitIdenticalImagesTimeAndAngles)
 TEST(CameraSocket, ConsecutiveGrabsEachGetAFreshPair)
 {
 	unsigned calls = 0;
-	hw::CameraServer server([&] { return noisePair(64, 48, ++calls); });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraServer server([&] { return noisePair(64, 48, ++calls); });
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	const auto first = client.grab();
 	const auto second = client.grab();
 	EXPECT_TRUE(sameGreyPixels(first.left, noisePair(64, 48, 1).left));
@@ -90,8 +90,8 @@ TEST(CameraSocket, ConsecutiveGrabsEachGetAFreshPair)
 
 TEST(CameraSocket, ServerStoppedMidRunIsADisconnectNamingDeviceAndAddress)
 {
-	hw::CameraServer server([] { return noisePair(32, 24, 1); });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraServer server([] { return noisePair(32, 24, 1); });
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	client.grab();
 	server.stop();
 	const auto e = expectSerialError([&] { client.grab(); });
@@ -105,8 +105,8 @@ TEST(CameraSocket, ServerStoppedMidRunIsADisconnectNamingDeviceAndAddress)
 
 TEST(CameraSocket, NothingListeningIsADisconnectFromTheConstructor)
 {
-	const std::string address = "127.0.0.1:" + std::to_string(hw::freeLoopbackPort());
-	const auto e = expectSerialError([&] { hw::CameraSocketClient c(address, kTimeoutMs); });
+	const std::string address = "127.0.0.1:" + std::to_string(hw_serial::freeLoopbackPort());
+	const auto e = expectSerialError([&] { hw_serial::CameraSocketClient c(address, kTimeoutMs); });
 	EXPECT_EQ(e.kind(), Kind::Disconnected) << e.what();
 	expectNamed(e, address);
 	EXPECT_NE(std::string(e.what()).find("cannot connect"), std::string::npos) << e.what();
@@ -116,7 +116,7 @@ TEST(CameraSocket, GarbageFromThePeerIsGarbage)
 {
 	auto peer =
 	    answering([](const std::string&) { return std::string("\x13\xFFnot a frame\x80", 14); });
-	hw::CameraSocketClient client(peer.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(peer.address(), kTimeoutMs);
 	const auto e = expectSerialError([&] { client.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Garbage) << e.what();
 	expectNamed(e, peer.address());
@@ -128,10 +128,10 @@ TEST(CameraSocket, AnImagesFrameThatDoesNotDeserializeIsGarbage)
 	    [](const std::string& request)
 	    {
 		    const std::string junk(300, '\x5A');
-		    return hw::encodeCameraHeader({hw::CameraFrameKind::Images, seqOf(request), 300}) +
+		    return hw_serial::encodeCameraHeader({hw_serial::CameraFrameKind::Images, seqOf(request), 300}) +
 		           junk;
 	    });
-	hw::CameraSocketClient client(peer.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(peer.address(), kTimeoutMs);
 	const auto e = expectSerialError([&] { client.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Garbage) << e.what();
 	expectNamed(e, peer.address());
@@ -141,8 +141,8 @@ TEST(CameraSocket, AReplyToAnotherRequestIsGarbage)
 {
 	auto peer =
 	    answering([](const std::string& request)
-	              { return hw::encodeCameraImages(seqOf(request) + 1, noisePair(8, 8, 1)); });
-	hw::CameraSocketClient client(peer.address(), kTimeoutMs);
+	              { return hw_serial::encodeCameraImages(seqOf(request) + 1, noisePair(8, 8, 1)); });
+	hw_serial::CameraSocketClient client(peer.address(), kTimeoutMs);
 	const auto e = expectSerialError([&] { client.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Garbage) << e.what();
 	EXPECT_NE(std::string(e.what()).find("reply to request"), std::string::npos) << e.what();
@@ -151,7 +151,7 @@ TEST(CameraSocket, AReplyToAnotherRequestIsGarbage)
 TEST(CameraSocket, APeerThatNeverAnswersTimesOutAfterAboutTheTimeout)
 {
 	camtest::ScriptedCameraPeer peer(camtest::holdSilently);
-	hw::CameraSocketClient client(peer.address(), 300);
+	hw_serial::CameraSocketClient client(peer.address(), 300);
 	const auto t0 = std::chrono::steady_clock::now();
 	const auto e = expectSerialError([&] { client.grab(); });
 	const double waited_s = secondsSince(t0);
@@ -164,13 +164,13 @@ TEST(CameraSocket, APeerThatNeverAnswersTimesOutAfterAboutTheTimeout)
 TEST(CameraSocket, AGrabThatFailsIsRefusedWithItsMessageAndTheServerGoesOn)
 {
 	int calls = 0;
-	hw::CameraServer server(
+	hw_serial::CameraServer server(
 	    [&]
 	    {
 		    if (++calls == 1) throw std::runtime_error("frame grabber lost sync");
 		    return noisePair(16, 12, 3);
 	    });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	const auto e = expectSerialError([&] { client.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Refused) << e.what();
 	EXPECT_NE(std::string(e.what()).find("frame grabber lost sync"), std::string::npos);
@@ -181,13 +181,13 @@ TEST(CameraSocket, ALateReplyIsNeverTakenForTheNextOne)
 {
 	// the first grab takes longer than the timeout; the client gives up on that connection
 	int calls = 0;
-	hw::CameraServer server(
+	hw_serial::CameraServer server(
 	    [&]
 	    {
 		    if (++calls == 1) std::this_thread::sleep_for(std::chrono::milliseconds(800));
 		    return noisePair(16, 12, unsigned(calls));
 	    });
-	hw::CameraSocketClient client(server.address(), 600);
+	hw_serial::CameraSocketClient client(server.address(), 600);
 	EXPECT_EQ(expectSerialError([&] { client.grab(); }).kind(), Kind::Timeout);
 	const auto second = client.grab();
 	EXPECT_TRUE(sameGreyPixels(second.left, noisePair(16, 12, 2).left));
@@ -196,30 +196,30 @@ TEST(CameraSocket, ALateReplyIsNeverTakenForTheNextOne)
 
 TEST(CameraSocket, ClientsThatHangUpOrSendGarbageDoNotStopTheServer)
 {
-	hw::CameraServer server([] { return noisePair(320, 240, 5); });
+	hw_serial::CameraServer server([] { return noisePair(320, 240, 5); });
 	{
 		// asks for a pair and leaves without reading it
 		mrpt::comms::CClientTCPSocket rude;
 		rude.connect("127.0.0.1", server.port(), 1000);
-		hw::writeAll(rude, hw::encodeCameraRequest(1), hw::deadlineIn(1000));
+		hw_serial::writeAll(rude, hw_serial::encodeCameraRequest(1), hw_serial::deadlineIn(1000));
 	}
 	{
 		mrpt::comms::CClientTCPSocket noisy;
 		noisy.connect("127.0.0.1", server.port(), 1000);
-		hw::writeAll(noisy, "GET / HTTP/1.0\r\n\r\n", hw::deadlineIn(1000));
+		hw_serial::writeAll(noisy, "GET / HTTP/1.0\r\n\r\n", hw_serial::deadlineIn(1000));
 		std::string rest;
 		// the server hangs up on it
-		EXPECT_EQ(hw::readExact(noisy, 1, rest, hw::deadlineIn(2000)), hw::SocketIoStatus::Closed);
+		EXPECT_EQ(hw_serial::readExact(noisy, 1, rest, hw_serial::deadlineIn(2000)), hw_serial::SocketIoStatus::Closed);
 	}
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	EXPECT_TRUE(sameGreyPixels(client.grab().right, noisePair(320, 240, 5).right));
 	EXPECT_EQ(server.rejected(), 1u);
 }
 
 TEST(CameraSocket, StopReturnsPromptlyWithAnIdleClientConnected)
 {
-	hw::CameraServer server([] { return noisePair(8, 8, 1); });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraServer server([] { return noisePair(8, 8, 1); });
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	client.grab();
 	const auto t0 = std::chrono::steady_clock::now();
 	server.stop();
@@ -228,33 +228,33 @@ TEST(CameraSocket, StopReturnsPromptlyWithAnIdleClientConnected)
 
 TEST(CameraSocket, AGivenPortIsUsedAndATakenOneIsRefusedNamingIt)
 {
-	const uint16_t port = hw::freeLoopbackPort();
-	hw::CameraServer first([] { return noisePair(8, 8, 1); }, port);
+	const uint16_t port = hw_serial::freeLoopbackPort();
+	hw_serial::CameraServer first([] { return noisePair(8, 8, 1); }, port);
 	EXPECT_EQ(first.port(), port);
 	EXPECT_EQ(first.address(), "127.0.0.1:" + std::to_string(port));
 	try
 	{
-		hw::CameraServer second([] { return noisePair(8, 8, 1); }, port);
+		hw_serial::CameraServer second([] { return noisePair(8, 8, 1); }, port);
 		ADD_FAILURE() << "two servers on one port";
 	}
 	catch (const std::runtime_error& e)
 	{
 		EXPECT_NE(std::string(e.what()).find(first.address()), std::string::npos) << e.what();
 	}
-	hw::CameraSocketClient client(first.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(first.address(), kTimeoutMs);
 	EXPECT_TRUE(sameGreyPixels(client.grab().left, noisePair(8, 8, 1).left));
 }
 
 TEST(CameraSocket, AnEmptyImageFromTheGrabIsRefusedNamingIt)
 {
-	hw::CameraServer server(
+	hw_serial::CameraServer server(
 	    []
 	    {
 		    auto p = noisePair(8, 8, 1);
 		    p.left = mrpt::img::CImage();
 		    return p;
 	    });
-	hw::CameraSocketClient client(server.address(), kTimeoutMs);
+	hw_serial::CameraSocketClient client(server.address(), kTimeoutMs);
 	const auto e = expectSerialError([&] { client.grab(); });
 	EXPECT_EQ(e.kind(), Kind::Refused) << e.what();
 	EXPECT_NE(std::string(e.what()).find("left image is empty"), std::string::npos) << e.what();
@@ -269,7 +269,7 @@ TEST(CameraSocket, MalformedAddressesAreRefusedNamingDeviceAndAddress)
 	{
 		try
 		{
-			hw::CameraSocketClient c(bad, kTimeoutMs);
+			hw_serial::CameraSocketClient c(bad, kTimeoutMs);
 			ADD_FAILURE() << "accepted '" << bad << "'";
 		}
 		catch (const std::invalid_argument& e)
@@ -280,13 +280,13 @@ TEST(CameraSocket, MalformedAddressesAreRefusedNamingDeviceAndAddress)
 			EXPECT_NE(what.find("127.0.0.1:PORT"), std::string::npos) << what;
 		}
 	}
-	EXPECT_EQ(hw::parseCameraAddress("127.0.0.1:1", "d"), 1);
-	EXPECT_EQ(hw::parseCameraAddress("127.0.0.1:65535", "d"), 65535);
+	EXPECT_EQ(hw_serial::parseCameraAddress("127.0.0.1:1", "d"), 1);
+	EXPECT_EQ(hw_serial::parseCameraAddress("127.0.0.1:65535", "d"), 65535);
 }
 
 TEST(CameraSocket, TheDeviceSectionIsNamedAsGiven)
 {
-	const std::string address = "127.0.0.1:" + std::to_string(hw::freeLoopbackPort());
-	const auto e = expectSerialError([&] { hw::CameraSocketClient c(address, 100, "device.eye"); });
+	const std::string address = "127.0.0.1:" + std::to_string(hw_serial::freeLoopbackPort());
+	const auto e = expectSerialError([&] { hw_serial::CameraSocketClient c(address, 100, "device.eye"); });
 	EXPECT_EQ(e.device(), "device.eye");
 }

@@ -13,6 +13,7 @@
 
 using namespace mrolr;
 using namespace mrolr::hw;
+using namespace mrolr::hw_serial;
 using Kind = SerialDeviceError::Kind;
 
 namespace

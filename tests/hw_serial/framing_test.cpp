@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-using namespace mrolr::hw;
+using namespace mrolr::hw_serial;
 
 namespace
 {

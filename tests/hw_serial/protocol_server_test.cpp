@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 using namespace mrolr::hw;
+using namespace mrolr::hw_serial;
 
 namespace
 {

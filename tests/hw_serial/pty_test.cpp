@@ -19,6 +19,7 @@
 
 using namespace mrolr;
 using namespace mrolr::hw;
+using namespace mrolr::hw_serial;
 using Kind = SerialDeviceError::Kind;
 
 namespace

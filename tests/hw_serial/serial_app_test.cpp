@@ -26,8 +26,8 @@ apps::SerialApp parsed(std::vector<std::string> args)
 TEST(SerialApp, SendPrintsTheReplyOfAnEmulatedDevice)
 {
 	fake::Base base;
-	hw::BaseHandler handler(base);
-	hw::PtyEmulator pty(handler);
+	hw_serial::BaseHandler handler(base);
+	hw_serial::PtyEmulator pty(handler);
 	auto step = parsed({"send", pty.slavePath(), "STEP", "0.25", " -0.5", "2"});
 	EXPECT_EQ(step.fields, (std::vector<std::string>{"0.25", "-0.5", "2"}));  // negative protected
 	EXPECT_EQ(step.run(), 0);
@@ -41,8 +41,8 @@ TEST(SerialApp, SendPrintsTheReplyOfAnEmulatedDevice)
 TEST(SerialApp, SendReportsTheDevicesRefusalAndMissingPorts)
 {
 	fake::Base base;
-	hw::BaseHandler handler(base);
-	hw::PtyEmulator pty(handler);
+	hw_serial::BaseHandler handler(base);
+	hw_serial::PtyEmulator pty(handler);
 	auto bad = parsed({"send", pty.slavePath(), "STEP", "1", "nan", "1"});
 	EXPECT_EQ(bad.run(), 1);
 	EXPECT_NE(bad.error.find("ERR BADARG STEP: field 2 'nan' is not a finite number"),

@@ -59,7 +59,7 @@ struct RandomDevices : hw::BaseDevice, hw::HeadDevice, hw::ArmDevice
 	{
 		if (j[0] < 0) throw hw::ArmBlocked("the hand met the table at d1 = 300 mm");
 		if (j[1] > 1000)
-			throw hw::SerialDeviceError(hw::SerialDeviceError::Kind::Timeout, "device.arm",
+			throw hw_serial::SerialDeviceError(hw_serial::SerialDeviceError::Kind::Timeout, "device.arm",
 			                            "/dev/pts/9", "no reply after 4 attempts");
 	}
 	hw::ArmJoints joints() const override { return {any(), any(), any(), any(), any(), any(), any()}; }
@@ -144,7 +144,7 @@ TEST(DeviceRecording, FaultsReplayAsTheSameExceptionWithTheSameMessage)
 	{
 		std::vector<std::string> w;
 		w.push_back(thrownBy<hw::ArmBlocked>([&] { d.arm->moveTo({-1, 0, 0, 0, 0, 0, 0}); }));
-		w.push_back(thrownBy<hw::SerialDeviceError>([&] { d.arm->moveTo({1, 2000, 0, 0, 0, 0, 0}); }));
+		w.push_back(thrownBy<hw_serial::SerialDeviceError>([&] { d.arm->moveTo({1, 2000, 0, 0, 0, 0, 0}); }));
 		w.push_back(thrownBy<std::logic_error>([&] { d.arm->dock(false); }));
 		return w;
 	};
@@ -171,9 +171,9 @@ TEST(DeviceRecording, FaultsReplayAsTheSameExceptionWithTheSameMessage)
 		arm->moveTo({1, 2000, 0, 0, 0, 0, 0});
 		ADD_FAILURE() << "no fault replayed";
 	}
-	catch (const hw::SerialDeviceError& e)
+	catch (const hw_serial::SerialDeviceError& e)
 	{
-		EXPECT_EQ(e.kind(), hw::SerialDeviceError::Kind::Timeout);
+		EXPECT_EQ(e.kind(), hw_serial::SerialDeviceError::Kind::Timeout);
 		EXPECT_EQ(e.device(), "device.arm");
 		EXPECT_EQ(e.port(), "/dev/pts/9");
 	}

@@ -26,9 +26,9 @@ namespace fs = std::filesystem;
 namespace
 {
 /** Short link timeouts, so that a device that stops answering is given up within a second. */
-hw::LinkOptions quickLinks()
+hw_serial::LinkOptions quickLinks()
 {
-	hw::LinkOptions l;
+	hw_serial::LinkOptions l;
 	l.timeout_ms = 100;
 	l.motion_timeout_ms = 300;
 	l.retries = 2;
@@ -45,8 +45,8 @@ struct SerialRig
 	std::unique_ptr<apps::SerialEmulation> emulation;
 	std::unique_ptr<MissionDevices> devices;
 	std::unique_ptr<Mission> mission;
-	explicit SerialRig(const hw::FaultOptions& faults = {},
-	                   const hw::LinkOptions& links = quickLinks(),
+	explicit SerialRig(const hw_serial::FaultOptions& faults = {},
+	                   const hw_serial::LinkOptions& links = quickLinks(),
 	                   const std::function<void(sim::LabOptions&)>& world = {})
 	{
 		auto lo = sim::LabOptions::load(cfg, test::configDir());
@@ -95,7 +95,7 @@ void expectSamePaths(const MissionResult& a, const MissionResult& b)
 TEST(SerialMission, ThroughPtysWithDelaysAndLostBytesItIsTheSimulatedMission)
 {
 	const auto sim = test::runMission(test::defaultMissionConfig(), test::shortRoute());
-	hw::FaultOptions faults;
+	hw_serial::FaultOptions faults;
 	faults.reply_delay_ms = 1;
 	faults.drop_byte_probability = 0.002;
 	faults.seed = 5;
@@ -143,7 +143,7 @@ TEST(SerialMission, AnArmThatRefusesAJointLimitStopsTheMission)
 TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 {
 	SerialRig rig;
-	hw::FaultOptions hang;
+	hw_serial::FaultOptions hang;
 	hang.silent_after_replies = 2;  // GRIP 0 and the pre-grasp MOVE, then nothing
 	rig.emulation->arm().emulator().setFaults(hang);
 	const auto dir = mission::test::freshTempDir("serial_mission_test_arm_hangs");
@@ -193,7 +193,7 @@ TEST(SerialMission, AnArmThatStopsAnsweringStopsTheMissionAndKeepsTheRecording)
 TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
 {
 	SerialRig rig;
-	hw::FaultOptions garbage;
+	hw_serial::FaultOptions garbage;
 	garbage.garbage_replies = 1000;
 	rig.emulation->head().emulator().setFaults(garbage);
 	const auto r = rig.mission->run();
@@ -216,7 +216,7 @@ TEST(SerialMission, GarbageFromTheHeadIsAClearErrorAndTheBaseStops)
 TEST(SerialMission, ABaseThatHangsAtOnceLeavesAnEmptyButReadableRecord)
 {
 	SerialRig rig;
-	hw::FaultOptions hang;
+	hw_serial::FaultOptions hang;
 	hang.silent = true;
 	rig.emulation->base().emulator().setFaults(hang);
 	const auto dir = mission::test::freshTempDir("serial_mission_test_base_hangs");

@@ -14,7 +14,7 @@
 #include <regex>
 #include <sstream>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -188,9 +188,9 @@ CameraSensorStereo::CameraSensorStereo(const mrpt::config::CConfigFileBase& cfg,
 
 CameraSensorStereo::~CameraSensorStereo() = default;
 
-StereoImages CameraSensorStereo::grab()
+hw::StereoImages CameraSensorStereo::grab()
 {
-	StereoImages out;
+	hw::StereoImages out;
 	double right_time_s = 0;
 	out.left = left_->grab(out.time_s);
 	out.right = right_->grab(right_time_s);
@@ -206,4 +206,4 @@ std::string CameraSensorStereo::rightSource() const
 	return right_->source;
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

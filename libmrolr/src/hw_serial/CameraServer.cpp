@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -151,4 +151,4 @@ std::string CameraServer::reply(uint32_t seq)
 	}
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -7,7 +7,7 @@
 #include <random>
 #include <stdexcept>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -87,7 +87,7 @@ void CameraSocketClient::fail(SerialDeviceError::Kind kind, const std::string& w
 	throw SerialDeviceError(kind, device_, address_, what_happened);
 }
 
-StereoImages CameraSocketClient::grab()
+hw::StereoImages CameraSocketClient::grab()
 {
 	if (!socket_ || !socket_->isConnected()) connect();
 	const uint32_t seq = seq_++;
@@ -159,4 +159,4 @@ std::string CameraSocketClient::receive(size_t n, SocketDeadline deadline, const
 	}
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -55,7 +55,7 @@ mrpt::Clock::time_point observationTime(double time_s)
 	return mrpt::Clock::fromDouble(time_s);
 }
 
-mrpt::obs::CObservationStereoImages toObservation(const StereoImages& images)
+mrpt::obs::CObservationStereoImages toObservation(const hw::StereoImages& images)
 {
 	mrpt::obs::CObservationStereoImages obs;
 	obs.imageLeft = greyCopy(images.left, "the left image");
@@ -73,12 +73,12 @@ bool isGrey8(const mrpt::img::CImage& im)
 	       im.getPixelDepth() == mrpt::img::PixelDepth::D8U;
 }
 
-StereoImages readPayload(std::string_view payload)
+hw::StereoImages readPayload(std::string_view payload)
 {
 	mrpt::io::CMemoryStream mem;
 	mem.assignMemoryNotOwn(payload.data(), payload.size());
 	auto in = mrpt::serialization::archiveFrom(mem);
-	StereoImages out;
+	hw::StereoImages out;
 	in >> out.time_s >> out.angles.pan >> out.angles.tilt >> out.angles.verg_left >>
 	    out.angles.verg_right >> out.frame;
 	mrpt::obs::CObservationStereoImages obs;
@@ -124,7 +124,7 @@ std::string encodeCameraRequest(uint32_t seq)
 	return encodeCameraHeader({CameraFrameKind::Request, seq, 0});
 }
 
-std::string encodeCameraImages(uint32_t seq, const StereoImages& images)
+std::string encodeCameraImages(uint32_t seq, const hw::StereoImages& images)
 {
 	const auto obs = toObservation(images);
 	mrpt::io::CMemoryStream mem;
@@ -149,7 +149,7 @@ std::string encodeCameraError(uint32_t seq, std::string_view message)
 	return frame;
 }
 
-StereoImages decodeCameraImages(std::string_view payload)
+hw::StereoImages decodeCameraImages(std::string_view payload)
 {
 	try
 	{
@@ -166,4 +166,4 @@ StereoImages decodeCameraImages(std::string_view payload)
 	}
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -101,4 +101,4 @@ void DeviceEmulator::sleepUnlessStopped(int ms) const
 		std::this_thread::sleep_for(std::chrono::milliseconds(std::min(ms, 5)));
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -1,7 +1,7 @@
 #include <mrolr/hw_serial/DeviceProtocols.h>
 #include <mrolr/hw_serial/Message.h>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -57,7 +57,7 @@ std::vector<std::string> BaseHandler::execute(const std::string& verb,
 	}
 	if (verb != "ODO?") unknown(verb, kBaseId);
 	requireNoArgs(args, verb);
-	const Odometry o = device_.odometry();
+	const hw::Odometry o = device_.odometry();
 	auto fields = numberFields({o.xv_zxphi[0], o.xv_zxphi[1], o.xv_zxphi[2]});
 	fields.push_back(std::to_string(o.ticks_right));
 	fields.push_back(std::to_string(o.ticks_left));
@@ -88,7 +88,7 @@ std::vector<std::string> ArmHandler::execute(const std::string& verb,
 	if (verb == "MOVE")
 	{
 		const auto v = requireNumbers(args, 7, verb);
-		ArmJoints j;
+		hw::ArmJoints j;
 		std::copy(v.begin(), v.end(), j.begin());
 		device_.moveTo(j);
 		return {};
@@ -116,4 +116,4 @@ std::vector<std::string> ArmHandler::execute(const std::string& verb,
 	return numberFields(std::vector<double>(j.begin(), j.end()));
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

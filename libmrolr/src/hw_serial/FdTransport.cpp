@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 void FdTransport::write(const std::string& bytes)
 {
@@ -34,4 +34,4 @@ std::string FdTransport::read(int timeout_ms)
 	return std::string(buf, size_t(n));
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

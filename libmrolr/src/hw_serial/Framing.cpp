@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -132,4 +132,4 @@ void LineAssembler::clear()
 	lines_.clear();
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

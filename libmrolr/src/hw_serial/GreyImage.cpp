@@ -3,7 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -29,4 +29,4 @@ mrpt::img::CImage greyCopy(const mrpt::img::CImage& image, const std::string& wh
 	return copyRows(image.isColor() ? image.grayscale() : image);
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -4,7 +4,7 @@
 #include <condition_variable>
 #include <mutex>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 struct MemoryTransport::Shared
 {
@@ -48,4 +48,4 @@ std::pair<std::unique_ptr<MemoryTransport>, std::unique_ptr<MemoryTransport>> ma
 	        std::make_unique<MemoryTransport>(shared, 1)};
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -108,4 +108,4 @@ long parseInteger(const std::string& field, const std::string& what)
 	return v;
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -3,7 +3,7 @@
 #include <mrolr/hw_serial/Message.h>
 #include <mrolr/hw_serial/ProtocolServer.h>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -64,7 +64,7 @@ std::string ProtocolServer::execute(int seq, const std::string& verb,
 	{
 		return errorReply(seq, errcode::kLimit, e.what());
 	}
-	catch (const ArmBlocked& e)
+	catch (const hw::ArmBlocked& e)
 	{
 		return errorReply(seq, errcode::kBlocked, e.what());
 	}
@@ -74,4 +74,4 @@ std::string ProtocolServer::execute(int seq, const std::string& verb,
 	}
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -55,4 +55,4 @@ void PseudoTerminal::hangUp()
 	slave_fd_ = master_fd_ = -1;
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

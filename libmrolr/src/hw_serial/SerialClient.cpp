@@ -4,7 +4,7 @@
 #include <chrono>
 #include <random>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -110,4 +110,4 @@ SerialClient::Outcome SerialClient::classifyLine(const AssembledLine& line, int 
 	return Outcome::Reply;
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

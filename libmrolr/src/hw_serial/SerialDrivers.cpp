@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -65,10 +65,10 @@ void SerialBase::step(const base::WheelControl& u)
 	client_->call("STEP", numberFields({u.v1_mps, u.v2_mps, u.dt_s}), wait_ms);
 }
 
-Odometry SerialBase::odometry() const
+hw::Odometry SerialBase::odometry() const
 {
 	const auto f = client_->call("ODO?", {});
-	Odometry o;
+	hw::Odometry o;
 	if (f.size() != 7)
 		replyNumbers(*client_, f, 7, "ODO? reply");  // throws, naming the field count
 	const auto pose = replyNumbers(*client_, {f[0], f[1], f[2]}, 3, "ODO? pose");
@@ -112,13 +112,13 @@ geometry::HeadAngles SerialHead::angles() const
 	return geometry::HeadAngles{v[0], v[1], v[2], v[3]};
 }
 
-StereoImages SerialHead::grab()
+hw::StereoImages SerialHead::grab()
 {
 	if (!images_)
 		throw std::logic_error(client_->options().device +
 		                       ": the serial head has no image source (the cameras are not on the "
 		                       "serial line)");
-	StereoImages pair = images_();
+	hw::StereoImages pair = images_();
 	pair.angles = angles();
 	return pair;
 }
@@ -128,7 +128,7 @@ SerialArm::SerialArm(std::unique_ptr<SerialClient> client) : client_(std::move(c
 	requireIdentity(*client_, kArmId);
 }
 
-void SerialArm::moveTo(const ArmJoints& j)
+void SerialArm::moveTo(const hw::ArmJoints& j)
 {
 	try
 	{
@@ -144,15 +144,15 @@ void SerialArm::moveTo(const ArmJoints& j)
 	{  // the arm stalled on the way: the same exception as in process, the line still alive
 		if (e.kind() == SerialDeviceError::Kind::Refused &&
 		    client_->lastErrorCode() == errcode::kBlocked)
-			throw ArmBlocked(e.what());
+			throw hw::ArmBlocked(e.what());
 		throw;
 	}
 }
 
-ArmJoints SerialArm::joints() const
+hw::ArmJoints SerialArm::joints() const
 {
 	const auto v = replyNumbers(*client_, client_->call("JNT?", {}), 7, "JNT? reply");
-	ArmJoints j;
+	hw::ArmJoints j;
 	std::copy(v.begin(), v.end(), j.begin());
 	return j;
 }
@@ -198,4 +198,4 @@ bool SerialArm::docked() const
 	return reply[0] == "1";
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -1,6 +1,6 @@
 #include <mrolr/hw_serial/SerialError.h>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 const char* kindName(SerialDeviceError::Kind kind)
 {
@@ -20,7 +20,7 @@ const char* kindName(SerialDeviceError::Kind kind)
 
 SerialDeviceError::SerialDeviceError(Kind kind, const std::string& device, const std::string& port,
                                      const std::string& what_happened)
-    : DeviceFailure(device + " on " + port + ": " + kindName(kind) + ": " + what_happened),
+    : hw::DeviceFailure(device + " on " + port + ": " + kindName(kind) + ": " + what_happened),
       kind_(kind),
       device_(device),
       port_(port)
@@ -37,4 +37,4 @@ std::string mrptMessage(const std::string& what)
 	return what.substr(start, what.find('\n', start) - start);
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

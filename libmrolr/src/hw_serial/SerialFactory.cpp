@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 void SerialLinkConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                           const std::string& section)
@@ -54,23 +54,23 @@ SerialLinkConfig readLink(const mrpt::config::CConfigFileBase& cfg, const std::s
 }
 }  // namespace
 
-std::unique_ptr<BaseDevice> makeSerialBaseDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::BaseDevice> makeSerialBaseDevice(const mrpt::config::CConfigFileBase& cfg,
                                                  const std::string& section)
 {
 	return std::make_unique<SerialBase>(openSerialClient(readLink(cfg, section)));
 }
 
-std::unique_ptr<HeadDevice> makeSerialHeadDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::HeadDevice> makeSerialHeadDevice(const mrpt::config::CConfigFileBase& cfg,
                                                  const std::string& section, ImageSource images)
 {
 	return std::make_unique<SerialHead>(openSerialClient(readLink(cfg, section)),
 	                                    std::move(images));
 }
 
-std::unique_ptr<ArmDevice> makeSerialArmDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::ArmDevice> makeSerialArmDevice(const mrpt::config::CConfigFileBase& cfg,
                                                const std::string& section)
 {
 	return std::make_unique<SerialArm>(openSerialClient(readLink(cfg, section)));
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -10,7 +10,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** CSerialPort with its descriptor visible, for poll(). */
 class SerialPortTransport::Port : public mrpt::comms::CSerialPort
@@ -72,4 +72,4 @@ std::string SerialPortTransport::read(int timeout_ms)
 	return std::string(buf, n);
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

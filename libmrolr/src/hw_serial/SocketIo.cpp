@@ -13,7 +13,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 namespace
 {
@@ -130,4 +130,4 @@ SocketIoStatus writeAll(mrpt::comms::CClientTCPSocket& socket, const std::string
 	return SocketIoStatus::Done;
 }
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

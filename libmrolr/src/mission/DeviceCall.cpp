@@ -112,8 +112,8 @@ std::string describe(CallKind kind, const std::vector<double>& request)
 
 DeviceFault faultOf(const std::exception& e)
 {
-	if (const auto* s = dynamic_cast<const hw::SerialDeviceError*>(&e))
-		return {std::string("SerialDeviceError\t") + hw::kindName(s->kind()) + "\t" + s->device() +
+	if (const auto* s = dynamic_cast<const hw_serial::SerialDeviceError*>(&e))
+		return {std::string("SerialDeviceError\t") + hw_serial::kindName(s->kind()) + "\t" + s->device() +
 		            "\t" + s->port(),
 		        e.what()};
 	if (dynamic_cast<const hw::ReplayDivergence*>(&e)) return {"ReplayDivergence", e.what()};
@@ -138,15 +138,15 @@ namespace
 	std::istringstream in(type);
 	for (std::string part; std::getline(in, part, '\t');) f.push_back(part);
 	if (f.size() != 4) throw std::runtime_error("malformed recorded fault type '" + type + "'");
-	using Kind = hw::SerialDeviceError::Kind;
+	using Kind = hw_serial::SerialDeviceError::Kind;
 	Kind kind = Kind::Timeout;
 	for (Kind k : {Kind::Timeout, Kind::Garbage, Kind::Disconnected, Kind::Refused})
-		if (f[1] == hw::kindName(k)) kind = k;
+		if (f[1] == hw_serial::kindName(k)) kind = k;
 	// the message is "<device> on <port>: <kind>: <what happened>"; rebuild it from its parts
 	const std::string prefix = f[2] + " on " + f[3] + ": " + f[1] + ": ";
 	const std::string what =
 	    message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
-	throw hw::SerialDeviceError(kind, f[2], f[3], what);
+	throw hw_serial::SerialDeviceError(kind, f[2], f[3], what);
 }
 }  // namespace
 

@@ -65,7 +65,7 @@ void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 	address = util::readString(cfg, s, "address");
 	try
 	{
-		hw::parseCameraAddress(address, s);
+		hw_serial::parseCameraAddress(address, s);
 	}
 	catch (const std::invalid_argument& e)
 	{

@@ -36,9 +36,9 @@ void Mission::Impl::undockArm()
 		self->setDocked(false);
 		r.timeline.note("the arm's platform de-coupled");
 	}
-	catch (const hw::SerialDeviceError& e)
+	catch (const hw_serial::SerialDeviceError& e)
 	{
-		if (e.kind() != hw::SerialDeviceError::Kind::Refused) throw;  // a dead line stops it
+		if (e.kind() != hw_serial::SerialDeviceError::Kind::Refused) throw;  // a dead line stops it
 		refused(e.what());
 	}
 	catch (const std::logic_error& e)

@@ -19,7 +19,7 @@ auto connect(const DeviceChoice& d, Make make)
 	{
 		return make();
 	}
-	catch (const hw::SerialDeviceError& e)
+	catch (const hw_serial::SerialDeviceError& e)
 	{
 		throw util::ConfigError(d.port_key + ": cannot use '" + d.link.port + "': " + e.what());
 	}
@@ -36,14 +36,14 @@ Device* simOrFail(Device* sim, const DeviceChoice& d)
 }
 }  // namespace
 
-std::unique_ptr<hw::SerialClient> MissionDevices::open(const DeviceChoice& d)
+std::unique_ptr<hw_serial::SerialClient> MissionDevices::open(const DeviceChoice& d)
 {
-	auto client = hw::openSerialClient(d.link);
+	auto client = hw_serial::openSerialClient(d.link);
 	links_.push_back({d.section, d.link.port, client.get()});
 	return client;
 }
 
-hw::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices& sim)
+hw_serial::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices& sim)
 {
 	using Driver = CameraChoice::Driver;
 	if (o.camera.driver == Driver::Sim)
@@ -55,10 +55,10 @@ hw::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices&
 	}
 	if (o.camera.driver == Driver::Socket)
 	{
-		std::shared_ptr<hw::CameraSocketClient> client;
+		std::shared_ptr<hw_serial::CameraSocketClient> client;
 		try
 		{
-			client = std::make_shared<hw::CameraSocketClient>(o.camera.address, o.camera.timeout_ms);
+			client = std::make_shared<hw_serial::CameraSocketClient>(o.camera.address, o.camera.timeout_ms);
 		}
 		catch (const std::exception& e)
 		{
@@ -68,13 +68,13 @@ hw::ImageSource MissionDevices::camera(const DeviceOptions& o, const SimDevices&
 		camera_ = client;
 		return [client] { return client->grab(); };
 	}
-	std::shared_ptr<hw::CameraSensorStereo> cameras;
+	std::shared_ptr<hw_serial::CameraSensorStereo> cameras;
 	try
 	{
-		cameras = std::make_shared<hw::CameraSensorStereo>(
+		cameras = std::make_shared<hw_serial::CameraSensorStereo>(
 		    mrpt::config::CConfigFileMemory(o.camera.sensor_sections), "device.camera");
 	}
-	catch (const hw::SerialDeviceError& e)
+	catch (const hw_serial::SerialDeviceError& e)
 	{
 		throw util::ConfigError(o.camera.key + " = camera_sensor: " + e.what());
 	}
@@ -86,16 +86,16 @@ MissionDevices::MissionDevices(const DeviceOptions& o, const SimDevices& sim)
 {
 	if (o.base.serial)
 		own_base_ = connect(o.base,
-		                    [&] { return std::make_unique<hw::SerialBase>(open(o.base)); });
+		                    [&] { return std::make_unique<hw_serial::SerialBase>(open(o.base)); });
 	if (o.head.serial)
 	{
 		auto images = camera(o, sim);
 		own_head_ = connect(
-		    o.head, [&] { return std::make_unique<hw::SerialHead>(open(o.head), images); });
+		    o.head, [&] { return std::make_unique<hw_serial::SerialHead>(open(o.head), images); });
 	}
 	if (o.arm.serial)
 		own_arm_ =
-		    connect(o.arm, [&] { return std::make_unique<hw::SerialArm>(open(o.arm)); });
+		    connect(o.arm, [&] { return std::make_unique<hw_serial::SerialArm>(open(o.arm)); });
 	base_ = own_base_ ? own_base_.get() : simOrFail(sim.base, o.base);
 	head_ = own_head_ ? own_head_.get() : simOrFail(sim.head, o.head);
 	arm_ = own_arm_ ? own_arm_.get() : simOrFail(sim.arm, o.arm);

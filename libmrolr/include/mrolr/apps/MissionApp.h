@@ -57,7 +57,7 @@ class MissionApp
 	bool json = false, quiet = false, help_shown = false;
 	std::vector<std::string> overrides;  ///< "section.key=value" ("plan." ones go to the plan)
 	bool serial_emulation = false;
-	hw::FaultOptions emulation_faults;  ///< reply_delay_ms, drop_byte_probability
+	hw_serial::FaultOptions emulation_faults;  ///< reply_delay_ms, drop_byte_probability
 	mission::MissionOptions options;
 	mission::MissionResult result;
 	nlohmann::json report;           ///< report.json as written

@@ -35,7 +35,7 @@ class SerialApp
 	bool json = false;
 	bool help_shown = false;
 	double seconds = 0;  ///< emulate: 0 = until SIGINT/SIGTERM
-	hw::FaultOptions faults;
+	hw_serial::FaultOptions faults;
 	std::string sim_file;    ///< emulate: the mission file whose world-side sections it reads
 	std::string world_file;  ///< emulate: empty = [simulator] world_file of sim_file
 	std::string truth_out;   ///< emulate: T.json, written at the end (empty: not written)

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Opens the left camera from the section `<section>.left` and the right one from
  * `<section>.right` of an .ini, each in CCameraSensor's own format (grabber_type = opencv with
@@ -34,7 +34,7 @@ class CameraSensorStereo
 
 	/** One frame from each camera, 8-bit grey; time_s = the left frame's timestamp in seconds
 	 * (UNIX time, as mrpt::Clock::toDouble gives it). */
-	StereoImages grab();
+	hw::StereoImages grab();
 
 	/** The left and right cameras' sources for messages ("opencv camera 0"). */
 	std::string leftSource() const;
@@ -45,4 +45,4 @@ class CameraSensorStereo
 	std::unique_ptr<Camera> left_, right_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -18,7 +18,7 @@ class CClientTCPSocket;
 class CServerTCPSocket;
 }  // namespace mrpt::comms
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class CameraServer
 {
@@ -67,4 +67,4 @@ class CameraServer
 	std::thread thread_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

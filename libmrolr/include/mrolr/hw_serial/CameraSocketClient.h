@@ -3,8 +3,8 @@
  * 127.0.0.1 (frames as in CameraWire.h, docs/serial.md "The camera socket"). Wrapped in an
  * ImageSource it feeds SerialHead, which stamps the pairs with the head's angles:
  *
- *     auto camera = std::make_shared<hw::CameraSocketClient>("127.0.0.1:5801", 2000);
- *     hw::SerialHead head(std::move(client), [camera] { return camera->grab(); });
+ *     auto camera = std::make_shared<hw_serial::CameraSocketClient>("127.0.0.1:5801", 2000);
+ *     hw_serial::SerialHead head(std::move(client), [camera] { return camera->grab(); });
  */
 
 #include <mrolr/hw/Devices.h>
@@ -21,7 +21,7 @@ namespace mrpt::comms
 class CClientTCPSocket;
 }
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** The port of "127.0.0.1:PORT" (PORT decimal 1..65535, no sign, no leading zero, nothing
  * around). Only the loopback address is accepted: the camera socket carries no authentication.
@@ -48,7 +48,7 @@ class CameraSocketClient
 
 	/** Requests one pair and waits at most the timeout for all of it: both images 8-bit grey as
 	 * the server's grab gave them, its head angles and time_s. */
-	StereoImages grab();
+	hw::StereoImages grab();
 
 	const std::string& address() const { return address_; }
 	const std::string& device() const { return device_; }
@@ -69,4 +69,4 @@ class CameraSocketClient
 	std::unique_ptr<mrpt::comms::CClientTCPSocket> socket_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -27,7 +27,7 @@
 #include <string>
 #include <string_view>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Kinds of frames, by their magic. */
 enum class CameraFrameKind
@@ -70,13 +70,13 @@ CameraFrameHeader decodeCameraHeader(std::string_view bytes);
 std::string encodeCameraRequest(uint32_t seq);
 /** The whole MRCI frame. Throws std::invalid_argument when an image is empty or not 8-bit;
  * colour is converted to grey (greyCopy). */
-std::string encodeCameraImages(uint32_t seq, const StereoImages& images);
+std::string encodeCameraImages(uint32_t seq, const hw::StereoImages& images);
 /** The whole MRCE frame (the message cut to 4096 bytes). */
 std::string encodeCameraError(uint32_t seq, std::string_view message);
 
 /** The pair of an MRCI payload: images (8-bit grey), angles and time_s exactly as sent. Throws
  * CameraWireError when the bytes do not deserialize, hold another class, leave bytes over, or
  * lack an 8-bit grey right or left image. */
-StereoImages decodeCameraImages(std::string_view payload);
+hw::StereoImages decodeCameraImages(std::string_view payload);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

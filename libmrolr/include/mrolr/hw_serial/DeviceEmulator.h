@@ -14,7 +14,7 @@
 #include <random>
 #include <thread>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class ProtocolServer;
 
@@ -88,4 +88,4 @@ class PtyEmulator
 	DeviceEmulator emulator_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

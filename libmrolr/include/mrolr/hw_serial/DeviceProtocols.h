@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** A request the handler refuses; code is one of errcode::*. */
 class CommandError : public std::runtime_error
@@ -56,34 +56,34 @@ class RequestHandler
 class BaseHandler : public RequestHandler
 {
  public:
-	explicit BaseHandler(BaseDevice& device) : device_(device) {}
+	explicit BaseHandler(hw::BaseDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
  private:
-	BaseDevice& device_;
+	hw::BaseDevice& device_;
 };
 
 class HeadHandler : public RequestHandler
 {
  public:
-	explicit HeadHandler(HeadDevice& device) : device_(device) {}
+	explicit HeadHandler(hw::HeadDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
  private:
-	HeadDevice& device_;
+	hw::HeadDevice& device_;
 };
 
 class ArmHandler : public RequestHandler
 {
  public:
-	explicit ArmHandler(ArmDevice& device) : device_(device) {}
+	explicit ArmHandler(hw::ArmDevice& device) : device_(device) {}
 	std::vector<std::string> execute(const std::string& verb,
 	                                 const std::vector<std::string>& args) override;
 
  private:
-	ArmDevice& device_;
+	hw::ArmDevice& device_;
 };
 
 /** Numbers as reply fields (formatNumber each). */
@@ -93,4 +93,4 @@ std::vector<std::string> numberFields(const std::vector<double>& values);
 std::vector<double> requireNumbers(const std::vector<std::string>& args, size_t count,
                                    const std::string& verb);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

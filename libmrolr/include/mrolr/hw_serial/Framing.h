@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** CRC-32 of the bytes of @p body (0 for an empty body). */
 uint32_t lineChecksum(std::string_view body);
@@ -65,4 +65,4 @@ class LineAssembler
 	std::deque<AssembledLine> lines_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** A deep, in-memory, 8-bit greyscale copy of @p image, its pixels untouched when it is already
  * 8-bit grey (colour goes through CImage::grayscale()). An externally stored image is loaded
@@ -13,4 +13,4 @@ namespace mrolr::hw
  * image") when the image is empty or its pixels are not 8-bit. */
 mrpt::img::CImage greyCopy(const mrpt::img::CImage& image, const std::string& what);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

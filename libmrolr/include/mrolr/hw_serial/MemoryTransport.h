@@ -8,7 +8,7 @@
 #include <memory>
 #include <utility>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class MemoryTransport : public ByteTransport
 {
@@ -32,4 +32,4 @@ class MemoryTransport : public ByteTransport
 /** Two connected ends: what one writes, the other reads. */
 std::pair<std::unique_ptr<MemoryTransport>, std::unique_ptr<MemoryTransport>> makeMemoryPipe();
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Sequence number of a reply to an unreadable request (`-` on the wire). */
 constexpr int kNoSeq = -1;
@@ -60,4 +60,4 @@ std::vector<double> parseNumbers(const std::vector<std::string>& fields, size_t 
  * @p what. */
 long parseInteger(const std::string& field, const std::string& what);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

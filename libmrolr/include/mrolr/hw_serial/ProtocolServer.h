@@ -9,7 +9,7 @@
 
 #include <string>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class ProtocolServer
 {
@@ -30,4 +30,4 @@ class ProtocolServer
 	size_t executed_ = 0;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

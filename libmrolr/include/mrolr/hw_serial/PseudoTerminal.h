@@ -8,7 +8,7 @@
 
 #include <memory>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class PseudoTerminal
 {
@@ -32,4 +32,4 @@ class PseudoTerminal
 	std::unique_ptr<FdTransport> master_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Link parameters of one device (section [device.*] of config/mission_hw.ini). */
 struct LinkOptions
@@ -69,4 +69,4 @@ class SerialClient
 	std::string last_code_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

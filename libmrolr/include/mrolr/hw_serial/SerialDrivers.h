@@ -10,15 +10,15 @@
 #include <functional>
 #include <memory>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** The Labmate base over serial: `STEP` blocks until the device has executed the step. */
-class SerialBase : public BaseDevice
+class SerialBase : public hw::BaseDevice
 {
  public:
 	explicit SerialBase(std::unique_ptr<SerialClient> client);
 	void step(const base::WheelControl& u) override;
-	Odometry odometry() const override;
+	hw::Odometry odometry() const override;
 
  private:
 	std::unique_ptr<SerialClient> client_;
@@ -26,11 +26,11 @@ class SerialBase : public BaseDevice
 
 /** Where the head's stereo pairs come from: the cameras are not on the serial line (on the robot
  * they are read by a frame grabber), so the driver is given a grabber function. */
-using ImageSource = std::function<StereoImages()>;
+using ImageSource = std::function<hw::StereoImages()>;
 
 /** The BiSight head over serial: joint moves and angles on the line; grab() calls the injected
  * image source and stamps the pair with the joint angles read back from the head. */
-class SerialHead : public HeadDevice
+class SerialHead : public hw::HeadDevice
 {
  public:
 	SerialHead(std::unique_ptr<SerialClient> client, ImageSource images);
@@ -38,7 +38,7 @@ class SerialHead : public HeadDevice
 	double moveTo(const geometry::HeadAngles& target) override;
 	geometry::HeadAngles angles() const override;
 	/** Throws std::logic_error when no image source was given. */
-	StereoImages grab() override;
+	hw::StereoImages grab() override;
 
  private:
 	std::unique_ptr<SerialClient> client_;
@@ -46,13 +46,13 @@ class SerialHead : public HeadDevice
 };
 
 /** The UMI RTX arm over serial. */
-class SerialArm : public ArmDevice
+class SerialArm : public hw::ArmDevice
 {
  public:
 	explicit SerialArm(std::unique_ptr<SerialClient> client);
 	/** Throws std::out_of_range (the device's text) when the arm refuses a joint limit. */
-	void moveTo(const ArmJoints& joints) override;
-	ArmJoints joints() const override;
+	void moveTo(const hw::ArmJoints& joints) override;
+	hw::ArmJoints joints() const override;
 	void setGripper(bool closed) override;
 	bool gripperClosed() const override;
 	double gripperWidthMm() const override;
@@ -64,4 +64,4 @@ class SerialArm : public ArmDevice
 	std::unique_ptr<SerialClient> client_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

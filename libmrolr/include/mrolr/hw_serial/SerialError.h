@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Thrown by a transport when the other end has gone (port closed, pty hung up, cable pulled). */
 class TransportClosed : public std::runtime_error
@@ -17,7 +17,7 @@ class TransportClosed : public std::runtime_error
 
 /** A serial device failed: what() reads "<device> on <port>: <what happened>", e.g.
  * "device.base on /dev/pts/3: timeout: no reply after 4 attempts of 200 ms (command STEP)". */
-class SerialDeviceError : public DeviceFailure
+class SerialDeviceError : public hw::DeviceFailure
 {
  public:
 	enum class Kind
@@ -47,4 +47,4 @@ const char* kindName(SerialDeviceError::Kind kind);
  * line of any other text), for error messages a user reads. */
 std::string mrptMessage(const std::string& what);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -21,7 +21,7 @@
 #include <iosfwd>
 #include <memory>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 /** Keys `port`, `baud` (required), `timeout_ms`, `motion_timeout_ms`, `retries` (optional) of a
  * device section. A STEP waits timeout_ms plus its dt; a head or arm MOVE waits motion_timeout_ms.
@@ -40,11 +40,11 @@ struct SerialLinkConfig
  * (Disconnected) naming the section and port when it cannot be opened. */
 std::unique_ptr<SerialClient> openSerialClient(const SerialLinkConfig& config);
 
-std::unique_ptr<BaseDevice> makeSerialBaseDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::BaseDevice> makeSerialBaseDevice(const mrpt::config::CConfigFileBase& cfg,
                                                  const std::string& section);
-std::unique_ptr<HeadDevice> makeSerialHeadDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::HeadDevice> makeSerialHeadDevice(const mrpt::config::CConfigFileBase& cfg,
                                                  const std::string& section, ImageSource images);
-std::unique_ptr<ArmDevice> makeSerialArmDevice(const mrpt::config::CConfigFileBase& cfg,
+std::unique_ptr<hw::ArmDevice> makeSerialArmDevice(const mrpt::config::CConfigFileBase& cfg,
                                                const std::string& section);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

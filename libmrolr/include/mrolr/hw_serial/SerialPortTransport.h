@@ -13,7 +13,7 @@ namespace mrpt::comms
 class CSerialPort;
 }
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class SerialPortTransport : public ByteTransport
 {
@@ -31,4 +31,4 @@ class SerialPortTransport : public ByteTransport
 	std::string port_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

@@ -17,7 +17,7 @@ namespace mrpt::comms
 class CClientTCPSocket;
 }
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 enum class SocketIoStatus
 {
@@ -52,4 +52,4 @@ uint16_t freeLoopbackPort();
 /** The deadline @p ms milliseconds from now. */
 SocketDeadline deadlineIn(int ms);
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

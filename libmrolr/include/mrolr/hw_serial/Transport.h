@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class ByteTransport
 {
@@ -36,4 +36,4 @@ class FdTransport : public ByteTransport
 	std::string name_;
 };
 
-}  // namespace mrolr::hw
+}  // namespace mrolr::hw_serial

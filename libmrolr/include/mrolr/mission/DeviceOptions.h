@@ -21,7 +21,7 @@ struct DeviceChoice
 {
 	std::string section;        ///< "device.base", "device.head" or "device.arm"
 	bool serial = false;        ///< driver = serial (else sim)
-	hw::SerialLinkConfig link;  ///< read only when serial
+	hw_serial::SerialLinkConfig link;  ///< read only when serial
 	std::string port_key;       ///< "<file> [section] port", for errors about the port
 
 	/** Reads `driver` (sim | serial; anything else names the choices) and the link keys. */
@@ -35,7 +35,7 @@ struct CameraChoice
 	enum class Driver
 	{
 		Sim,          ///< the simulator's rendering head
-		Socket,       ///< a frame grabber on a local TCP socket (hw::CameraSocketClient)
+		Socket,       ///< a frame grabber on a local TCP socket (hw_serial::CameraSocketClient)
 		CameraSensor  ///< two cameras through mrpt::hwdrivers::CCameraSensor
 	};
 	Driver driver = Driver::Sim;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace mrolr::hw
+namespace mrolr::hw_serial
 {
 class SerialClient;
 }
@@ -41,13 +41,13 @@ class MissionDevices
 	std::vector<LinkReport> links() const;
 
  private:
-	std::unique_ptr<hw::SerialClient> open(const DeviceChoice& d);
-	hw::ImageSource camera(const DeviceOptions& o, const SimDevices& sim);
+	std::unique_ptr<hw_serial::SerialClient> open(const DeviceChoice& d);
+	hw_serial::ImageSource camera(const DeviceOptions& o, const SimDevices& sim);
 
 	struct Link
 	{
 		std::string section, port;
-		const hw::SerialClient* client;
+		const hw_serial::SerialClient* client;
 	};
 	std::vector<Link> links_;
 	std::shared_ptr<void> camera_;  ///< the camera behind the serial head's image source

@@ -5,7 +5,7 @@ namespace mrolr::apps
 {
 namespace
 {
-void useSerial(mission::DeviceChoice& d, const std::string& port, const hw::LinkOptions& defaults)
+void useSerial(mission::DeviceChoice& d, const std::string& port, const hw_serial::LinkOptions& defaults)
 {
 	if (!d.serial)
 	{
@@ -19,18 +19,18 @@ void useSerial(mission::DeviceChoice& d, const std::string& port, const hw::Link
 }
 }  // namespace
 
-SerialEmulation::SerialEmulation(sim::Lab& lab, const hw::FaultOptions& faults)
+SerialEmulation::SerialEmulation(sim::Lab& lab, const hw_serial::FaultOptions& faults)
     : base_handler_(lab.base()), head_handler_(lab.head()), arm_handler_(lab.arm())
 {
-	base_ = std::make_unique<hw::PtyEmulator>(base_handler_, faults);
-	head_ = std::make_unique<hw::PtyEmulator>(head_handler_, faults);
-	arm_ = std::make_unique<hw::PtyEmulator>(arm_handler_, faults);
-	camera_ = std::make_unique<hw::CameraServer>([&lab] { return lab.head().grab(); });
+	base_ = std::make_unique<hw_serial::PtyEmulator>(base_handler_, faults);
+	head_ = std::make_unique<hw_serial::PtyEmulator>(head_handler_, faults);
+	arm_ = std::make_unique<hw_serial::PtyEmulator>(arm_handler_, faults);
+	camera_ = std::make_unique<hw_serial::CameraServer>([&lab] { return lab.head().grab(); });
 }
 
 SerialEmulation::~SerialEmulation() = default;
 
-void SerialEmulation::useIn(mission::MissionOptions& o, const hw::LinkOptions& defaults) const
+void SerialEmulation::useIn(mission::MissionOptions& o, const hw_serial::LinkOptions& defaults) const
 {
 	useSerial(o.devices.base, base_->slavePath(), defaults);
 	useSerial(o.devices.head, head_->slavePath(), defaults);

@@ -80,13 +80,13 @@ int SerialApp::runEmulate()
 }
 int SerialApp::runSend()
 {
-	hw::LinkOptions link;
+	hw_serial::LinkOptions link;
 	link.device = "device";
 	link.timeout_ms = timeout_ms;
 	link.retries = retries;
 	try
 	{
-		hw::SerialClient client(std::make_unique<hw::SerialPortTransport>(port, baud), link);
+		hw_serial::SerialClient client(std::make_unique<hw_serial::SerialPortTransport>(port, baud), link);
 		reply = client.call(verb, fields);
 	}
 	catch (const std::exception& e)  // SerialDeviceError, or TransportClosed when opening
