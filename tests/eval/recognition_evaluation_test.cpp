@@ -40,7 +40,7 @@ Eigen::Matrix3d Rx(double deg)
 
 // Symmetries of the true wire-frames: the can is a body of revolution, the lettered cube has
 // none; the rotation error ignores what a symmetry cannot tell.
-TEST(rendered_eval, symmetries_and_rotation_error)
+TEST(RenderedEval, SymmetriesAndRotationError)
 {
 	const auto gen = makeGenerator();
 	auto& g = *gen;
@@ -54,7 +54,7 @@ TEST(rendered_eval, symmetries_and_rotation_error)
 }
 
 // The set is fixed: the same scene twice is the same reconstruction; objects are in view.
-TEST(rendered_eval, scenes_are_deterministic_and_show_their_objects)
+TEST(RenderedEval, ScenesAreDeterministicAndShowTheirObjects)
 {
 	const auto gen = makeGenerator();
 	auto& g = *gen;
@@ -84,7 +84,7 @@ TEST(rendered_eval, scenes_are_deterministic_and_show_their_objects)
 // The set evaluated as a whole: one case per scene and model, scene by scene in model order; the
 // observer sees each scene once with what its cases found; a model is present exactly when its
 // object stands in the scene.
-TEST(rendered_eval, set_has_a_case_per_scene_and_model)
+TEST(RenderedEval, SetHasACasePerSceneAndModel)
 {
 	EvaluationOptions o = shippedOptions();
 	o.scenes = 2;
@@ -129,7 +129,7 @@ TEST(rendered_eval, set_has_a_case_per_scene_and_model)
 }
 
 // A model named after no object of the world has no truth to be compared with.
-TEST(rendered_eval, a_model_of_no_object_is_an_error)
+TEST(RenderedEval, AModelOfNoObjectIsAnError)
 {
 	const auto gen = makeGenerator();
 	mrolr::model::WireFrame wf = gen->truthWireFrame("can");
@@ -142,7 +142,7 @@ TEST(rendered_eval, a_model_of_no_object_is_an_error)
 }
 
 // [evaluation] keys are checked: a malformed or out-of-range value names the key.
-TEST(rendered_eval, bad_evaluation_keys_name_the_key)
+TEST(RenderedEval, BadEvaluationKeysNameTheKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
 	cfg.write("evaluation", "scenes", "zero");

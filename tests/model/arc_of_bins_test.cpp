@@ -5,7 +5,7 @@
 
 using mrolr::model::arcOfBins;
 
-TEST(arc_of_bins, every_bin_covered_is_the_whole_circle)
+TEST(ArcOfBins, EveryBinCoveredIsTheWholeCircle)
 {
 	std::array<bool, 4> all{true, true, true, true};
 	const auto [t1, t2] = arcOfBins(all, -M_PI);
@@ -13,7 +13,7 @@ TEST(arc_of_bins, every_bin_covered_is_the_whole_circle)
 	EXPECT_DOUBLE_EQ(t2, 2 * M_PI);
 }
 
-TEST(arc_of_bins, the_longest_gap_is_cut_out_wrapping_round)
+TEST(ArcOfBins, TheLongestGapIsCutOutWrappingRound)
 {
 	// bins of 90°: covered 0 and 1, gap 2-3; the arc starts after the gap (bin 0) and spans 180°
 	const auto [t1, t2] = arcOfBins(std::array<bool, 4>{true, true, false, false}, 0.0);
@@ -29,7 +29,7 @@ TEST(arc_of_bins, the_longest_gap_is_cut_out_wrapping_round)
 	EXPECT_NEAR(v2 - v1, 4 * M_PI / 3, 1e-12);
 }
 
-TEST(arc_of_bins, no_bin_covered_is_an_empty_arc)
+TEST(ArcOfBins, NoBinCoveredIsAnEmptyArc)
 {
 	const auto [t1, t2] = arcOfBins(std::array<bool, 3>{}, 0.0);
 	EXPECT_DOUBLE_EQ(t2 - t1, 0);

@@ -91,7 +91,7 @@ struct Pair
 };
 }  // namespace
 
-TEST(image_verifier, true_pose_scores_high_in_both_images)
+TEST(ImageVerifier, TruePoseScoresHighInBothImages)
 {
 	const Pair p;
 	const ImageScore s = p.images.score(p.box, boxPose(), &p.occ);
@@ -101,7 +101,7 @@ TEST(image_verifier, true_pose_scores_high_in_both_images)
 	EXPECT_GE(s.considered, ImageVerificationOptions().min_samples);
 }
 
-TEST(image_verifier, shifted_or_turned_pose_scores_low)
+TEST(ImageVerifier, ShiftedOrTurnedPoseScoresLow)
 {
 	const Pair p;
 	const Eigen::Isometry3d shifted = Eigen::Translation3d(15, 0, 0) * boxPose();
@@ -111,7 +111,7 @@ TEST(image_verifier, shifted_or_turned_pose_scores_low)
 	EXPECT_LT(p.images.score(p.box, turned, &p.occ).score, 0.4);
 }
 
-TEST(image_verifier, absent_object_scores_low)
+TEST(ImageVerifier, AbsentObjectScoresLow)
 {
 	const Pair p;
 	for (const auto& other : {makeCup(), makeCan(), makeTapeRoll()})
@@ -122,7 +122,7 @@ TEST(image_verifier, absent_object_scores_low)
 	}
 }
 
-TEST(image_verifier, refinement_brings_a_perturbed_pose_back_onto_the_edges)
+TEST(ImageVerifier, RefinementBringsAPerturbedPoseBackOntoTheEdges)
 {
 	const Pair p;
 	const Eigen::Isometry3d start = Eigen::Translation3d(2.5, -2, 1.5) * boxPose() *
@@ -142,7 +142,7 @@ TEST(image_verifier, refinement_brings_a_perturbed_pose_back_onto_the_edges)
 
 // The recogniser with images: the exact scene of the box is recognised and judged in the images;
 // the cup, absent, is not found.
-TEST(image_verifier, recognizer_accepts_by_image_score)
+TEST(ImageVerifier, RecognizerAcceptsByImageScore)
 {
 	const Pair p;
 	const auto opts = RecognitionOptions::defaults();
@@ -157,7 +157,7 @@ TEST(image_verifier, recognizer_accepts_by_image_score)
 	EXPECT_LT(rec.recognize(scene).image_score, 0);  // without images: no image score
 }
 
-TEST(image_verifier, bad_input_is_reported)
+TEST(ImageVerifier, BadInputIsReported)
 {
 	const auto c = calibration();
 	const cv::Mat ok(480, 640, CV_8U, cv::Scalar(0)), small(240, 320, CV_8U, cv::Scalar(0));
@@ -179,7 +179,7 @@ TEST(image_verifier, bad_input_is_reported)
 	EXPECT_EQ(blank.score(box, boxPose(), nullptr).score, 0.0);
 }
 
-TEST(image_verifier, options_name_the_bad_key)
+TEST(ImageVerifier, OptionsNameTheBadKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
 	cfg.setContent(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 50\ncanny_high = 20\n"));
@@ -215,7 +215,7 @@ TEST(image_verifier, options_name_the_bad_key)
 }
 
 // The shipped [image_verification] equals the defaults (tests and the mission use the defaults).
-TEST(image_verifier, shipped_options_are_the_defaults)
+TEST(ImageVerifier, ShippedOptionsAreTheDefaults)
 {
 	const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile("config/recognition.ini"));
 	ImageVerificationOptions shipped;
@@ -260,7 +260,7 @@ ImageVerifier occludedPair(const std::vector<Eigen::Vector3d>& corners)
 
 // Mutual occlusion (MutualOcclusion.h): the samples behind a recognised object in front are left
 // out, so the part of the box that is still visible scores as it would unoccluded.
-TEST(image_verifier, samples_behind_an_occluder_are_left_out)
+TEST(ImageVerifier, SamplesBehindAnOccluderAreLeftOut)
 {
 	const Pair p;
 	const auto corners = squareCorners(10, 400, 450);
@@ -276,7 +276,7 @@ TEST(image_verifier, samples_behind_an_occluder_are_left_out)
 	EXPECT_EQ(after.considered + after.occluded, before.considered);
 }
 
-TEST(image_verifier, an_occluder_behind_the_object_hides_nothing)
+TEST(ImageVerifier, AnOccluderBehindTheObjectHidesNothing)
 {
 	const Pair p;
 	const auto corners = squareCorners(10, 400, 900);  // behind the box (at 650 mm)
@@ -286,7 +286,7 @@ TEST(image_verifier, an_occluder_behind_the_object_hides_nothing)
 	EXPECT_NEAR(s.score, p.images.score(p.box, boxPose(), &p.occ).score, 1e-12);
 }
 
-TEST(image_verifier, a_mostly_occluded_pose_scores_zero)
+TEST(ImageVerifier, AMostlyOccludedPoseScoresZero)
 {
 	const Pair p;
 	const auto corners = squareCorners(-400, 400, 450);  // covers the whole box
@@ -302,7 +302,7 @@ TEST(image_verifier, a_mostly_occluded_pose_scores_zero)
 // An object standing mostly outside the view: its few edges inside fit the images exactly (drawn
 // there), yet the pose scores 0 unless min_in_image_fraction is lowered — a few edges at the
 // image border are what clutter fits by chance.
-TEST(image_verifier, a_pose_mostly_outside_the_images_scores_zero)
+TEST(ImageVerifier, APoseMostlyOutsideTheImagesScoresZero)
 {
 	const Pair p;
 	const Eigen::Isometry3d aside = Eigen::Translation3d(-400, 0, 0) * boxPose();  // to the right

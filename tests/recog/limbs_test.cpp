@@ -68,7 +68,7 @@ Eigen::Isometry3d poseOf(double yaw, double tilt, const Eigen::Vector3d& t)
 }
 }  // namespace
 
-TEST(limbs, coaxial_circles_make_one_body_and_boxes_none)
+TEST(limbs, CoaxialCirclesMakeOneBodyAndBoxesNone)
 {
 	const auto can = revolutionBodiesOf(featuresOf(makeCan()));
 	ASSERT_EQ(can.size(), 1u);
@@ -98,7 +98,7 @@ TEST(limbs, coaxial_circles_make_one_body_and_boxes_none)
 // Property: for cylinders and cone frusta at random poses, every limb sample projects onto the
 // outline of the projected surface (within 0.6 px, the outline being a polygon of the surface's
 // sampled points), on both sides, and the sight ray grazes the surface there.
-TEST(limbs, limbs_lie_on_the_projected_silhouette)
+TEST(limbs, LimbsLieOnTheProjectedSilhouette)
 {
 	std::mt19937 rng(7);
 	std::uniform_real_distribution<double> U(0, 1);
@@ -132,7 +132,7 @@ TEST(limbs, limbs_lie_on_the_projected_silhouette)
 	EXPECT_GT(checked, 40 * 20);
 }
 
-TEST(limbs, camera_on_the_axis_of_a_cylinder_sees_no_limb)
+TEST(limbs, CameraOnTheAxisOfACylinderSeesNoLimb)
 {
 	const Frustum f{30, 30, 100};
 	const auto bodies = revolutionBodiesOf(featuresOf(f.wireFrame()));
@@ -176,7 +176,7 @@ mrolr::model::WireFrame bottle()
 
 // Property: the exact occlusion by the solid agrees with marching along the sight segment, for a
 // body that is not convex (a bottle: body, shoulder cone, neck), random cameras and surface points.
-TEST(limbs, solid_occlusion_agrees_with_marching_along_the_sight_ray)
+TEST(limbs, SolidOcclusionAgreesWithMarchingAlongTheSightRay)
 {
 	const auto bodies = revolutionBodiesOf(featuresOf(bottle()));
 	ASSERT_EQ(bodies.size(), 1u);
@@ -216,7 +216,7 @@ TEST(limbs, solid_occlusion_agrees_with_marching_along_the_sight_ray)
 // The ring where a bottle's neck meets its shoulder is seen from above in front; the convex polytope
 // of the 3D verification hides it (it fills the neck), the exact solid does not. Behind the neck it
 // is hidden either way.
-TEST(limbs, neck_ring_in_front_is_seen_with_the_exact_solid)
+TEST(limbs, NeckRingInFrontIsSeenWithTheExactSolid)
 {
 	const auto fs = featuresOf(bottle());
 	const SelfOcclusion occ(fs);
@@ -230,7 +230,7 @@ TEST(limbs, neck_ring_in_front_is_seen_with_the_exact_solid)
 
 // A limb behind a handle is hidden by it (the polytope of the features off the body); one in the
 // open is not, and a model that is all body never hides its limbs.
-TEST(limbs, a_handle_hides_the_limb_behind_it)
+TEST(limbs, AHandleHidesTheLimbBehindIt)
 {
 	WireFrameBuilder b("mug");
 	b.circle({0, 0, 0}, 50).circle({0, 0, 120}, 50);
@@ -315,7 +315,7 @@ struct CanPair
 };
 }  // namespace
 
-TEST(limbs, drawn_can_scores_high_at_its_pose_and_lower_10_mm_away)
+TEST(limbs, DrawnCanScoresHighAtItsPoseAndLower10MmAway)
 {
 	const CanPair p;
 	const ImageScore at = p.with.score(p.samples, canPose(), &p.occ);
@@ -329,7 +329,7 @@ TEST(limbs, drawn_can_scores_high_at_its_pose_and_lower_10_mm_away)
 	}
 }
 
-TEST(limbs, new_keys_are_required_and_read)
+TEST(limbs, NewKeysAreRequiredAndRead)
 {
 	const std::string common =
 	    "[iv]\nblur_sigma_px = 1\ncanny_low = 20\ncanny_high = 50\nedge_distance_px = 2\n"

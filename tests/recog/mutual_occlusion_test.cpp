@@ -21,7 +21,7 @@ RecognitionOptions shippedOptions()
 }
 }  // namespace
 
-TEST(mutual_occlusion, found_results_other_than_the_skipped_one_become_occluders)
+TEST(MutualOcclusion, FoundResultsOtherThanTheSkippedOneBecomeOccluders)
 {
 	const auto objects = makeLabObjects();
 	ASSERT_GE(objects.size(), 3u);
@@ -41,7 +41,7 @@ TEST(mutual_occlusion, found_results_other_than_the_skipped_one_become_occluders
 	EXPECT_EQ(occludersOf({&a, &b, &c}, r, 1, 3.0).size(), 2u);
 }
 
-TEST(mutual_occlusion, mismatched_sizes_are_reported)
+TEST(MutualOcclusion, MismatchedSizesAreReported)
 {
 	const auto objects = makeLabObjects();
 	const Recognizer a(objects[0], shippedOptions());
@@ -50,7 +50,7 @@ TEST(mutual_occlusion, mismatched_sizes_are_reported)
 }
 
 // A solid contains the points inside it, not those beside it.
-TEST(mutual_occlusion, a_solid_contains_its_inside_only)
+TEST(MutualOcclusion, ASolidContainsItsInsideOnly)
 {
 	const auto objects = makeLabObjects();
 	const Recognizer a(objects[0], shippedOptions());
@@ -61,7 +61,7 @@ TEST(mutual_occlusion, a_solid_contains_its_inside_only)
 
 // A model found behind others must stand beside them: placed in a found object it interpenetrates,
 // placed 300 mm to the side it does not.
-TEST(mutual_occlusion, a_pose_inside_a_found_object_interpenetrates)
+TEST(MutualOcclusion, APoseInsideAFoundObjectInterpenetrates)
 {
 	const auto objects = makeLabObjects();
 	const RecognitionOptions o = shippedOptions();

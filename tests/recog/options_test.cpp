@@ -11,7 +11,7 @@
 using namespace mrolr::recog;
 
 // The shipped file holds the built-in defaults exactly.
-TEST(recog_options, shipped_file_equals_defaults)
+TEST(RecogOptions, ShippedFileEqualsDefaults)
 {
 	mrpt::config::CConfigFile cfg(std::string(MROLR_SOURCE_DIR) + "/config/recognition.ini");
 	RecognitionOptions o;
@@ -24,7 +24,7 @@ TEST(recog_options, shipped_file_equals_defaults)
 }
 
 // dump() output read back gives the same options.
-TEST(recog_options, dump_round_trips)
+TEST(RecogOptions, DumpRoundTrips)
 {
 	auto o = RecognitionOptions::defaults();
 	o.levels[3].rotation_deg = 2.75;
@@ -67,7 +67,7 @@ std::string errorFor(const std::string& from, const std::string& to)
 }  // namespace
 
 // Bad values are reported with the section and key.
-TEST(recog_options, bad_values_name_the_key)
+TEST(RecogOptions, BadValuesNameTheKey)
 {
 	EXPECT_NE(errorFor("pose_method = faugeras_hebert", "pose_method = magic").find("pose_method"),
 	          std::string::npos);

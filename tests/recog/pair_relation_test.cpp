@@ -29,7 +29,7 @@ Eigen::Isometry3d randomPose(std::mt19937& rng)
 }  // namespace
 
 // The paper's quantities for two perpendicular skew lines worked by hand.
-TEST(pair_relation, skew_lines_by_hand)
+TEST(PairRelation, SkewLinesByHand)
 {
 	const auto a = line({0, 0, 0}, {100, 0, 0});
 	const auto b = line({30, -20, 10}, {30, 40, 10});
@@ -47,7 +47,7 @@ TEST(pair_relation, skew_lines_by_hand)
 
 // Relations are invariant under rigid motion: every model pair is consistent with its own image
 // under a random pose, at zero tolerance up to rounding.
-TEST(pair_relation, invariant_under_rigid_motion)
+TEST(PairRelation, InvariantUnderRigidMotion)
 {
 	std::mt19937 rng(7);
 	const Tolerance tiny{1e-6, 1e-6};  // acos near 0 and pi loses about 1e-8 rad
@@ -69,7 +69,7 @@ TEST(pair_relation, invariant_under_rigid_motion)
 
 // A fragment of a line is still consistent with the model pair, a line moved by more than the
 // tolerance is not, and a mirror image (h changes sign) is not.
-TEST(pair_relation, fragments_pass_moved_and_mirrored_fail)
+TEST(PairRelation, FragmentsPassMovedAndMirroredFail)
 {
 	const auto a = line({0, 0, 0}, {100, 0, 0});
 	const auto b = line({30, -20, 10}, {30, 40, 10});
@@ -83,7 +83,7 @@ TEST(pair_relation, fragments_pass_moved_and_mirrored_fail)
 }
 
 // Flipping a scene line changes the orientation the matcher must hypothesise.
-TEST(pair_relation, orientation_matters)
+TEST(PairRelation, OrientationMatters)
 {
 	const auto a = line({0, 0, 0}, {100, 0, 0});
 	const auto b = line({30, -20, 10}, {80, 40, 10});
@@ -98,7 +98,7 @@ TEST(pair_relation, orientation_matters)
 
 // Model tables: automatic cliques when the model has none, the model's own cliques otherwise,
 // unknown ids rejected.
-TEST(model_table, cliques_automatic_or_from_the_model)
+TEST(ModelTable, CliquesAutomaticOrFromTheModel)
 {
 	auto cube = makeAlphabetCube();
 	const ModelTable automatic(cube, 5, 6);
@@ -119,7 +119,7 @@ TEST(model_table, cliques_automatic_or_from_the_model)
 }
 
 // Malformed models are rejected with a message naming the element.
-TEST(model_table, degenerate_elements_rejected)
+TEST(ModelTable, DegenerateElementsRejected)
 {
 	mrolr::model::WireFrame wf;
 	wf.name = "bad";

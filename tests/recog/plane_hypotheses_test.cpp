@@ -51,7 +51,7 @@ PlaneHypothesisGenerator generatorOf(const mrolr::model::WireFrame& m)
 // among the hypotheses is its true axis, standing on the plane; the bottle is symmetric about it,
 // so the model origin (on the axis) is where it should be. The body (r 35) and the neck (r 15)
 // are its cylinders; the cone between them is not.
-TEST(plane_hypotheses, bottle_from_one_limb_alone)
+TEST(PlaneHypotheses, BottleFromOneLimbAlone)
 {
 	const auto bottle = makeBottle();
 	const auto gen = generatorOf(bottle);
@@ -102,7 +102,7 @@ TEST(plane_hypotheses, bottle_from_one_limb_alone)
 
 // A cup's top rim alone: among the hypotheses is the true pose up to its yaw (the rim's yaws are
 // tried every 30°, the images' refinement sweeps finer).
-TEST(plane_hypotheses, cup_from_its_top_rim_alone)
+TEST(PlaneHypotheses, CupFromItsTopRimAlone)
 {
 	const auto cup = makeCup();
 	const auto fs = featuresOf(cup);
@@ -130,7 +130,7 @@ TEST(plane_hypotheses, cup_from_its_top_rim_alone)
 
 // One horizontal line of the stapler box, whole or as a fragment sharing one end, seen alone:
 // the exact pose is among the hypotheses.
-TEST(plane_hypotheses, box_from_one_horizontal_line)
+TEST(PlaneHypotheses, BoxFromOneHorizontalLine)
 {
 	const auto box = makeStaplerBox();
 	const auto fs = featuresOf(box);
@@ -157,7 +157,7 @@ TEST(plane_hypotheses, box_from_one_horizontal_line)
 // edge): among the hypotheses is the box's true pose (both faces' widths, either order of the
 // lines); lines further apart than any two edges, or above the box, make none; a model with
 // cylinders (the bottle) and the option off get no edge pairs.
-TEST(plane_hypotheses, box_from_two_vertical_edges)
+TEST(PlaneHypotheses, BoxFromTwoVerticalEdges)
 {
 	const auto box = makeStaplerBox();  // 160 x 45 x 55 mm
 	const auto gen = generatorOf(box);
@@ -205,7 +205,7 @@ TEST(plane_hypotheses, box_from_two_vertical_edges)
 
 // The same base line 30 mm above the table (where the box has no horizontal line) or tilted 20°
 // out of the horizontal makes no hypothesis.
-TEST(plane_hypotheses, no_hypothesis_from_a_line_at_the_wrong_height_or_tilt)
+TEST(PlaneHypotheses, NoHypothesisFromALineAtTheWrongHeightOrTilt)
 {
 	const auto box = makeStaplerBox();
 	const auto fs = featuresOf(box);
@@ -232,7 +232,7 @@ TEST(plane_hypotheses, no_hypothesis_from_a_line_at_the_wrong_height_or_tilt)
 	                .empty());
 }
 
-TEST(plane_hypotheses, options_reject_bad_values)
+TEST(PlaneHypotheses, OptionsRejectBadValues)
 {
 	const std::string good =
 	    "[p]\nenable = true\nrun_when = not_found\nrim_normal_tol_deg = 15\n"
@@ -306,7 +306,7 @@ TEST(plane_hypotheses, options_reject_bad_values)
 	EXPECT_EQ(pairs.edge_pair_width_tol_mm, 2);
 }
 
-TEST(plane_hypotheses, shipped_options_are_the_defaults)
+TEST(PlaneHypotheses, ShippedOptionsAreTheDefaults)
 {
 	const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile("config/recognition.ini"));
 	PlaneHypothesisOptions shipped;
@@ -318,7 +318,7 @@ TEST(plane_hypotheses, shipped_options_are_the_defaults)
 	EXPECT_EQ(a.str(), b.str());
 }
 
-TEST(plane_hypotheses, support_plane_from_point_and_normal)
+TEST(PlaneHypotheses, SupportPlaneFromPointAndNormal)
 {
 	const auto p = SupportPlane::through({1, 2, 3}, {0, 2, 0});
 	EXPECT_NEAR(p.n_S.norm(), 1.0, 1e-12);

@@ -70,7 +70,7 @@ std::pair<double, double> boxPoseError(const Eigen::Isometry3d& T, const Eigen::
 // With the stereo pair, the recogniser finds the stapler box from one of its horizontal lines (a
 // fragment): the cliques have nothing to match, the plane hypotheses do; without the plane it is
 // not found; the cup is not found from the same line.
-TEST(plane_hypotheses, recogniser_finds_a_box_from_one_line_in_the_images)
+TEST(PlaneHypotheses, RecogniserFindsABoxFromOneLineInTheImages)
 {
 	const auto box = makeStaplerBox();
 	const auto fs = featuresOf(box);
@@ -98,7 +98,7 @@ TEST(plane_hypotheses, recogniser_finds_a_box_from_one_line_in_the_images)
 // The same box seen by two of its vertical edges only (fragments, as stereo gives them against a
 // wall) is found from the edge pair; not when an edge-pair answer needs an image score no pose
 // reaches, nor with edge pairs off.
-TEST(plane_hypotheses, recogniser_finds_a_box_from_two_vertical_edges_in_the_images)
+TEST(PlaneHypotheses, RecogniserFindsABoxFromTwoVerticalEdgesInTheImages)
 {
 	const auto box = makeStaplerBox();
 	const auto T = upright(table(), {30, -190, 640}, 2.0);

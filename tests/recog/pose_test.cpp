@@ -30,7 +30,7 @@ Eigen::Isometry3d poseFor(int k)
 }  // namespace
 
 // Faugeras–Hebert recovers an exact pose from every lab object's features.
-TEST(pose, faugeras_hebert_exact)
+TEST(pose, FaugerasHebertExact)
 {
 	int k = 0;
 	for (const auto& wf : makeLabObjects())
@@ -44,7 +44,7 @@ TEST(pose, faugeras_hebert_exact)
 
 // The quaternion rotation agrees with Eigen's SVD-based Umeyama on noisy directions (both
 // minimise the same sum of squares), fed as ± pairs so the centroid is zero.
-TEST(pose, quaternion_rotation_agrees_with_eigen_umeyama)
+TEST(pose, QuaternionRotationAgreesWithEigenUmeyama)
 {
 	std::mt19937 rng(3);
 	std::normal_distribution<> n(0, 0.05);
@@ -67,7 +67,7 @@ TEST(pose, quaternion_rotation_agrees_with_eigen_umeyama)
 }
 
 // Parallel directions alone do not fix a rotation; that is reported, not guessed.
-TEST(pose, degenerate_rotation_reported)
+TEST(pose, DegenerateRotationReported)
 {
 	const std::vector<Eigen::Vector3d> a = {Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitZ()};
 	const std::vector<Eigen::Vector3d> b = {Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitX()};
@@ -75,7 +75,7 @@ TEST(pose, degenerate_rotation_reported)
 }
 
 // Fragments do not bias the translation: lines are constrained only perpendicular to themselves.
-TEST(pose, fragments_keep_the_pose_exact)
+TEST(pose, FragmentsKeepThePoseExact)
 {
 	const auto wf = makeStaplerBox();
 	const auto T = poseFor(2);
@@ -94,7 +94,7 @@ TEST(pose, fragments_keep_the_pose_exact)
 
 // OpenGV's Arun on the derived points (conic centres, common-perpendicular midpoints) gives the
 // same pose as Faugeras–Hebert on exact data, and stays close on noisy data.
-TEST(pose, opengv_arun_agrees_with_faugeras_hebert)
+TEST(pose, OpengvArunAgreesWithFaugerasHebert)
 {
 	std::mt19937 rng(11);
 	std::normal_distribution<> n(0, 0.3);
@@ -122,7 +122,7 @@ TEST(pose, opengv_arun_agrees_with_faugeras_hebert)
 }
 
 // Too few derived points: no Arun estimate.
-TEST(pose, arun_needs_three_points)
+TEST(pose, ArunNeedsThreePoints)
 {
 	const auto wf = makeStaplerBox();
 	auto cs = exactCorrespondences(wf, poseFor(1));
@@ -141,7 +141,7 @@ TEST(pose, arun_needs_three_points)
 
 // Clustering: two groups of transforms are separated, each mean is inside its group, and the
 // spread is the RMS of the perturbations.
-TEST(cluster, separates_groups_and_reports_spread)
+TEST(cluster, SeparatesGroupsAndReportsSpread)
 {
 	const Eigen::Vector3d c(0, 0, 50);
 	std::vector<PoseHypothesis> hyps;

@@ -58,7 +58,7 @@ int runApp(const std::vector<std::string>& args, std::string& output)
 
 // The demo's cube scene: found with the true pose in the JSON; an absent model is "not found";
 // the overlay and the 3D scene are written.
-TEST(recognize_app, json_pose_matches_truth_and_files_written)
+TEST(RecognizeApp, JsonPoseMatchesTruthAndFilesWritten)
 {
 	const auto d = demoDir();
 	const auto t = truth()[0];
@@ -87,7 +87,7 @@ TEST(recognize_app, json_pose_matches_truth_and_files_written)
 }
 
 // Bad arguments exit 2; unreadable inputs exit 1 with the file named.
-TEST(recognize_app, bad_arguments_and_inputs)
+TEST(RecognizeApp, BadArgumentsAndInputs)
 {
 	const auto d = demoDir();
 	std::string out;
@@ -118,7 +118,7 @@ TEST(recognize_app, bad_arguments_and_inputs)
 
 // The stereo path is wired to stereo::reconstructScene: images that do not fit the calibration are
 // an error naming the problem, not a crash.
-TEST(recognize_app, stereo_inputs_checked)
+TEST(RecognizeApp, StereoInputsChecked)
 {
 	const auto d = demoDir();
 	std::string out;
@@ -130,7 +130,7 @@ TEST(recognize_app, stereo_inputs_checked)
 }
 
 // An ambiguous answer in --json: "ambiguous": true and every pose with its support, T the best.
-TEST(recognize_app, json_reports_an_ambiguous_pose_with_every_pose)
+TEST(RecognizeApp, JsonReportsAnAmbiguousPoseWithEveryPose)
 {
 	using V = Eigen::Vector3d;
 	const auto dir = fs::temp_directory_path() / "mrolr_recognize_ambiguous";

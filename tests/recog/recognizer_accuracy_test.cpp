@@ -25,7 +25,7 @@ using test::realisticNoise;
 
 // The fixed set of synthetic table scenes: every lab object in 6 random poses among 3 other
 // objects, noisy, fragmented, its far side hidden and some segments missing.
-TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
+TEST(RecognizerAccuracy, TableScenesMeetTheIssueTargets)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
@@ -64,7 +64,7 @@ TEST(recognizer_accuracy, table_scenes_meet_the_issue_targets)
 }
 
 // Absent objects: each object searched for in scenes made of four other objects is not found.
-TEST(recognizer_accuracy, absent_objects_are_not_found)
+TEST(RecognizerAccuracy, AbsentObjectsAreNotFound)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();

@@ -19,7 +19,7 @@ Eigen::Isometry3d somePose(int k)
 
 // Every lab object carried by a known pose into an otherwise empty scene is found at the first
 // level with the exact pose.
-TEST(recognizer_exact, every_object_found_with_exact_pose)
+TEST(RecognizerExact, EveryObjectFoundWithExactPose)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
@@ -37,7 +37,7 @@ TEST(recognizer_exact, every_object_found_with_exact_pose)
 }
 
 // The exact pose survives clutter: the other nine objects placed elsewhere in the same scene.
-TEST(recognizer_exact, exact_pose_among_the_other_objects)
+TEST(RecognizerExact, ExactPoseAmongTheOtherObjects)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();

@@ -25,7 +25,7 @@ SceneNoise noisy()
 }  // namespace
 
 // The OpenGV point-based estimator alone, and both together, also recognise with exact poses.
-TEST(recognizer_misc, arun_and_both_pose_methods)
+TEST(RecognizerMisc, ArunAndBothPoseMethods)
 {
 	const auto objects = makeLabObjects();
 	for (const char* method : {"arun", "both"})
@@ -44,7 +44,7 @@ TEST(recognizer_misc, arun_and_both_pose_methods)
 
 // The model area's automatic cliques (mrolr-model's method) also recognise exact scenes; an
 // unknown method is refused.
-TEST(recognizer_misc, model_area_cliques)
+TEST(RecognizerMisc, ModelAreaCliques)
 {
 	auto opts = RecognitionOptions::defaults();
 	opts.auto_cliques = "model";
@@ -63,7 +63,7 @@ TEST(recognizer_misc, model_area_cliques)
 }
 
 // Noise kinds one at a time (endpoint noise, fragmentation, missing segments), each object.
-TEST(recognizer_misc, each_noise_kind_alone)
+TEST(RecognizerMisc, EachNoiseKindAlone)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
@@ -86,7 +86,7 @@ TEST(recognizer_misc, each_noise_kind_alone)
 }
 
 // Pan sweep (thesis 6.4): the object is in the third of five scene models; the sweep stops there.
-TEST(recognizer_misc, pan_sweep_finds_the_scene_holding_the_object)
+TEST(RecognizerMisc, PanSweepFindsTheSceneHoldingTheObject)
 {
 	const auto objects = makeLabObjects();
 	const auto cup = objects[1];
@@ -110,7 +110,7 @@ TEST(recognizer_misc, pan_sweep_finds_the_scene_holding_the_object)
 }
 
 // An empty scene and a scene of one line: not found, no crash.
-TEST(recognizer_misc, empty_and_tiny_scenes)
+TEST(RecognizerMisc, EmptyAndTinyScenes)
 {
 	const Recognizer rec(makeCup(), RecognitionOptions::defaults());
 	mrolr::model::WireFrame empty;
@@ -122,7 +122,7 @@ TEST(recognizer_misc, empty_and_tiny_scenes)
 
 // Malformed .wf text is rejected by the reader with the line number (also a zero-length line);
 // a model built in code with a non-finite conic reaches the recognizer, which names the element.
-TEST(recognizer_misc, malformed_wire_frames)
+TEST(RecognizerMisc, MalformedWireFrames)
 {
 	std::istringstream bad("# mrolr wire-frame 1\nunits mm\nframe object\nline 1 0 0 0 1 0\n");
 	EXPECT_THROW(mrolr::model::readWireFrame(bad, "bad.wf"), mrolr::model::WireFrameFormatError);

@@ -18,7 +18,7 @@ using mrolr::apps::RecognizeApp;
 // scene, with the scene's up direction, its support plane, its stereo pair for verification in
 // the images and the second search behind the objects found): no model absent from a scene is
 // reported found, and the measured rate does not fall (docs/recog.md).
-TEST(rendered_eval, shipped_set_has_no_false_positive_and_keeps_its_rate)
+TEST(RenderedEval, ShippedSetHasNoFalsePositiveAndKeepsItsRate)
 {
 	const auto dir = (fs::temp_directory_path() / "mrolr_rendered_eval_rate_test").string();
 	fs::remove_all(dir);
@@ -49,7 +49,7 @@ TEST(rendered_eval, shipped_set_has_no_false_positive_and_keeps_its_rate)
 }
 
 // mrolr-recognize --evaluate writes the scenes, their overlays and the summary.
-TEST(rendered_eval, app_writes_overlay_and_summary)
+TEST(RenderedEval, AppWritesOverlayAndSummary)
 {
 	const auto dir = (fs::temp_directory_path() / "mrolr_rendered_eval_test").string();
 	fs::remove_all(dir);
@@ -69,7 +69,7 @@ TEST(rendered_eval, app_writes_overlay_and_summary)
 }
 
 // --evaluate renders its own scenes: a scene argument beside it is a usage error.
-TEST(rendered_eval, evaluate_with_a_scene_is_a_usage_error)
+TEST(RenderedEval, EvaluateWithASceneIsAUsageError)
 {
 	RecognizeApp app;
 	EXPECT_THROW(app.initialize({"mrolr-recognize", "--evaluate", "/tmp/x", "--scene", "s.wf"}),
@@ -80,7 +80,7 @@ TEST(rendered_eval, evaluate_with_a_scene_is_a_usage_error)
 
 // --support-plane nx,ny,nz,d_mm: normalised; three numbers, a zero normal or a scene file instead
 // of a stereo pair are usage errors.
-TEST(rendered_eval, support_plane_argument)
+TEST(RenderedEval, SupportPlaneArgument)
 {
 	const std::vector<std::string> stereo = {"mrolr-recognize", "--model", "m.wf",
 	                                         "--left",          "l.png",   "--right",
@@ -113,7 +113,7 @@ TEST(rendered_eval, support_plane_argument)
 
 // mrolr-recognize --judgement draws, for a model found in a rendered pair, its judged samples on
 // the left image: the supported ones green.
-TEST(rendered_eval, judgement_draws_the_supported_samples)
+TEST(RenderedEval, JudgementDrawsTheSupportedSamples)
 {
 	const auto dir = (fs::temp_directory_path() / "mrolr_rendered_eval_judgement_test").string();
 	fs::remove_all(dir);

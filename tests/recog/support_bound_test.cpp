@@ -36,7 +36,7 @@ Eigen::Isometry3d poseNear(const std::vector<Feature>& scene, std::mt19937& rng)
 
 // The bound is above the verified support of the true pose and of random poses, in cluttered,
 // noisy scenes, for every lab object (it must never skip a level that could verify).
-TEST(support_bound, bounds_the_verified_support_of_any_pose)
+TEST(SupportBound, BoundsTheVerifiedSupportOfAnyPose)
 {
 	const auto objects = makeLabObjects();
 	std::mt19937 rng(7);
@@ -56,7 +56,7 @@ TEST(support_bound, bounds_the_verified_support_of_any_pose)
 
 // The focus bound holds for the poses that put the focus on its scene match: the true pose with
 // each model feature's own image as the focus match.
-TEST(support_bound, focus_bound_holds_at_the_true_pose)
+TEST(SupportBound, FocusBoundHoldsAtTheTruePose)
 {
 	const auto objects = makeLabObjects();
 	for (size_t k = 0; k < objects.size(); ++k)
@@ -74,7 +74,7 @@ TEST(support_bound, focus_bound_holds_at_the_true_pose)
 
 // A scene with too little nearby length for the model: every level is skipped, "not found";
 // with the skips off the same answer (the search finds nothing either).
-TEST(support_bound, sparse_scene_skips_every_level)
+TEST(SupportBound, SparseSceneSkipsEveryLevel)
 {
 	const auto objects = makeLabObjects();
 	const auto cube = objects[0];
@@ -94,7 +94,7 @@ TEST(support_bound, sparse_scene_skips_every_level)
 
 // Skipping never changes an answer: the synthetic table scenes give the same found flags and poses
 // with and without it.
-TEST(support_bound, skipping_keeps_the_answers)
+TEST(SupportBound, SkippingKeepsTheAnswers)
 {
 	const auto objects = makeLabObjects();
 	auto with = RecognitionOptions::defaults(), without = with;

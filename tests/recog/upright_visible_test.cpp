@@ -30,7 +30,7 @@ double angleDeg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
 }
 }  // namespace
 
-TEST(self_occlusion, camera_sees_the_front_of_a_box_and_not_its_back)
+TEST(SelfOcclusion, CameraSeesTheFrontOfABoxAndNotItsBack)
 {
 	const auto features =
 	    featuresOf(WireFrameBuilder("box").box({-50, -50, -50}, {50, 50, 50}).build());
@@ -71,7 +71,7 @@ TEST(self_occlusion, camera_sees_the_front_of_a_box_and_not_its_back)
 		}
 }
 
-TEST(upright_prior, a_scene_seen_upside_down_finds_nothing_upright)
+TEST(UprightPrior, ASceneSeenUpsideDownFindsNothingUpright)
 {
 	const auto objects = makeLabObjects();
 	const Recognizer rec(objects[1], RecognitionOptions::defaults());
@@ -88,7 +88,7 @@ TEST(upright_prior, a_scene_seen_upside_down_finds_nothing_upright)
 
 // The synthetic table scenes of recognizer_accuracy_test, searched with the scene's up direction
 // (upright prior, expected-visible score): the targets and no false positive hold too.
-TEST(upright_prior, table_scenes_with_up_keep_the_targets_and_no_false_positive)
+TEST(UprightPrior, TableScenesWithUpKeepTheTargetsAndNoFalsePositive)
 {
 	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
