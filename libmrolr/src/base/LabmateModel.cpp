@@ -52,7 +52,7 @@ void LabmateOptions::dumpToTextStream(std::ostream& out) const
 	    << "\nmast_top_height_m        = " << mast_top_height_m << "\n";
 }
 
-LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)
+LabmateModel::LabmateModel(const LabmateOptions& options) : options_(options)
 {
 	if (!(options.wheel_half_separation_m > 0))
 		throw std::invalid_argument("LabmateModel: wheel_half_separation_m must be positive");
@@ -60,7 +60,7 @@ LabmateModel::LabmateModel(const LabmateOptions& options) : m_options(options)
 
 double LabmateModel::turnAngle(const WheelControl& u) const
 {
-	return (u.v1_mps - u.v2_mps) * u.dt_s / (2 * m_options.wheel_half_separation_m);
+	return (u.v1_mps - u.v2_mps) * u.dt_s / (2 * options_.wheel_half_separation_m);
 }
 
 Eigen::Vector3d LabmateModel::move(const Eigen::Vector3d& x_v, const WheelControl& u) const
@@ -90,7 +90,7 @@ Eigen::Matrix<double, 3, 2> LabmateModel::jacobianControl(const Eigen::Vector3d&
 	// f depends on u through s and θ: ∂s/∂v_i = Δt/2, ∂θ/∂v1 = −∂θ/∂v2 = Δt/(2 D1) (eq 5.14).
 	const Eigen::Vector3d df_ds(c * k.a - sn * k.b, sn * k.a + c * k.b, 0);
 	const Eigen::Vector3d df_dth(s * (c * k.da - sn * k.db), s * (sn * k.da + c * k.db), 1);
-	const double ds = u.dt_s / 2, dth = u.dt_s / (2 * m_options.wheel_half_separation_m);
+	const double ds = u.dt_s / 2, dth = u.dt_s / (2 * options_.wheel_half_separation_m);
 	Eigen::Matrix<double, 3, 2> G;
 	G.col(0) = df_ds * ds + df_dth * dth;
 	G.col(1) = df_ds * ds - df_dth * dth;
@@ -99,7 +99,7 @@ Eigen::Matrix<double, 3, 2> LabmateModel::jacobianControl(const Eigen::Vector3d&
 
 Eigen::Matrix2d LabmateModel::controlCovariance(const WheelControl& u) const
 {
-	const double f = m_options.velocity_noise_fraction;
+	const double f = options_.velocity_noise_fraction;
 	return Eigen::Vector2d(std::pow(f * u.v1_mps, 2), std::pow(f * u.v2_mps, 2)).asDiagonal();
 }
 
@@ -111,15 +111,15 @@ Eigen::Matrix3d LabmateModel::processNoise(const Eigen::Vector3d& x_v, const Whe
 
 WheelControl LabmateModel::rotationControl(double angle_rad) const
 {
-	const double w = m_options.rotation_wheel_speed_mps;
-	const double dt = std::abs(angle_rad) * m_options.wheel_half_separation_m / w;
+	const double w = options_.rotation_wheel_speed_mps;
+	const double dt = std::abs(angle_rad) * options_.wheel_half_separation_m / w;
 	const double sgn = angle_rad >= 0 ? 1.0 : -1.0;
 	return {sgn * w, -sgn * w, dt};
 }
 
 WheelControl LabmateModel::translationControl(double distance_m) const
 {
-	const double v = m_options.translation_speed_mps;
+	const double v = options_.translation_speed_mps;
 	const double sgn = distance_m >= 0 ? 1.0 : -1.0;
 	return {sgn * v, sgn * v, std::abs(distance_m) / v};
 }

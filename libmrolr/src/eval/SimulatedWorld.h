@@ -14,8 +14,8 @@ class SimulatedWorld
  public:
 	SimulatedWorld(const world::World& world, const SimulationSetup& setup, uint64_t seed);
 
-	const Eigen::Vector3d& pose() const { return m_pose; }
-	void setPose(const Eigen::Vector3d& x_v) { m_pose = x_v; }
+	const Eigen::Vector3d& pose() const { return pose_; }
+	void setPose(const Eigen::Vector3d& x_v) { pose_ = x_v; }
 	/** Moves the true vehicle by @p u with wheel noise and (in a burst) wheel slip. */
 	void move(const base::WheelControl& u);
 	/** True when landmark @p k can be found and fixated from the true pose now. */
@@ -30,14 +30,14 @@ class SimulatedWorld
 	size_t landmarkIndex(const std::string& name) const;
 
  private:
-	const world::World& m_world;
-	const SimulationSetup& m_setup;
-	base::LabmateModel m_model;
-	std::mt19937_64 m_rng;
-	Eigen::Vector3d m_pose = Eigen::Vector3d::Zero();
-	int m_slip_left = 0;
-	int m_slip_wheel = 0;
-	std::vector<std::optional<Eigen::Vector3d>> m_first_seen;
+	const world::World& world_;
+	const SimulationSetup& setup_;
+	base::LabmateModel model_;
+	std::mt19937_64 rng_;
+	Eigen::Vector3d pose_ = Eigen::Vector3d::Zero();
+	int slip_left_ = 0;
+	int slip_wheel_ = 0;
+	std::vector<std::optional<Eigen::Vector3d>> first_seen_;
 };
 
 }  // namespace mrolr::eval::detail

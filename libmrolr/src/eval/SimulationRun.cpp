@@ -24,7 +24,7 @@ class RunEngine
 {
  public:
 	RunEngine(const world::World& w, const SimulationSetup& s, uint64_t seed)
-	    : m_world(w), m_setup(s), m_model(s.labmate), m_truth(w, s, seed), m_filter(s.slam, m_model)
+	    : world_(w), setup_(s), model_(s.labmate), truth_(w, s, seed), filter_(s.slam, model_)
 	{
 	}
 
@@ -42,51 +42,51 @@ class RunEngine
 	void finish();
 	std::optional<size_t> featureIndex(const std::string& label);
 
-	const world::World& m_world;
-	const SimulationSetup& m_setup;
-	base::LabmateModel m_model;
-	detail::SimulatedWorld m_truth;
-	slam::ActiveSlamFilter m_filter;
-	Eigen::Vector3d m_dr = Eigen::Vector3d::Zero();
-	std::string m_tracked;                             ///< label of the feature being tracked
-	Eigen::Vector3d m_head = Eigen::Vector3d::Zero();  ///< ideal-head angles now
-	std::vector<std::pair<std::string, Eigen::Vector3d>> m_step_measurements;
-	int m_step_accepted = 0;
-	RunResult m_r;
+	const world::World& world_;
+	const SimulationSetup& setup_;
+	base::LabmateModel model_;
+	detail::SimulatedWorld truth_;
+	slam::ActiveSlamFilter filter_;
+	Eigen::Vector3d dr_ = Eigen::Vector3d::Zero();
+	std::string tracked_;                             ///< label of the feature being tracked
+	Eigen::Vector3d head_ = Eigen::Vector3d::Zero();  ///< ideal-head angles now
+	std::vector<std::pair<std::string, Eigen::Vector3d>> step_measurements_;
+	int step_accepted_ = 0;
+	RunResult r_;
 };
 
 RunResult RunEngine::run()
 {
-	if (m_world.waypoints.size() < 2)
-		throw std::invalid_argument(m_world.path + ": the route needs at least two waypoints");
+	if (world_.waypoints.size() < 2)
+		throw std::invalid_argument(world_.path + ": the route needs at least two waypoints");
 	const auto t0 = std::chrono::steady_clock::now();
-	const Eigen::Vector3d start = poseOf(m_world.waypoints.front());
-	m_filter.reset(start);
-	m_truth.setPose(start);
-	m_dr = start;
-	for (const auto& lm : m_world.landmarks)
-		if (lm.known) m_filter.addKnownFeature(lm.name, lm.p_LinW);
-	for (int lap = 0; lap < m_setup.sim.laps; ++lap)
-		for (size_t w = 1; w < m_world.waypoints.size(); ++w)
+	const Eigen::Vector3d start = poseOf(world_.waypoints.front());
+	filter_.reset(start);
+	truth_.setPose(start);
+	dr_ = start;
+	for (const auto& lm : world_.landmarks)
+		if (lm.known) filter_.addKnownFeature(lm.name, lm.p_LinW);
+	for (int lap = 0; lap < setup_.sim.laps; ++lap)
+		for (size_t w = 1; w < world_.waypoints.size(); ++w)
 		{
-			const auto plan = base::planLeg(m_filter.vehicle(), poseOf(m_world.waypoints[w]),
-			                                m_model, m_setup.trajectory);
+			const auto plan = base::planLeg(filter_.vehicle(), poseOf(world_.waypoints[w]),
+			                                model_, setup_.trajectory);
 			for (size_t k = 0; k < plan.size(); ++k) step(plan, k);
 		}
 	finish();
-	m_r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-	return m_r;
+	r_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	return r_;
 }
 
 void RunEngine::step(const std::vector<base::PlannedStep>& plan, size_t k)
 {
 	const auto& u = plan[k].u;
-	m_truth.move(u);
-	m_dr = m_model.move(m_dr, u);
-	m_filter.predict(u);
-	m_r.controls_odometry.emplace_back(u.v1_mps, u.v2_mps, u.dt_s);
-	m_step_measurements.clear();
-	m_step_accepted = 0;
+	truth_.move(u);
+	dr_ = model_.move(dr_, u);
+	filter_.predict(u);
+	r_.controls_odometry.emplace_back(u.v1_mps, u.v2_mps, u.dt_s);
+	step_measurements_.clear();
+	step_accepted_ = 0;
 	// Measure the mapped features first, then add new ones (5.7) from the updated pose: initialised
 	// from the prior, right after the step's 3.8° (straight) or 9° (90° turn) of heading noise, a
 	// feature 5 m away inherits a lateral spread of 0.3–0.8 m tied to the heading by a rotation the
@@ -99,21 +99,21 @@ void RunEngine::step(const std::vector<base::PlannedStep>& plan, size_t k)
 
 std::optional<size_t> RunEngine::featureIndex(const std::string& label)
 {
-	for (size_t i = 0; i < m_filter.numFeatures(); ++i)
-		if (m_filter.info(i).label == label) return i;
+	for (size_t i = 0; i < filter_.numFeatures(); ++i)
+		if (filter_.info(i).label == label) return i;
 	return std::nullopt;
 }
 
 std::vector<size_t> RunEngine::predictedVisible()
 {
 	std::vector<size_t> out;
-	const Eigen::Vector3d xv = m_filter.vehicle();
-	for (size_t i = 0; i < m_filter.numFeatures(); ++i)
+	const Eigen::Vector3d xv = filter_.vehicle();
+	for (size_t i = 0; i < filter_.numFeatures(); ++i)
 	{
-		const auto& info = m_filter.info(i);
-		const Eigen::Vector3d y = m_filter.feature(i);
-		const auto v = info.known ? slam::headCanFixate(xv, y, m_setup.slam.head)
-		                          : slam::assessVisibility(xv, y, info.p_C0atInitInW, m_setup.slam);
+		const auto& info = filter_.info(i);
+		const Eigen::Vector3d y = filter_.feature(i);
+		const auto v = info.known ? slam::headCanFixate(xv, y, setup_.slam.head)
+		                          : slam::assessVisibility(xv, y, info.p_C0atInitInW, setup_.slam);
 		if (v == slam::Visibility::Visible) out.push_back(i);
 	}
 	return out;
@@ -123,25 +123,25 @@ void RunEngine::acquireFeatures()
 {
 	// 5.7: fewer than min_visible_features visible → search left, ahead, right for new ones.
 	const double k = M_PI / 180,
-	             dirs[3] = {m_setup.sim.search_pan_deg, 0, -m_setup.sim.search_pan_deg};
+	             dirs[3] = {setup_.sim.search_pan_deg, 0, -setup_.sim.search_pan_deg};
 	for (double dir_deg : dirs)
 	{
-		if (static_cast<int>(predictedVisible().size()) >= m_setup.slam.min_visible_features)
+		if (static_cast<int>(predictedVisible().size()) >= setup_.slam.min_visible_features)
 			return;
 		std::optional<size_t> best;
-		double best_off = m_setup.sim.search_window_deg * k;
-		for (size_t l = 0; l < m_world.landmarks.size(); ++l)
+		double best_off = setup_.sim.search_window_deg * k;
+		for (size_t l = 0; l < world_.landmarks.size(); ++l)
 		{
-			if (featureIndex(m_world.landmarks[l].name) || !m_truth.visible(l)) continue;
-			const double off = std::abs(m_truth.trueAngles(l)[0] - dir_deg * k);
+			if (featureIndex(world_.landmarks[l].name) || !truth_.visible(l)) continue;
+			const double off = std::abs(truth_.trueAngles(l)[0] - dir_deg * k);
 			if (off <= best_off) best = l, best_off = off;
 		}
 		if (!best) continue;
 		bool outlier = false;
-		const Eigen::Vector3d h = m_truth.measure(*best, false, outlier);
-		m_filter.initialiseFeature(m_world.landmarks[*best].name, h);
-		m_truth.markFirstSeen(*best);
-		++m_r.features_added;
+		const Eigen::Vector3d h = truth_.measure(*best, false, outlier);
+		filter_.initialiseFeature(world_.landmarks[*best].name, h);
+		truth_.markFirstSeen(*best);
+		++r_.features_added;
 	}
 }
 
@@ -149,20 +149,20 @@ std::vector<size_t> RunEngine::chooseFeatures(const std::vector<base::PlannedSte
 {
 	slam::SaccadeQuery q;
 	q.visible = predictedVisible();
-	if (q.visible.empty() || m_setup.sim.measurements_per_step == 0) return {};
-	q.x = m_filter.stateVector();
-	q.P = m_filter.covariance();
-	q.current = featureIndex(m_tracked);
-	q.head_angles = m_head;
+	if (q.visible.empty() || setup_.sim.measurements_per_step == 0) return {};
+	q.x = filter_.stateVector();
+	q.P = filter_.covariance();
+	q.current = featureIndex(tracked_);
+	q.head_angles = head_;
 	for (size_t j = k + 1; j < plan.size(); ++j) q.upcoming.push_back(plan[j].u);
-	const auto d = slam::decideSaccade(q, m_setup.slam, m_model);
+	const auto d = slam::decideSaccade(q, setup_.slam, model_);
 	std::vector<size_t> chosen{*d.feature};
 	std::vector<size_t> rest;
 	for (size_t i : q.visible)
 		if (i != *d.feature) rest.push_back(i);
-	while (static_cast<int>(chosen.size()) < m_setup.sim.measurements_per_step && !rest.empty())
+	while (static_cast<int>(chosen.size()) < setup_.sim.measurements_per_step && !rest.empty())
 	{
-		const size_t b = *slam::largestVolume(q.x, q.P, rest, m_setup.slam);
+		const size_t b = *slam::largestVolume(q.x, q.P, rest, setup_.slam);
 		chosen.push_back(rest[b]);
 		rest.erase(rest.begin() + static_cast<long>(b));
 	}
@@ -172,81 +172,81 @@ std::vector<size_t> RunEngine::chooseFeatures(const std::vector<base::PlannedSte
 void RunEngine::measure(const std::vector<base::PlannedStep>& plan, size_t k)
 {
 	std::vector<slam::Observation> obs;
-	std::vector<bool> outlier_of(m_filter.numFeatures(), false);
+	std::vector<bool> outlier_of(filter_.numFeatures(), false);
 	for (size_t i : chooseFeatures(plan, k))
 	{
-		const size_t l = m_truth.landmarkIndex(m_filter.info(i).label);
-		m_head = m_filter.predictedMeasurement(i);
-		if (!m_truth.visible(l))
+		const size_t l = truth_.landmarkIndex(filter_.info(i).label);
+		head_ = filter_.predictedMeasurement(i);
+		if (!truth_.visible(l))
 		{
-			m_filter.recordAttempt(i, false);  // not found where predicted
-			++m_r.attempts_failed;
+			filter_.recordAttempt(i, false);  // not found where predicted
+			++r_.attempts_failed;
 			continue;
 		}
 		bool outlier = false;
-		obs.push_back({i, m_truth.measure(l, true, outlier)});
+		obs.push_back({i, truth_.measure(l, true, outlier)});
 		outlier_of[i] = outlier;
-		m_r.outliers_injected += outlier ? 1 : 0;
+		r_.outliers_injected += outlier ? 1 : 0;
 	}
-	if (!obs.empty()) m_tracked = m_filter.info(obs.front().feature).label;
-	applyReport(m_filter.update(obs), outlier_of);
-	for (const auto& o : obs) m_step_measurements.emplace_back(m_filter.info(o.feature).label, o.h);
+	if (!obs.empty()) tracked_ = filter_.info(obs.front().feature).label;
+	applyReport(filter_.update(obs), outlier_of);
+	for (const auto& o : obs) step_measurements_.emplace_back(filter_.info(o.feature).label, o.h);
 }
 
 void RunEngine::applyReport(const slam::UpdateReport& r, const std::vector<bool>& outlier_of)
 {
-	for (size_t i : r.accepted) m_filter.recordAttempt(i, true);
+	for (size_t i : r.accepted) filter_.recordAttempt(i, true);
 	for (size_t i : r.rejected)
 	{
-		m_filter.recordAttempt(i, false);
-		++m_r.measurements_rejected;
-		m_r.outliers_rejected += outlier_of[i] ? 1 : 0;
-		++m_r.attempts_failed;
+		filter_.recordAttempt(i, false);
+		++r_.measurements_rejected;
+		r_.outliers_rejected += outlier_of[i] ? 1 : 0;
+		++r_.attempts_failed;
 	}
-	m_r.nis.insert(m_r.nis.end(), r.nis.begin(), r.nis.end());
-	m_step_accepted = static_cast<int>(r.accepted.size());
+	r_.nis.insert(r_.nis.end(), r.nis.begin(), r.nis.end());
+	step_accepted_ = static_cast<int>(r.accepted.size());
 }
 
 void RunEngine::deleteFeatures()
 {
-	for (size_t i = m_filter.numFeatures(); i-- > 0;)
-		if (!m_filter.info(i).known && m_filter.shouldDelete(i))
+	for (size_t i = filter_.numFeatures(); i-- > 0;)
+		if (!filter_.info(i).known && filter_.shouldDelete(i))
 		{
-			m_filter.deleteFeature(i);
-			++m_r.features_deleted;
+			filter_.deleteFeature(i);
+			++r_.features_deleted;
 		}
 }
 
 void RunEngine::record()
 {
 	StepRecord s;
-	s.truth = m_truth.pose();
-	s.estimate = m_filter.vehicle();
-	s.dead_reckoning = m_dr;
-	s.P_vv = m_filter.vehicleCovariance();
+	s.truth = truth_.pose();
+	s.estimate = filter_.vehicle();
+	s.dead_reckoning = dr_;
+	s.P_vv = filter_.vehicleCovariance();
 	Eigen::Vector3d e = s.truth - s.estimate;
 	e[2] = base::wrapAngle(e[2]);
 	const Eigen::LDLT<Eigen::Matrix3d> ldlt(s.P_vv);
 	// Right after the first straight step Q has rank 2 and NEES is undefined.
 	s.nees = s.P_vv.determinant() > 1e-30 ? e.dot(ldlt.solve(e)) : std::nan("");
-	s.features = static_cast<int>(m_filter.numFeatures());
-	s.measured = m_step_accepted;
-	m_r.steps.push_back(s);
-	m_r.measurements.push_back(m_step_measurements);
+	s.features = static_cast<int>(filter_.numFeatures());
+	s.measured = step_accepted_;
+	r_.steps.push_back(s);
+	r_.measurements.push_back(step_measurements_);
 }
 
 void RunEngine::finish()
 {
-	for (size_t i = 0; i < m_filter.numFeatures(); ++i)
+	for (size_t i = 0; i < filter_.numFeatures(); ++i)
 	{
-		const auto& info = m_filter.info(i);
-		m_r.final_labels.push_back(info.label);
-		m_r.final_positions.push_back(m_filter.feature(i));
-		m_r.final_covariances.push_back(m_filter.featureCovariance(i));
+		const auto& info = filter_.info(i);
+		r_.final_labels.push_back(info.label);
+		r_.final_positions.push_back(filter_.feature(i));
+		r_.final_covariances.push_back(filter_.featureCovariance(i));
 		if (info.known) continue;
-		const auto& p = m_world.landmarks[m_truth.landmarkIndex(info.label)].p_LinW;
-		m_r.landmark_error_sum_m += (m_filter.feature(i) - p).norm();
-		++m_r.landmark_count;
+		const auto& p = world_.landmarks[truth_.landmarkIndex(info.label)].p_LinW;
+		r_.landmark_error_sum_m += (filter_.feature(i) - p).norm();
+		++r_.landmark_count;
 	}
 }
 }  // namespace

@@ -12,9 +12,9 @@
 namespace mrolr::slam
 {
 ActiveSlamFilter::ActiveSlamFilter(const SlamOptions& options, const base::LabmateModel& model)
-    : m_options(options), m_model(model)
+    : options_(options), model_(model)
 {
-	m_gate = chi2Quantile(options.gate_probability, 3);
+	gate_ = chi2Quantile(options.gate_probability, 3);
 	KF_options.use_analytic_observation_jacobian = true;
 	KF_options.use_analytic_transition_jacobian = true;
 	// MRPT runs the predictions and the batch update; sequential and postponed updates are ours.
@@ -24,14 +24,14 @@ ActiveSlamFilter::ActiveSlamFilter(const SlamOptions& options, const base::Labma
 
 void ActiveSlamFilter::predict(const base::WheelControl& u)
 {
-	m_u = u;
-	if (m_tracker.tracking())
+	u_ = u;
+	if (tracker_.tracking())
 	{
 		predictPostponed();
 		return;
 	}
-	m_pending.clear();
-	m_skipPrediction = false;
+	pending_.clear();
+	skip_prediction_ = false;
 	runOneKalmanIteration();
 	notePrediction(vehicleRaw());
 }
@@ -40,7 +40,7 @@ UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
 {
 	for (size_t a = 0; a < z.size(); ++a)
 	{
-		if (z[a].feature >= m_info.size())
+		if (z[a].feature >= info_.size())
 			throw std::out_of_range("ActiveSlamFilter::update: no feature " +
 			                        std::to_string(z[a].feature));
 		for (size_t b = a + 1; b < z.size(); ++b)
@@ -49,30 +49,30 @@ UpdateReport ActiveSlamFilter::update(const std::vector<Observation>& z)
 	}
 	if (postponedApplies(z)) return updatePostponed(z.front());
 	synchronise();
-	m_report = {};
-	if (z.empty()) return m_report;
-	if (m_options.update_method == UpdateMethod::Sequential)
+	report_ = {};
+	if (z.empty()) return report_;
+	if (options_.update_method == UpdateMethod::Sequential)
 	{
 		updateSequential(z);
-		return m_report;
+		return report_;
 	}
-	m_pending = z;
-	m_skipPrediction = true;
+	pending_ = z;
+	skip_prediction_ = true;
 	runOneKalmanIteration();
-	m_pending.clear();
-	return m_report;
+	pending_.clear();
+	return report_;
 }
 
 void ActiveSlamFilter::OnGetAction(KFArray_ACT& u) const
 {
-	u[0] = m_u.v1_mps;
-	u[1] = m_u.v2_mps;
+	u[0] = u_.v1_mps;
+	u[1] = u_.v2_mps;
 }
 
 void ActiveSlamFilter::OnTransitionModel(const KFArray_ACT& u, KFArray_VEH& x, bool& skip) const
 {
-	skip = m_skipPrediction;
-	const Eigen::Vector3d xn = m_model.move(x.asEigen(), {u[0], u[1], m_u.dt_s});
+	skip = skip_prediction_;
+	const Eigen::Vector3d xn = model_.move(x.asEigen(), {u[0], u[1], u_.dt_s});
 	for (int k = 0; k < 3; ++k) x[k] = xn[k];
 }
 
@@ -90,12 +90,12 @@ Eigen::Matrix3d ActiveSlamFilter::processNoise(const Eigen::Vector3d& x_v) const
 {
 	// Q of the model (eq 5.12) has rank 2 (two wheels drive three states); the floor stands for
 	// what its first-order propagation leaves out, scaled by the time the step takes.
-	const double t = std::abs(m_u.dt_s);
-	const Eigen::Vector3d floor(m_options.process_noise_floor_m, m_options.process_noise_floor_m,
-	                            m_options.process_noise_floor_rad);
+	const double t = std::abs(u_.dt_s);
+	const Eigen::Vector3d floor(options_.process_noise_floor_m, options_.process_noise_floor_m,
+	                            options_.process_noise_floor_rad);
 	Eigen::Matrix3d Q =
-	    m_model.processNoise(x_v, m_u) + (t * floor.cwiseAbs2()).asDiagonal().toDenseMatrix();
-	if (m_options.process_noise_order == 2) Q += secondOrderProcessNoise(m_model, x_v, m_u);
+	    model_.processNoise(x_v, u_) + (t * floor.cwiseAbs2()).asDiagonal().toDenseMatrix();
+	if (options_.process_noise_order == 2) Q += secondOrderProcessNoise(model_, x_v, u_);
 	return Q;
 }
 
@@ -104,7 +104,7 @@ void ActiveSlamFilter::OnPreComputingPredictions(const vector_KFArray_OBS&,
 {
 	// Only the features being measured: the head looks at one feature at a time.
 	out_idx.clear();
-	for (const auto& o : m_pending) out_idx.push_back(o.feature);
+	for (const auto& o : pending_) out_idx.push_back(o.feature);
 }
 
 void ActiveSlamFilter::OnGetObservationNoise(KFMatrix_OxO& R) const
@@ -114,8 +114,8 @@ void ActiveSlamFilter::OnGetObservationNoise(KFMatrix_OxO& R) const
 
 Eigen::Matrix3d ActiveSlamFilter::measurementNoise() const
 {
-	const Eigen::Vector3d s(m_options.std_pan_rad, m_options.std_elevation_rad,
-	                        m_options.std_vergence_rad);
+	const Eigen::Vector3d s(options_.std_pan_rad, options_.std_elevation_rad,
+	                        options_.std_vergence_rad);
 	return s.cwiseAbs2().asDiagonal();
 }
 
@@ -125,20 +125,20 @@ void ActiveSlamFilter::OnGetObservationsAndDataAssociation(
 {
 	out_z.clear();
 	out_da.clear();
-	for (const auto& o : m_pending)
+	for (const auto& o : pending_)
 	{
 		const auto j = std::find(idx_in_S.begin(), idx_in_S.end(), o.feature) - idx_in_S.begin();
 		const Eigen::Matrix3d Si = S.asEigen().block<3, 3>(3 * j, 3 * j);
 		const Eigen::Vector3d nu = measurementDifference(o.h, predictions[o.feature].asEigen());
 		const double nis = nu.dot(Si.ldlt().solve(nu));
-		if (!(nis <= m_gate))
+		if (!(nis <= gate_))
 		{
-			m_report.rejected.push_back(o.feature);
-			m_report.rejected_nis.push_back(nis);
+			report_.rejected.push_back(o.feature);
+			report_.rejected_nis.push_back(nis);
 			continue;
 		}
-		m_report.accepted.push_back(o.feature);
-		m_report.nis.push_back(nis);
+		report_.accepted.push_back(o.feature);
+		report_.nis.push_back(nis);
 		KFArray_OBS zz;
 		for (int k = 0; k < 3; ++k) zz[k] = o.h[k];
 		out_z.push_back(zz);
@@ -154,7 +154,7 @@ void ActiveSlamFilter::OnObservationModel(const std::vector<size_t>& idx,
 	for (size_t k = 0; k < idx.size(); ++k)
 	{
 		const Eigen::Vector3d h =
-		    predictMeasurement(xv, featureRaw(idx[k]), m_options.head.constants);
+		    predictMeasurement(xv, featureRaw(idx[k]), options_.head.constants);
 		for (int c = 0; c < 3; ++c) out[k][c] = h[c];
 	}
 }

@@ -32,18 +32,18 @@ void removeBlock(Eigen::VectorXd& x, Eigen::MatrixXd& P, Eigen::Index o)
 
 void ActiveSlamFilter::reset(const Eigen::Vector3d& x_v)
 {
-	m_tracker = PostponedTracker33{};
-	m_info.clear();
+	tracker_ = PostponedTracker33{};
+	info_.clear();
 	setState(x_v, Eigen::Matrix3d::Zero());
 	notePrediction(x_v);
 }
 
 void ActiveSlamFilter::setState(const Eigen::VectorXd& x, const Eigen::MatrixXd& P)
 {
-	const auto n = static_cast<Eigen::Index>(3 + 3 * m_info.size());
+	const auto n = static_cast<Eigen::Index>(3 + 3 * info_.size());
 	if (x.size() != n || P.rows() != n || P.cols() != n)
 		throw std::invalid_argument("ActiveSlamFilter::setState: size does not match the map");
-	m_tracker = PostponedTracker33{};
+	tracker_ = PostponedTracker33{};
 	m_xkk.resize(n);
 	m_pkk.setSize(n, n);
 	m_xkk.asEigen() = x;
@@ -63,7 +63,7 @@ void ActiveSlamFilter::appendFeature(const Eigen::Vector3d& y, const Eigen::Matr
 	Pn.topLeftCorner(n, n) = P;
 	Pn.bottomRows(3) = P_new;
 	Pn.topRightCorner(n, 3) = P_new.leftCols(n).transpose();
-	m_info.push_back(std::move(info));
+	info_.push_back(std::move(info));
 	setState(xn, Pn);
 }
 
@@ -82,18 +82,18 @@ size_t ActiveSlamFilter::addKnownFeature(const std::string& label, const Eigen::
 	info.known = true;
 	info.p_FinW_first = p_FinW;
 	info.p_C0atInitInW =
-	    p_viewinW ? *p_viewinW : headCentreInW(vehicleRaw(), m_options.head.constants);
+	    p_viewinW ? *p_viewinW : headCentreInW(vehicleRaw(), options_.head.constants);
 	Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, m_xkk.size() + 3);
 	rows.rightCols(3) = 0.5 * (P_FF + P_FF.transpose());
 	appendFeature(p_FinW, rows, std::move(info));
-	return m_info.size() - 1;
+	return info_.size() - 1;
 }
 
 size_t ActiveSlamFilter::initialiseFeature(const std::string& label, const Eigen::Vector3d& h)
 {
 	synchronise();
 	const Eigen::Vector3d xv = vehicleRaw();
-	const auto g = initialiseFromMeasurement(xv, h, m_options.head.constants);
+	const auto g = initialiseFromMeasurement(xv, h, options_.head.constants);
 	const Eigen::MatrixXd P = covariance();
 	const Eigen::Index n = P.rows();
 	// Eq 5.48: P_yx = G_x P_xx, P_yyj = G_x P_xyj, P_yy = G_x P_xx G_xᵀ + G_h R G_hᵀ.
@@ -103,19 +103,19 @@ size_t ActiveSlamFilter::initialiseFeature(const std::string& label, const Eigen
 	                    g.dy_dh * measurementNoise() * g.dy_dh.transpose();
 	FeatureInfo info;
 	info.label = label;
-	info.p_C0atInitInW = headCentreInW(xv, m_options.head.constants);
+	info.p_C0atInitInW = headCentreInW(xv, options_.head.constants);
 	info.p_FinW_first = g.p_FinW;
 	appendFeature(g.p_FinW, rows, std::move(info));
-	return m_info.size() - 1;
+	return info_.size() - 1;
 }
 
 void ActiveSlamFilter::deleteFeature(size_t i)
 {
-	checkIndex(i, m_info.size(), "deleteFeature");
+	checkIndex(i, info_.size(), "deleteFeature");
 	Eigen::VectorXd x = stateVector();
 	Eigen::MatrixXd P = covariance();
 	removeBlock(x, P, static_cast<Eigen::Index>(3 + 3 * i));
-	m_info.erase(m_info.begin() + static_cast<long>(i));
+	info_.erase(info_.begin() + static_cast<long>(i));
 	setState(x, P);
 }
 
@@ -126,9 +126,9 @@ void ActiveSlamFilter::zeroWorldFrame()
 	Eigen::VectorXd x = stateVector();
 	const Eigen::MatrixXd P = covariance();
 	const Eigen::Vector3d xv = x.head<3>();
-	const auto& head = m_options.head.constants;
+	const auto& head = options_.head.constants;
 	Eigen::MatrixXd J = Eigen::MatrixXd::Zero(x.size(), x.size());
-	for (size_t i = 0; i < m_info.size(); ++i)
+	for (size_t i = 0; i < info_.size(); ++i)
 	{
 		const Eigen::Index o = static_cast<Eigen::Index>(3 + 3 * i);
 		const auto Jm = pointInHeadJacobians(xv, x.segment<3>(o), head);
@@ -136,9 +136,9 @@ void ActiveSlamFilter::zeroWorldFrame()
 		J.block<3, 3>(o, o) = Jm.dm_dy;
 		x.segment<3>(o) =
 		    pointInHead(xv, x.segment<3>(o), head) + Eigen::Vector3d(0, head.head_height_m, 0);
-		m_info[i].p_C0atInitInW = pointInHead(xv, m_info[i].p_C0atInitInW, head) +
+		info_[i].p_C0atInitInW = pointInHead(xv, info_[i].p_C0atInitInW, head) +
 		                          Eigen::Vector3d(0, head.head_height_m, 0);
-		m_info[i].p_FinW_first = x.segment<3>(o);  // FEJ restarts in the new frame
+		info_[i].p_FinW_first = x.segment<3>(o);  // FEJ restarts in the new frame
 	}
 	x.head<3>().setZero();
 	setState(x, J * P * J.transpose());
@@ -147,53 +147,53 @@ void ActiveSlamFilter::zeroWorldFrame()
 
 void ActiveSlamFilter::recordAttempt(size_t i, bool success)
 {
-	checkIndex(i, m_info.size(), "recordAttempt");
-	auto& info = m_info[i];
+	checkIndex(i, info_.size(), "recordAttempt");
+	auto& info = info_[i];
 	info.attempts.push_back(success);
-	while (static_cast<int>(info.attempts.size()) > m_options.attempt_window)
+	while (static_cast<int>(info.attempts.size()) > options_.attempt_window)
 		info.attempts.pop_front();
 	(success ? info.successes : info.failures)++;
 }
 
 bool ActiveSlamFilter::shouldDelete(size_t i) const
 {
-	checkIndex(i, m_info.size(), "shouldDelete");
-	const auto& a = m_info[i].attempts;
+	checkIndex(i, info_.size(), "shouldDelete");
+	const auto& a = info_[i].attempts;
 	int failed = 0;
 	for (bool ok : a) failed += ok ? 0 : 1;
-	return 2 * failed > m_options.attempt_window;
+	return 2 * failed > options_.attempt_window;
 }
 
 size_t ActiveSlamFilter::numFeatures()
 {
-	return m_info.size();
+	return info_.size();
 }
 
 Eigen::Vector3d ActiveSlamFilter::vehicle()
 {
-	if (m_tracker.tracking()) return m_tracker.vehicle();
+	if (tracker_.tracking()) return tracker_.vehicle();
 	return vehicleRaw();
 }
 
 Eigen::Matrix3d ActiveSlamFilter::vehicleCovariance()
 {
-	if (m_tracker.tracking()) return m_tracker.activeCovariance().topLeftCorner<3, 3>();
+	if (tracker_.tracking()) return tracker_.activeCovariance().topLeftCorner<3, 3>();
 	return m_pkk.asEigen().topLeftCorner<3, 3>();
 }
 
 Eigen::Vector3d ActiveSlamFilter::feature(size_t i)
 {
-	checkIndex(i, m_info.size(), "feature");
-	if (m_tracker.tracking() && m_tracker.trackedFeature() == i) return m_tracker.feature();
+	checkIndex(i, info_.size(), "feature");
+	if (tracker_.tracking() && tracker_.trackedFeature() == i) return tracker_.feature();
 	synchronise();
 	return featureRaw(i);
 }
 
 Eigen::Matrix3d ActiveSlamFilter::featureCovariance(size_t i)
 {
-	checkIndex(i, m_info.size(), "featureCovariance");
-	if (m_tracker.tracking() && m_tracker.trackedFeature() == i)
-		return m_tracker.activeCovariance().bottomRightCorner<3, 3>();
+	checkIndex(i, info_.size(), "featureCovariance");
+	if (tracker_.tracking() && tracker_.trackedFeature() == i)
+		return tracker_.activeCovariance().bottomRightCorner<3, 3>();
 	synchronise();
 	const auto o = static_cast<Eigen::Index>(3 + 3 * i);
 	return m_pkk.asEigen().block<3, 3>(o, o);
@@ -213,21 +213,21 @@ Eigen::MatrixXd ActiveSlamFilter::covariance()
 
 Eigen::Vector3d ActiveSlamFilter::predictedMeasurement(size_t i)
 {
-	return predictMeasurement(vehicle(), feature(i), m_options.head.constants);
+	return predictMeasurement(vehicle(), feature(i), options_.head.constants);
 }
 
 Eigen::Matrix3d ActiveSlamFilter::innovationCovariance(size_t i)
 {
-	checkIndex(i, m_info.size(), "innovationCovariance");
+	checkIndex(i, info_.size(), "innovationCovariance");
 	const Eigen::Vector3d xv = vehicle(), y = feature(i);
-	const auto J = measurementJacobians(xv, y, m_options.head.constants);
+	const auto J = measurementJacobians(xv, y, options_.head.constants);
 	const auto o = static_cast<Eigen::Index>(3 + 3 * i);
 	const auto P = m_pkk.asEigen();  // synchronised by feature(i) unless i is the tracked one
 	Eigen::Matrix<double, 3, 6> H;
 	H << J.H_xv, J.H_y;
 	Eigen::Matrix<double, 6, 6> Pa;
-	if (m_tracker.tracking() && m_tracker.trackedFeature() == i)
-		Pa = m_tracker.activeCovariance();
+	if (tracker_.tracking() && tracker_.trackedFeature() == i)
+		Pa = tracker_.activeCovariance();
 	else
 		Pa << P.topLeftCorner<3, 3>(), P.block<3, 3>(0, o), P.block<3, 3>(o, 0),
 		    P.block<3, 3>(o, o);
@@ -244,8 +244,8 @@ Eigen::MatrixXd ActiveSlamFilter::jointInnovationCovariance(const std::vector<si
 	for (Eigen::Index k = 0; k < n; ++k)
 	{
 		const size_t i = features[static_cast<size_t>(k)];
-		checkIndex(i, m_info.size(), "jointInnovationCovariance");
-		const auto J = measurementJacobians(xv, feature(i), m_options.head.constants);
+		checkIndex(i, info_.size(), "jointInnovationCovariance");
+		const auto J = measurementJacobians(xv, feature(i), options_.head.constants);
 		H.block<3, 3>(3 * k, 0) = J.H_xv;
 		H.block<3, 3>(3 * k, static_cast<Eigen::Index>(3 + 3 * i)) = J.H_y;
 	}

@@ -10,15 +10,15 @@ namespace mrolr::slam
 {
 bool ActiveSlamFilter::postponedApplies(const std::vector<Observation>& z) const
 {
-	return m_options.update_method == UpdateMethod::Postponed && z.size() == 1;
+	return options_.update_method == UpdateMethod::Postponed && z.size() == 1;
 }
 
 void ActiveSlamFilter::synchronise()
 {
-	if (!m_tracker.tracking()) return;
+	if (!tracker_.tracking()) return;
 	auto x = m_xkk.asEigen();
 	auto P = m_pkk.asEigen();
-	m_tracker.stop(x, P);
+	tracker_.stop(x, P);
 	m_xkk[2] = base::wrapAngle(m_xkk[2]);
 	const Eigen::MatrixXd Ps = 0.5 * (P + P.transpose());
 	P = Ps;
@@ -26,37 +26,37 @@ void ActiveSlamFilter::synchronise()
 
 void ActiveSlamFilter::predictPostponed()
 {
-	const Eigen::Vector3d xv = m_tracker.vehicle();
-	m_tracker.predict(m_model.move(xv, m_u), transitionJacobian(xv), processNoise(xv));
-	notePrediction(m_tracker.vehicle());
+	const Eigen::Vector3d xv = tracker_.vehicle();
+	tracker_.predict(model_.move(xv, u_), transitionJacobian(xv), processNoise(xv));
+	notePrediction(tracker_.vehicle());
 }
 
 UpdateReport ActiveSlamFilter::updatePostponed(const Observation& z)
 {
-	if (!m_tracker.tracking() || m_tracker.trackedFeature() != z.feature)
+	if (!tracker_.tracking() || tracker_.trackedFeature() != z.feature)
 	{
 		synchronise();
 		const auto x = m_xkk.asEigen();
 		const auto P = m_pkk.asEigen();
-		m_tracker.start(x, P, z.feature);
+		tracker_.start(x, P, z.feature);
 	}
-	const Eigen::Vector3d xv = m_tracker.vehicle(), y = m_tracker.feature();
-	const auto& head = m_options.head.constants;
+	const Eigen::Vector3d xv = tracker_.vehicle(), y = tracker_.feature();
+	const auto& head = options_.head.constants;
 	const auto J = observationJacobians(z.feature, xv, y);
 	Eigen::Matrix<double, 3, 6> H;
 	H << J.H_xv, J.H_y;
 	const Eigen::Matrix3d R = measurementNoise();
-	const Eigen::Matrix3d S = H * m_tracker.activeCovariance() * H.transpose() + R;
+	const Eigen::Matrix3d S = H * tracker_.activeCovariance() * H.transpose() + R;
 	const Eigen::Vector3d nu = measurementDifference(z.h, predictMeasurement(xv, y, head));
 	const double nis = nu.dot(S.ldlt().solve(nu));
 	UpdateReport report;
-	if (!(nis <= m_gate))
+	if (!(nis <= gate_))
 	{
 		report.rejected.push_back(z.feature);
 		report.rejected_nis.push_back(nis);
 		return report;
 	}
-	m_tracker.update<3>(nu, H, R);
+	tracker_.update<3>(nu, H, R);
 	report.accepted.push_back(z.feature);
 	report.nis.push_back(nis);
 	return report;

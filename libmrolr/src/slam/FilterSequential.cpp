@@ -57,7 +57,7 @@ ActiveSlamFilter::PriorLinearisation ActiveSlamFilter::linearisePrior(const Obse
 	const auto J = observationJacobians(z.feature, l.a0.head<3>(), l.a0.tail<3>());
 	l.H << J.H_xv, J.H_y;
 	l.nu = measurementDifference(
-	    z.h, predictMeasurement(l.a0.head<3>(), l.a0.tail<3>(), m_options.head.constants));
+	    z.h, predictMeasurement(l.a0.head<3>(), l.a0.tail<3>(), options_.head.constants));
 	Eigen::Matrix<double, 6, 6> P_aa;
 	const auto P = m_pkk.asEigen();
 	for (int r = 0; r < 6; ++r) P_aa.row(r) = gather(P.row(idx[r]).transpose(), idx).transpose();
@@ -88,14 +88,14 @@ void ActiveSlamFilter::updateSequential(const std::vector<Observation>& z)
 	for (const auto& o : z)
 	{
 		const auto l = linearisePrior(o);
-		if (!(l.nis <= m_gate))
+		if (!(l.nis <= gate_))
 		{
-			m_report.rejected.push_back(o.feature);
-			m_report.rejected_nis.push_back(l.nis);
+			report_.rejected.push_back(o.feature);
+			report_.rejected_nis.push_back(l.nis);
 			continue;
 		}
-		m_report.accepted.push_back(o.feature);
-		m_report.nis.push_back(l.nis);
+		report_.accepted.push_back(o.feature);
+		report_.nis.push_back(l.nis);
 		accepted.push_back(l);
 	}
 	for (const auto& l : accepted) applyScalarUpdates(l);

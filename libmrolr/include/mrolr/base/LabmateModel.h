@@ -63,7 +63,7 @@ class LabmateModel
  public:
 	explicit LabmateModel(const LabmateOptions& options = {});
 
-	const LabmateOptions& options() const { return m_options; }
+	const LabmateOptions& options() const { return options_; }
 
 	/** f_v(x_v, u): the pose after the step (eqs 5.4–5.7); φ is not wrapped. */
 	Eigen::Vector3d move(const Eigen::Vector3d& x_v, const WheelControl& u) const;
@@ -92,7 +92,7 @@ class LabmateModel
 	WheelControl translationControl(double distance_m) const;
 
  private:
-	LabmateOptions m_options;
+	LabmateOptions options_;
 };
 
 }  // namespace mrolr::base

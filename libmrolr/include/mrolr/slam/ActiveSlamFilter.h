@@ -59,7 +59,7 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
  public:
 	ActiveSlamFilter(const SlamOptions& options, const base::LabmateModel& model);
 
-	const SlamOptions& options() const { return m_options; }
+	const SlamOptions& options() const { return options_; }
 
 	/** Vehicle at @p x_v known exactly, empty map (eq 5.31). */
 	void reset(const Eigen::Vector3d& x_v = Eigen::Vector3d::Zero());
@@ -97,7 +97,7 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	/** Update with the given observations (each feature at most once), after χ² gating. */
 	UpdateReport update(const std::vector<Observation>& observations);
 	/** χ²₃ gate threshold from options().gate_probability. */
-	double gateThreshold() const { return m_gate; }
+	double gateThreshold() const { return gate_; }
 	/** @} */
 
 	/** @name Read access (brings a postponed update up to date first)
@@ -109,7 +109,7 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	Eigen::Matrix3d featureCovariance(size_t i);
 	Eigen::VectorXd stateVector();
 	Eigen::MatrixXd covariance();
-	const FeatureInfo& info(size_t i) const { return m_info.at(i); }
+	const FeatureInfo& info(size_t i) const { return info_.at(i); }
 	/** Predicted measurement h(x_v, y_i) and its innovation covariance S_i = H P Hᵀ + R (eq 5.36).
 	 */
 	Eigen::Vector3d predictedMeasurement(size_t i);
@@ -173,16 +173,16 @@ class ActiveSlamFilter : public mrpt::bayes::CKalmanFilterCapable<3, 3, 3, 2>
 	UpdateReport updatePostponed(const Observation& z);
 	void predictPostponed();
 
-	SlamOptions m_options;
-	base::LabmateModel m_model;
-	double m_gate = 0;
-	std::vector<FeatureInfo> m_info;
-	base::WheelControl m_u;
-	Eigen::Vector3d m_xvPrior = Eigen::Vector3d::Zero();  ///< x_{k|k−1} of the vehicle (FEJ)
-	bool m_skipPrediction = false;
-	std::vector<Observation> m_pending;
-	UpdateReport m_report;
-	PostponedTracker33 m_tracker;
+	SlamOptions options_;
+	base::LabmateModel model_;
+	double gate_ = 0;
+	std::vector<FeatureInfo> info_;
+	base::WheelControl u_;
+	Eigen::Vector3d xv_prior_ = Eigen::Vector3d::Zero();  ///< x_{k|k−1} of the vehicle (FEJ)
+	bool skip_prediction_ = false;
+	std::vector<Observation> pending_;
+	UpdateReport report_;
+	PostponedTracker33 tracker_;
 };
 
 }  // namespace mrolr::slam
