@@ -3,6 +3,7 @@
 // same seed, its bag reads back with rosbag::View and through MRPT's rosbag2rawlog; a lab killed
 // mid-mission stops the robot safely, naming it; the robot never subscribes to the truth.
 #include "../common/FreshTempDir.h"
+#include "MrptRoundTrip.h"
 #include "../mission/ChildProcess.h"
 
 #include <mrolr/apps/MissionApp.h>
@@ -137,17 +138,8 @@ TEST(RosMission, TheScriptRunsTheDefaultMissionAsInProcessAndItsBagReadsBack)
 	bag.close();
 
 	// MRPT's rosbag2rawlog reads every image back
-	const std::string back = dir + "/back.rawlog", info = dir + "/info.txt";
-	const std::string cmd = "rosbag2rawlog -w -c " + std::string(MROLR_SOURCE_DIR) +
-	                        "/config/rosbag2rawlog.yml -f world -o " + back + " " + dir +
-	                        "/ros/mission.bag > /dev/null 2>&1 && rawlog-edit --info -i " + back +
-	                        " > " + info + " 2>&1";
-	ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-	std::stringstream s;
-	s << std::ifstream(info).rdbuf();
-	EXPECT_NE(s.str().find("Overall number of objects         : " + std::to_string(2 * pairs)),
-	          std::string::npos)
-	    << s.str();
+	EXPECT_EQ(test_support::objectsBackFromBag(dir + "/ros/mission.bag", dir + "/back.rawlog"),
+	          2 * pairs);
 }
 
 namespace

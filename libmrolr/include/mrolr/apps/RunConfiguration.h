@@ -21,6 +21,9 @@ struct RunInputs
 	std::vector<std::string> command;              ///< the command line as given
 };
 
+/** The time now in UTC as `YYYYmmdd-HHMMSS`, for the default output folders. */
+std::string utcStamp();
+
 /** Writes `<out_dir>/run/` for @p in and the loaded @p o; returns the path of its mission.ini.
  * Throws std::runtime_error naming the file that could not be read or written. */
 std::string writeRunConfiguration(const RunInputs& in, const mission::MissionOptions& o,

@@ -31,16 +31,6 @@ using nlohmann::json;
 using summary::attachProgress;
 using summary::printSummary;
 
-std::string utcStamp()
-{
-	const std::time_t now = std::time(nullptr);
-	std::tm tm{};
-	gmtime_r(&now, &tm);
-	std::ostringstream s;
-	s << std::put_time(&tm, "%Y%m%d-%H%M%S");
-	return s.str();
-}
-
 /** report.json `recording`: the rawlog's size and the writer's time. */
 json recordingJson(const io::ObservationQueue::Stats& s, const std::string& rawlog)
 {

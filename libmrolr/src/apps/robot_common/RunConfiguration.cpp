@@ -3,13 +3,25 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <ctime>
 #include <filesystem>
+#include <iomanip>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 namespace mrolr::apps
 {
+std::string utcStamp()
+{
+	const std::time_t now = std::time(nullptr);
+	std::tm tm{};
+	gmtime_r(&now, &tm);
+	std::ostringstream s;
+	s << std::put_time(&tm, "%Y%m%d-%H%M%S");
+	return s.str();
+}
+
 namespace fs = std::filesystem;
 
 namespace

@@ -75,16 +75,6 @@ void RosRobotApp::initialize(const std::vector<std::string>& args)
 
 namespace
 {
-std::string utcStamp()
-{
-	const std::time_t now = std::time(nullptr);
-	std::tm tm{};
-	gmtime_r(&now, &tm);
-	std::ostringstream s;
-	s << std::put_time(&tm, "%Y%m%d-%H%M%S");
-	return s.str();
-}
-
 /** The robot over ROS has its cameras and nothing else: no simulator's shortcut sensors. */
 void requireDeviceSensors(const mission::MissionOptions& o)
 {
@@ -98,7 +88,8 @@ void requireDeviceSensors(const mission::MissionOptions& o)
 		                        "reconstructs scenes from its images only");
 }
 
-/** Stops the mission safely on SIGINT / SIGTERM (ros/Node.h turns them into a shutdown). */
+/** Stops the mission safely on SIGINT / SIGTERM (ros/Node.h only records them: the topics stay
+ * up to send the stop). */
 struct ShutdownWatch
 {
 	std::atomic<bool> flag{false};
