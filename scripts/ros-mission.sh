@@ -67,9 +67,12 @@ stop_all() {
   PIDS=()
 }
 trap 'stop_all' EXIT
-trap 'echo "ros-mission: interrupted, stopping the nodes" >&2; ROBOT_SIGNAL=1' INT TERM
+trap 'echo "ros-mission: interrupted: the robot stops its mission, then the nodes stop" >&2' INT
+trap 'kill -TERM "${ROBOT_PID:-}" 2>/dev/null || true' TERM
 
-/usr/bin/rosmaster --core -p "$PORT" > "$OUT/rosmaster.log" 2>&1 &
+# the master, the lab and the bag in sessions of their own: Ctrl-C reaches the robot alone, which
+# stops its mission safely while the devices still answer; then they are stopped here
+setsid /usr/bin/rosmaster --core -p "$PORT" > "$OUT/rosmaster.log" 2>&1 &
 PIDS+=($!)
 for _ in $(seq 100); do
   python3 -c "import socket; socket.create_connection(('127.0.0.1', $PORT), 0.2)" 2>/dev/null && break
@@ -82,11 +85,11 @@ WORLD_ARGS=() PLAN_ARGS=()
 [ -n "$PLAN" ] && PLAN_ARGS=(--plan "$PLAN")
 
 if [ -n "$BAG" ]; then
-  "$BIN/mrolr-ros-bag" --out "$BAG" > "$OUT/bag.log" 2>&1 &
+  setsid "$BIN/mrolr-ros-bag" --out "$BAG" > "$OUT/bag.log" 2>&1 &
   PIDS+=($!)
   BAG_PID=$!
 fi
-"$BIN/mrolr-ros-lab" --config "$CONFIG" "${WORLD_ARGS[@]}" --truth "$OUT/truth.rawlog" \
+setsid "$BIN/mrolr-ros-lab" --config "$CONFIG" "${WORLD_ARGS[@]}" --truth "$OUT/truth.rawlog" \
   > "$OUT/lab.log" 2>&1 &
 PIDS+=($!)
 LAB_PID=$!
@@ -102,7 +105,12 @@ if [ "$RVIZ" = 1 ]; then
 fi
 
 status=0
-"$BIN/mrolr-ros-robot" --config "$CONFIG" "${PLAN_ARGS[@]}" --out "$OUT" --quiet || status=$?
+"$BIN/mrolr-ros-robot" --config "$CONFIG" "${PLAN_ARGS[@]}" --out "$OUT" &
+ROBOT_PID=$!
+while :; do  # wait again when a signal interrupted the wait: the robot is still stopping
+  wait "$ROBOT_PID" && status=0 || status=$?
+  kill -0 "$ROBOT_PID" 2>/dev/null || break
+done
 
 if [ "$RVIZ" = 1 ]; then
   echo "ros-mission: the mission is over; close RViz to stop the nodes"
