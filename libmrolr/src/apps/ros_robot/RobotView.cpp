@@ -17,6 +17,7 @@ namespace mrolr::apps
 namespace
 {
 constexpr double kChi2_3dof_95 = 7.815;  ///< the 95 % quantile of χ² with 3 degrees of freedom
+constexpr size_t kPathEverySteps = 10;  ///< mrolr/path is republished after this many estimates
 
 /** A pose in thesis axes (W) as one in `world`'s REP 103 axes (geometry/Frames.h). */
 Eigen::Isometry3d toRosAxes(const Eigen::Isometry3d& T_thesis)
@@ -114,7 +115,8 @@ void RobotView::estimate(const mission::PathSample& s)
 	p.pose = e.pose.pose;
 	path_msg_.header = e.header;
 	path_msg_.poses.push_back(p);
-	path_.publish(path_msg_);
+	// the whole path each time costs its length: every few steps, and at the end, is enough
+	if (path_msg_.poses.size() % kPathEverySteps == 1) path_.publish(path_msg_);
 	// REP 105: world → odom is the estimate's correction of the dead reckoning
 	publishTf(tf_, ros::toTransformMsg(ros::planarPose(s.estimate) * ros::planarPose(s.odometry).inverse(),
 	                                   "world", "odom", s.device_time_s));
@@ -182,6 +184,7 @@ void RobotView::arm(const hw::ArmJoints& joints)
 void RobotView::finished(const mission::MissionResult& r)
 {
 	map_.publish(mapMarkers(r.map, last_time_s_));
+	path_.publish(path_msg_);
 	std_msgs::String s;
 	s.data = std::string("done: ") + (r.success ? "succeeded" : "failed: " + r.failure);
 	stage_.publish(s);
