@@ -16,9 +16,10 @@ using mrolr::apps::RecognizeApp;
 
 // The shipped 12-scene set as mrolr-recognize --evaluate runs it (every lab model in every
 // scene, with the scene's up direction, its support plane, its stereo pair for verification in
-// the images and the second search behind the objects found): no model absent from a scene is
-// reported found, and the measured rate does not fall (docs/recog.md).
-TEST(RenderedEval, ShippedSetHasNoFalsePositiveAndKeepsItsRate)
+// the images and the second search behind the objects found). The claims of docs/recog.md over
+// the set: no model absent from a scene is reported found, at least 90 % of the present ones are
+// recognised, and the median pose errors are within the thesis's 2° and 5 mm.
+TEST(RenderedEval, ShippedSetHasNoFalsePositiveAndRecognisesNinetyPercent)
 {
 	const auto dir = (fs::temp_directory_path() / "mrolr_rendered_eval_rate_test").string();
 	fs::remove_all(dir);
@@ -27,15 +28,11 @@ TEST(RenderedEval, ShippedSetHasNoFalsePositiveAndKeepsItsRate)
 	std::ostringstream out;
 	ASSERT_EQ(app.run(out), 0);
 	const mrolr::eval::EvalSummary& s = app.eval_summary;
-	EXPECT_EQ(s.rate_cases, 28);
+	ASSERT_GT(s.rate_cases, 0);
 	EXPECT_GT(s.absent_cases, 0);
 	EXPECT_EQ(s.false_positives, 0);
-	// Regression guard on one of the six sets (the 95 % is measured on all six and two
-	// held-out ones, docs/recog.md): measured 26 of 28 with the edge-pair hypotheses (25 at
-	// 1a4f966, 22 at 3419bab before the limb hypotheses and the finer yaw sweep, 15 before the
-	// luminance renders); the margin absorbs reconstruction changes.
-	EXPECT_GE(s.recognised, 24);
-	EXPECT_LT(s.median_rot_err_deg, 2.0);  // the medians (measured 1.13 deg, 1.07 mm)
+	EXPECT_GE(s.recognised, 0.9 * s.rate_cases);
+	EXPECT_LT(s.median_rot_err_deg, 2.0);
 	EXPECT_LT(s.median_trans_err_mm, 5.0);
 	int behind_found = 0;
 	for (const auto& c : app.eval_cases) behind_found += c.result.occluders > 0 ? 1 : 0;
