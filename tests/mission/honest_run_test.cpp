@@ -6,6 +6,8 @@
 #include <mrolr/eval/MissionOutputs.h>
 
 #include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -64,6 +66,16 @@ TEST(HonestRun, ASlippedTurnLosesTheRobotAndAKnownFeatureFindsTheMapAgain)
 	EXPECT_TRUE(run.r.success) << run.r.failure;
 	EXPECT_LT(run.report["final_position_error_m"].get<double>(), 0.15);
 	EXPECT_EQ(run.report["lost_events"], run.r.lost_events);
+	// trajectory.png marks where the robot said it was lost (the legend's "lost" star colour)
+	const auto dir = mission::test::freshTempDir("honest_run_test_lost");
+	eval::writeMissionOutputs(run.r, run.o, &run.truth, dir);
+	const cv::Mat png = cv::imread(dir + "/trajectory.png");
+	ASSERT_FALSE(png.empty());
+	cv::Mat lost_colour;
+	const int legend_px = 312;  // the legend panel and margin on the right (io/TopViewPlot)
+	cv::inRange(png(cv::Rect(0, 0, png.cols - legend_px, png.rows)), cv::Scalar(0, 200, 255),
+	            cv::Scalar(0, 200, 255), lost_colour);
+	EXPECT_GT(cv::countNonZero(lost_colour), 10);  // a star on the data, not only in the legend
 }
 
 TEST(HonestRun, TheOfficeIsDrivenFromImagesWithItsOwnPlan)

@@ -5,6 +5,7 @@
 
 #include <mrolr/apps/MissionApp.h>
 #include <mrolr/io/Rawlog.h>
+#include <mrolr/io/TumTrajectory.h>
 #include <mrolr/util/Config.h>
 
 #include <gtest/gtest.h>
@@ -84,6 +85,21 @@ TEST(MissionRun, TheDefaultMissionDrivesTheLapFromImagesAndBringsTheTargetHome)
 	EXPECT_TRUE(written["success"].get<bool>());
 	for (const char* f : {"report.md", "trajectory.png", "mission.3Dscene", "mission.rawlog"})
 		EXPECT_GT(fs::file_size(dir + "/" + f), 100u) << f;
+	// The TUM files hold the path as the robot estimated it and as it was, on the base's clock:
+	// from them a user's tools find eval's final position error.
+	const auto estimate_tum = io::readTum(dir + "/estimate.tum");
+	const auto truth_tum = io::readTum(dir + "/truth.tum");
+	ASSERT_EQ(estimate_tum.size(), r.path.size());
+	for (size_t i = 0; i < estimate_tum.size(); ++i)
+	{
+		EXPECT_NEAR(estimate_tum[i].time_s, r.path[i].device_time_s, 1e-9);
+		EXPECT_LT((estimate_tum[i].xv_zxphi.head<2>() - r.path[i].estimate.head<2>()).norm(),
+		          1e-9);
+	}
+	ASSERT_FALSE(truth_tum.empty());
+	EXPECT_NEAR((truth_tum.back().xv_zxphi - estimate_tum.back().xv_zxphi).head<2>().norm(),
+	            j["final_estimate_error_m"].get<double>(), 1e-6);
+	EXPECT_NEAR(truth_tum.back().time_s, estimate_tum.back().time_s, 1e-9);
 	// One stereo pair per sweep view and one for the visual verification's re-observation, and
 	// those of the obstacle looks, stored as external images.
 	ASSERT_EQ(mission::countShots(r.shots, mission::StereoShot::Purpose::Table),

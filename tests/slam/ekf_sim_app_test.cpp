@@ -1,5 +1,6 @@
 // mrolr-ekf-sim's app class run from arguments: outputs, JSON keys, rawlog, argument errors.
 #include <mrolr/apps/EkfSimApp.h>
+#include <mrolr/io/TumTrajectory.h>
 #include <mrolr/util/Cli.h>
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -46,6 +47,19 @@ TEST(EkfSimApp, JsonOutputsAndRawlog)
 	EXPECT_EQ(j["nees_bounds"].size(), 2u);
 	for (const char* f : {"steps.csv", "nees.csv", "paths.png"})
 		EXPECT_TRUE(std::filesystem::file_size(dir + "/" + f) > 100) << f;
+	// run 0's paths in the TUM format, on the simulated clock
+	const auto& run0 = app.results.front().steps;
+	const auto truth = mrolr::io::readTum(dir + "/truth.tum");
+	const auto estimate = mrolr::io::readTum(dir + "/estimate.tum");
+	ASSERT_EQ(truth.size(), run0.size());
+	ASSERT_EQ(estimate.size(), run0.size());
+	for (size_t k = 0; k < run0.size(); ++k)
+	{
+		EXPECT_LT((truth[k].xv_zxphi.head<2>() - run0[k].truth.head<2>()).norm(), 1e-9);
+		EXPECT_LT((estimate[k].xv_zxphi.head<2>() - run0[k].estimate.head<2>()).norm(), 1e-9);
+		EXPECT_EQ(truth[k].time_s, estimate[k].time_s);
+		if (k > 0) EXPECT_GT(truth[k].time_s, truth[k - 1].time_s);
+	}
 	// The rawlog alternates odometry actions and sensory frames with bearing-range observations.
 	mrpt::obs::CRawlog rawlog;
 	ASSERT_TRUE(rawlog.loadFromRawLogFile(dir + "/run0.rawlog"));

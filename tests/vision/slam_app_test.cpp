@@ -1,6 +1,7 @@
 // mrolr-slam --live on maps/lab with wheel slip (issue 5): the final pose is within 5 cm of the
 // truth and at least 3 times closer than dead reckoning; the known feature is re-found at home.
 #include <mrolr/apps/SlamApp.h>
+#include <mrolr/io/TumTrajectory.h>
 #include <mrolr/util/Cli.h>
 
 #include <gtest/gtest.h>
@@ -41,8 +42,11 @@ TEST(SlamApp, LiveOnTheRenderedLabBeatsDeadReckoningAndEndsWithinFiveCentimetres
 	EXPECT_GT(s.measurements, 50);
 	EXPECT_GT(s.match_success_rate, 0.7);
 	for (const char* f : {"trajectory.csv", "map.csv", "decisions.csv", "paths.png",
-	                      "decisions.rawlog", "slam.3Dscene"})
+	                      "decisions.rawlog", "slam.3Dscene", "truth.tum", "odometry.tum"})
 		EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+	const auto estimate = mrolr::io::readTum((out / "estimate.tum").string());
+	ASSERT_EQ(estimate.size(), app.steps.size());
+	EXPECT_LT((estimate.back().xv_zxphi.head<2>() - app.steps.back().x_est.head<2>()).norm(), 1e-9);
 	// The fire sign's centre is an edge-only patch; its stored patch is the best corner nearby,
 	// and the stored position is the robot's triangulation of it after lock-on: on the sign's
 	// wall (maps/lab: z = 5.99 m) to within the stereo depth error at 6 m, never the world's.

@@ -1,8 +1,7 @@
-// trajectory.png: the run seen from above.
+// trajectory.png: the run seen from above (io/TopViewPlot.h), what the robot knew and, with the
+// truth, what happened.
 #include <mrolr/eval/MissionOutputs.h>
-
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include <mrolr/io/TopViewPlot.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,129 +10,118 @@ namespace mrolr::eval
 {
 namespace
 {
+using io::Marker;
 using mission::PathSample;
+using V2 = Eigen::Vector2d;
+constexpr int kMaxPathEllipses = 30;  // a readable number of the estimate's ellipses
 
-struct TopView
+V2 zxOf(const Eigen::Vector3d& xv_zxphi)
 {
-	double scale = 100;  ///< pixels per metre
-	Eigen::Vector3d lo, hi;
-	cv::Point px(double z, double x) const
+	return xv_zxphi.head<2>();
+}
+
+std::vector<V2> pathOf(const std::vector<PathSample>& path, Eigen::Vector3d PathSample::*field)
+{
+	std::vector<V2> out;
+	for (const auto& s : path) out.push_back(zxOf(s.*field));
+	return out;
+}
+
+/** The estimate where the robot said it was lost: the sample at or after each "lost:" note. */
+std::vector<V2> lostPlaces(const mission::MissionResult& r)
+{
+	std::vector<V2> out;
+	for (const auto& e : r.timeline.events())
 	{
-		return {static_cast<int>((hi.x() - x) * scale), static_cast<int>((hi.z() - z) * scale)};
+		if (e.text.rfind("lost:", 0) != 0 || r.path.empty()) continue;
+		const auto it = std::lower_bound(r.path.begin(), r.path.end(), e.time_s,
+		                                 [](const PathSample& s, double t) { return s.time_s < t; });
+		out.push_back(zxOf((it == r.path.end() ? r.path.back() : *it).estimate));
 	}
-};
-
-/** The room with truth; else the plan's and the run's extent with a margin. */
-TopView viewOf(const mission::MissionResult& r, const mission::MissionOptions& o,
-               const MissionTruth* truth)
-{
-	TopView v;
-	if (truth && truth->world && truth->world->has_room)
-	{
-		v.lo = truth->world->room.min_m, v.hi = truth->world->room.max_m;
-		return v;
-	}
-	v.lo = Eigen::Vector3d::Constant(1e9), v.hi = -v.lo;
-	auto add = [&](double z, double x)
-	{
-		v.lo = v.lo.cwiseMin(Eigen::Vector3d(x, 0, z)), v.hi = v.hi.cwiseMax(Eigen::Vector3d(x, 0, z));
-	};
-	for (const auto& w : o.plan.waypoints) add(w.xv_zxphi.x(), w.xv_zxphi.y());
-	for (const auto& s : r.path) add(s.estimate.x(), s.estimate.y());
-	for (const auto& m : r.map) add(m.p_FinW.z(), m.p_FinW.x());
-	v.lo -= Eigen::Vector3d::Constant(1.0), v.hi += Eigen::Vector3d::Constant(1.0);
-	return v;
+	return out;
 }
 
-void drawLine(cv::Mat& img, const TopView& v, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-              const cv::Scalar& colour)
+void addPlan(io::TopViewPlot& plot, const mission::MissionOptions& o)
 {
-	cv::line(img, v.px(a.x(), a.y()), v.px(b.x(), b.y()), colour, 2, cv::LINE_AA);
+	std::vector<std::vector<V2>> tables;
+	for (const auto& t : o.plan.tables)
+		tables.push_back(io::TopViewPlot::rectangle({t.z_m, t.x_m}, t.yaw_deg * M_PI / 180,
+		                                            t.depth_m, t.length_m));
+	plot.addPolygons("table (plan)", tables, {{170, 170, 170}, 1});
+	if (o.plan.room)
+		plot.includeExtent({o.plan.room->min_z_m, o.plan.room->min_x_m},
+		                   {o.plan.room->max_z_m, o.plan.room->max_x_m});
+	std::vector<V2> waypoints;
+	for (const auto& w : o.plan.waypoints) waypoints.push_back(zxOf(w.xv_zxphi));
+	plot.addPoints("waypoint (plan)", waypoints, Marker::Diamond, {{120, 120, 120}, 1}, 9);
 }
 
-void drawPath(cv::Mat& img, const TopView& v, const std::vector<PathSample>& path,
-              Eigen::Vector3d PathSample::*field, const cv::Scalar& colour)
-{
-	for (size_t i = 1; i < path.size(); ++i)
-		drawLine(img, v, path[i - 1].*field, path[i].*field, colour);
-}
-
-/** A footprint centred at (z, x) in W, turned by yaw, @p depth along its z, @p length along x. */
-void drawFootprint(cv::Mat& img, const TopView& v, double z, double x, double yaw_deg, double depth,
-                   double length, const cv::Scalar& colour)
-{
-	const double yaw = yaw_deg * M_PI / 180.0;
-	const Eigen::Vector2d az(std::cos(yaw), std::sin(yaw)), ax(-std::sin(yaw), std::cos(yaw));
-	std::vector<cv::Point> pts;
-	for (auto [sz, sx] : {std::pair{-1, -1}, {-1, 1}, {1, 1}, {1, -1}})
-	{
-		const Eigen::Vector2d c =
-		    Eigen::Vector2d(z, x) + 0.5 * (sz * depth * az + sx * length * ax);
-		pts.push_back(v.px(c.x(), c.y()));
-	}
-	cv::fillConvexPoly(img, pts, colour);
-}
-
-void drawTruth(cv::Mat& img, const TopView& v, const MissionTruth& t)
+void addTruth(io::TopViewPlot& plot, const MissionTruth& t)
 {
 	if (t.world)
 	{
+		if (t.world->has_room)
+			plot.includeExtent({t.world->room.min_m.z(), t.world->room.min_m.x()},
+			                   {t.world->room.max_m.z(), t.world->room.max_m.x()});
+		std::vector<std::vector<V2>> obstacles;
 		for (const auto& ob : t.world->obstacles)
-			drawFootprint(img, v, ob.z_m, ob.x_m, ob.yaw_deg, ob.size_m.z(), ob.size_m.x(),
-			              {60, 110, 160});
-		for (const auto& l : t.world->landmarks)
-			cv::drawMarker(img, v.px(l.p_LinW.z(), l.p_LinW.x()), {0, 0, 0}, cv::MARKER_SQUARE, 8, 2);
+			obstacles.push_back(io::TopViewPlot::rectangle(
+			    {ob.z_m, ob.x_m}, ob.yaw_deg * M_PI / 180, ob.size_m.z(), ob.size_m.x()));
+		plot.addPolygons("obstacle (true)", obstacles, {{60, 110, 160}, 1});
+		std::vector<V2> landmarks;
+		for (const auto& l : t.world->landmarks) landmarks.emplace_back(l.p_LinW.z(), l.p_LinW.x());
+		plot.addPoints("landmark (true)", landmarks, Marker::Square, {{0, 0, 0}, 2}, 9);
 	}
-	for (size_t i = 1; i < t.steps.size(); ++i)
-		drawLine(img, v, t.steps[i - 1].xv_zxphi, t.steps[i].xv_zxphi, {0, 160, 0});
-	for (const auto& o : t.objects)
-		cv::circle(img, v.px(o.T_OinW.translation().z(), o.T_OinW.translation().x()), 4,
-		           {0, 140, 255}, -1);
+	std::vector<V2> path;
+	for (const auto& s : t.steps) path.push_back(zxOf(s.xv_zxphi));
+	plot.addPath("true path", path, {{0, 160, 0}, 2});
+	std::vector<V2> objects;
+	for (const auto& ob : t.objects)
+		objects.emplace_back(ob.T_OinW.translation().z(), ob.T_OinW.translation().x());
+	plot.addPoints("object (true)", objects, Marker::Disc, {{0, 140, 255}, 1}, 8);
 	if (t.contact)
-		cv::drawMarker(img, v.px(t.contact->p_zx.x(), t.contact->p_zx.y()), {0, 0, 0},
-		               cv::MARKER_TILTED_CROSS, 24, 3);
+		plot.addPoints("contact (true): " + t.contact->what, {t.contact->p_zx}, Marker::TiltedCross,
+		               {{0, 0, 0}, 3}, 24);
 }
 
-void drawLegend(cv::Mat& img, bool truth)
+void addEstimate(io::TopViewPlot& plot, const mission::MissionResult& r)
 {
-	std::vector<std::pair<const char*, cv::Scalar>> items = {{"estimate", {200, 0, 0}},
-	                                                         {"dead reckoning", {0, 0, 220}},
-	                                                         {"landmark (mapped)", {200, 0, 200}},
-	                                                         {"table (plan)", {90, 90, 90}}};
-	if (truth)
-		items.insert(items.begin(), {{"true path", {0, 160, 0}}, {"landmark (true)", {0, 0, 0}}});
-	int y = 20;
-	for (const auto& [text, colour] : items)
-	{
-		cv::putText(img, text, {10, y}, cv::FONT_HERSHEY_SIMPLEX, 0.5, colour, 1, cv::LINE_AA);
-		y += 20;
-	}
+	plot.addPath("dead reckoning", pathOf(r.path, &PathSample::odometry), {{0, 0, 220}, 2});
+	plot.addPath("estimate", pathOf(r.path, &PathSample::estimate), {{200, 0, 0}, 2});
+	std::vector<V2> centres;
+	std::vector<Eigen::Matrix2d> P;
+	const size_t every = std::max<size_t>(1, r.path.size() / kMaxPathEllipses);
+	for (size_t i = 0; i < r.path.size(); i += every)
+		centres.push_back(zxOf(r.path[i].estimate)),
+		    P.push_back(io::zxBlockOfVehicle(r.path[i].P_vv));
+	plot.addEllipses95("estimate, 95 % ellipse", centres, P, {{200, 0, 0}, 2});
+	std::vector<V2> map;
+	std::vector<Eigen::Matrix2d> P_map;
+	for (const auto& m : r.map)
+		map.emplace_back(m.p_FinW.z(), m.p_FinW.x()), P_map.push_back(io::zxMarginalOfPoint(m.P));
+	plot.addPoints("landmark (mapped)", map, Marker::Cross, {{200, 0, 200}, 2}, 12);
+	plot.addEllipses95("landmark, 95 % ellipse", map, P_map, {{200, 0, 200}, 2});
+	std::vector<V2> vias;
+	for (const auto& e : r.obstacle.events)
+		for (const auto& p : e.via_zx_inW) vias.push_back(p);
+	plot.addPoints("detour waypoint", vias, Marker::Diamond, {{0, 120, 255}, 2}, 12);
+	plot.addPoints("lost (the robot said)", lostPlaces(r), Marker::Star, {{0, 200, 255}, 2}, 18);
+	if (r.collided)
+		plot.addPoints("collision (estimate)", {zxOf(r.collision_estimate)}, Marker::TiltedCross,
+		               {{0, 0, 255}, 3}, 24);
 }
 }  // namespace
 
 void writeTrajectoryPng(const mission::MissionResult& r, const mission::MissionOptions& o,
                         const MissionTruth* truth, const std::string& path)
 {
-	const TopView v = viewOf(r, o, truth);
-	cv::Mat img(std::max(1, static_cast<int>((v.hi.z() - v.lo.z()) * v.scale)),
-	            std::max(1, static_cast<int>((v.hi.x() - v.lo.x()) * v.scale)), CV_8UC3,
-	            cv::Scalar(255, 255, 255));
-	for (const auto& t : o.plan.tables)
-		drawFootprint(img, v, t.z_m, t.x_m, t.yaw_deg, t.depth_m, t.length_m, {90, 90, 90});
-	for (const auto& m : r.map)
-		cv::drawMarker(img, v.px(m.p_FinW.z(), m.p_FinW.x()), {200, 0, 200}, cv::MARKER_CROSS, 12,
-		               2);
-	drawPath(img, v, r.path, &PathSample::odometry, {0, 0, 220});
-	drawPath(img, v, r.path, &PathSample::estimate, {200, 0, 0});
-	if (truth) drawTruth(img, v, *truth);
-	for (const auto& e : r.obstacle.events)
-		for (const auto& p : e.via_zx_inW)
-			cv::drawMarker(img, v.px(p.x(), p.y()), {0, 120, 255}, cv::MARKER_DIAMOND, 12, 2);
-	if (r.collided)
-		cv::drawMarker(img, v.px(r.collision_estimate.x(), r.collision_estimate.y()), {0, 0, 255},
-		               cv::MARKER_TILTED_CROSS, 24, 3);
-	drawLegend(img, truth != nullptr);
-	if (!cv::imwrite(path, img)) throw std::runtime_error("cannot write " + path);
+	io::TopViewPlot plot("mission '" + o.name + "', seed " + std::to_string(o.seed) + ": " +
+	                     (r.success ? "succeeded" : "failed") +
+	                     (truth ? "" : " (the robot's view, no truth)"));
+	addPlan(plot, o);
+	if (truth) addTruth(plot, *truth);
+	addEstimate(plot, r);
+	plot.write(path);
 }
 
 }  // namespace mrolr::eval

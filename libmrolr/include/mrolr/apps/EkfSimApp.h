@@ -6,8 +6,8 @@
  *                   [--rawlog FILE] [--json]
  *
  * Prints the consistency and accuracy figures of the runs as a table (with a progress line on
- * stderr) or, with --json, as one JSON object. --out writes steps.csv, nees.csv and paths.png (run
- * 0); --rawlog writes run 0 as an MRPT rawlog. Run r uses the seed S + 1000 r. */
+ * stderr) or, with --json, as one JSON object. --out writes steps.csv, nees.csv, paths.png and
+ * run 0's truth.tum, estimate.tum and odometry.tum (TUM format); --rawlog writes run 0 as an MRPT rawlog. Run r uses the seed S + 1000 r. */
 
 #include <mrolr/eval/EkfSimulation.h>
 
@@ -31,6 +31,7 @@ class EkfSimApp
 	std::string config_path;  ///< empty: config/ekf_sim.ini
 	int runs = 1;
 	std::optional<uint64_t> seed;  ///< default: [simulation] seed
+	uint64_t run0_seed = 0;        ///< the seed run 0 used (set by run())
 	std::string out_dir;
 	std::string rawlog_path;
 	bool json = false;

@@ -109,6 +109,7 @@ class SlamApp
 	std::vector<MapFeature> map;
 	std::vector<TrueLandmark> true_landmarks;  ///< the world's, when a world file was given
 	SlamSummary summary;
+	std::string run_title;  ///< what the run was (live: world, seed, head; replay: rawlog)
 
  private:
 	void runLive();

@@ -2,7 +2,8 @@
 /** A run's outputs in out/<mission>-<timestamp>/ (docs/mission.md "Outputs"): report.json,
  * report.md, trajectory.png and mission.3Dscene (mission.rawlog is written while the mission runs,
  * mission/DeviceRecorder.h). The robot's part comes from
- * mission::reportJson; with the world's truth (in-process runs) eval adds its checks, the true
+ * mission::reportJson; estimate.tum, odometry.tum (and truth.tum with the truth) hold the paths
+ * in the TUM format. With the world's truth (in-process runs) eval adds its checks, the true
  * path, the room and the objects to the pictures. Without
  * it (the robot in its own process) the pictures show what the robot knew. */
 #include <mrolr/eval/MissionTruth.h>
@@ -30,6 +31,11 @@ void writeTrajectoryPng(const mission::MissionResult& r, const mission::MissionO
  * recognised model where the robot believed it was, and the arm at its grasp (.3Dscene). */
 void writeScene3D(const mission::MissionResult& r, const mission::MissionOptions& o,
                   const MissionTruth* truth, const std::string& path);
+/** The trajectories in the TUM format (io/TumTrajectory.h), stamped with the base's clock:
+ * estimate.tum and odometry.tum, and with an in-process @p truth truth.tum, so that
+ * `evo_ape tum truth.tum estimate.tum` compares them. Returns the files written. */
+std::vector<std::string> writeTumTrajectories(const mission::MissionResult& r,
+                                              const MissionTruth* truth, const std::string& dir);
 /** Writes everything into @p dir (created); evaluates the report when @p truth is given. */
 WrittenOutputs writeMissionOutputs(const mission::MissionResult& r,
                                    const mission::MissionOptions& o, const MissionTruth* truth,

@@ -32,8 +32,10 @@ void EkfSimApp::initialize(const std::vector<std::string>& args)
 	                                   "1", "N", cmd);
 	TCLAP::ValueArg<std::string> s("", "seed", "seed of run 0 (default: [simulation] seed)", false,
 	                               "", "S", cmd);
-	TCLAP::ValueArg<std::string> out("", "out", "write steps.csv, nees.csv, paths.png here", false,
-	                                 "", "DIR", cmd);
+	TCLAP::ValueArg<std::string> out(
+	    "", "out",
+	    "write steps.csv, nees.csv, paths.png and run 0's truth.tum, estimate.tum, odometry.tum here",
+	    false, "", "DIR", cmd);
 	TCLAP::ValueArg<std::string> rawlog("", "rawlog", "write run 0 as an MRPT rawlog", false, "",
 	                                    "FILE", cmd);
 	TCLAP::SwitchArg js("", "json", "print one JSON object", cmd);
@@ -69,6 +71,7 @@ int EkfSimApp::run(std::ostream& out)
 	setup = eval::SimulationSetup::load(config_path);
 	const auto world = world::World::load(world_path);
 	const uint64_t s0 = seed.value_or(setup.sim.seed);
+	run0_seed = s0;
 	const auto report = [this](int done)
 	{
 		if (progress) std::cerr << "\rrun " << done << "/" << runs << std::flush;
@@ -87,7 +90,12 @@ void EkfSimApp::writeOutputs(const world::World& world) const
 	{
 		std::filesystem::create_directories(out_dir);
 		detail::writeCsv(out_dir, results, summary);
-		detail::writePathPlot(out_dir + "/paths.png", world, results.front());
+		const auto name = std::filesystem::path(world_path).parent_path().filename().string();
+		detail::writePathPlot(out_dir + "/paths.png",
+		                      "mrolr-ekf-sim: world '" + name + "', run 0 of " +
+		                          std::to_string(runs) + ", seed " + std::to_string(run0_seed),
+		                      world, results.front());
+		detail::writeTumFiles(out_dir, results.front());
 	}
 	if (!rawlog_path.empty()) detail::writeRawlog(rawlog_path, world, results.front(), setup);
 }

@@ -40,7 +40,7 @@ void SlamApp::initialize(const std::vector<std::string>& args)
 	    false, "", "FILE", cmd);
 	TCLAP::ValueArg<std::string> out(
 	    "", "out",
-	    "folder for trajectory/map/decisions CSV, paths.png, decisions.rawlog and slam.3Dscene",
+	    "folder for trajectory/map/decisions CSV, paths.png, truth/estimate/odometry.tum, decisions.rawlog and slam.3Dscene",
 	    false, "", "DIR", cmd);
 	TCLAP::SwitchArg js("", "json", "print the summary as JSON", cmd);
 	if (!parseTclap(cmd, args))

@@ -107,6 +107,9 @@ void SlamApp::runLive()
 	const SlamSetup s = loadSetup(config_path);
 	const world::World w = world::World::load(world_path);
 	for (const auto& l : w.landmarks) true_landmarks.push_back({l.name, l.p_LinW});
+	run_title = "mrolr-slam: live on world '" +
+	            std::filesystem::path(world_path).parent_path().filename().string() + "', seed " +
+	            std::to_string(s.run.seed) + ", head " + head_kind;
 	const geometry::BiSightHead head(s.bisight);
 	const base::LabmateModel model(s.labmate);
 	const auto head_device =

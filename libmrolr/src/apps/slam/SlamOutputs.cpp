@@ -1,11 +1,12 @@
-// mrolr-slam --out DIR: trajectory.csv, map.csv, decisions.csv, paths.png, decisions.rawlog and
-// slam.3Dscene.
+// mrolr-slam --out DIR: trajectory.csv, map.csv, decisions.csv, paths.png, truth.tum,
+// estimate.tum, odometry.tum, decisions.rawlog and slam.3Dscene.
 #include <mrolr/apps/SlamApp.h>
 #include "SlamRecordings.h"
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include <mrolr/io/TopViewPlot.h>
+#include <mrolr/io/TumTrajectory.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -58,26 +59,57 @@ void writeDecisions(const std::string& dir, const std::vector<SlamStepLog>& step
 	}
 }
 
-/** Top view (z up the image, x to the left as in W): true (green), SLAM (red), dead reckoning
- * (blue) and mapped features (black). */
-void writePlot(const std::string& dir, const std::vector<SlamStepLog>& steps)
+std::vector<Eigen::Vector2d> pathOf(const std::vector<SlamStepLog>& steps,
+                                    Eigen::Vector3d SlamStepLog::*field)
 {
-	const double scale = 80, zmin = -3, xmax = 4;  // px per metre, view origin
-	cv::Mat img(720, 720, CV_8UC3, cv::Scalar(255, 255, 255));
-	auto px = [&](const Eigen::Vector3d& x)
-	{ return cv::Point(int((xmax - x[1]) * scale), int(img.rows - (x[0] - zmin) * scale)); };
-	auto path = [&](auto member, cv::Scalar colour)
-	{
-		for (size_t k = 1; k < steps.size(); ++k)
-			cv::line(img, px(steps[k - 1].*member), px(steps[k].*member), colour, 2, cv::LINE_AA);
-	};
-	path(&SlamStepLog::x_dr, {255, 0, 0});
-	path(&SlamStepLog::x_true, {0, 160, 0});
-	path(&SlamStepLog::x_est, {0, 0, 255});
-	cv::putText(img, "true (green)  SLAM (red)  dead reckoning (blue)", {10, 20},
-	            cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0});
-	if (!cv::imwrite((std::filesystem::path(dir) / "paths.png").string(), img))
-		throw std::runtime_error(dir + "/paths.png: cannot write");
+	std::vector<Eigen::Vector2d> out;
+	for (const auto& s : steps) out.push_back((s.*field).head<2>());
+	return out;
+}
+
+/** paths.png (io/TopViewPlot.h): the true, SLAM and dead-reckoned paths with the vehicle's 95 %
+ * ellipses, the true landmarks and the mapped features with theirs. */
+void writePlot(const std::string& dir, const std::string& title,
+               const std::vector<SlamStepLog>& steps, const std::vector<MapFeature>& map,
+               const std::vector<TrueLandmark>& true_landmarks)
+{
+	constexpr int kMaxPathEllipses = 40;
+	io::TopViewPlot plot(title);
+	std::vector<Eigen::Vector2d> landmarks;
+	for (const auto& l : true_landmarks) landmarks.emplace_back(l.p_LinW.z(), l.p_LinW.x());
+	plot.addPoints("landmark (true)", landmarks, io::Marker::Square, {{0, 0, 0}, 2}, 9);
+	plot.addPath("dead reckoning", pathOf(steps, &SlamStepLog::x_dr), {{0, 0, 220}, 2});
+	plot.addPath("true path", pathOf(steps, &SlamStepLog::x_true), {{0, 160, 0}, 2});
+	plot.addPath("SLAM estimate", pathOf(steps, &SlamStepLog::x_est), {{200, 0, 0}, 2});
+	std::vector<Eigen::Vector2d> centres;
+	std::vector<Eigen::Matrix2d> P;
+	const size_t every = std::max<size_t>(1, steps.size() / kMaxPathEllipses);
+	for (size_t k = 0; k < steps.size(); k += every)
+		centres.push_back(steps[k].x_est.head<2>()),
+		    P.push_back(steps[k].var_est.head<2>().asDiagonal());
+	plot.addEllipses95("estimate, 95 % ellipse (variances)", centres, P, {{200, 0, 0}, 2});
+	std::vector<Eigen::Vector2d> mapped;
+	std::vector<Eigen::Matrix2d> P_map;
+	for (const auto& m : map)
+		mapped.emplace_back(m.p_FinW.z(), m.p_FinW.x()), P_map.push_back(io::zxMarginalOfPoint(m.cov));
+	plot.addPoints("feature (mapped)", mapped, io::Marker::Cross, {{200, 0, 200}, 2}, 10);
+	plot.addEllipses95("feature, 95 % ellipse", mapped, P_map, {{200, 0, 200}, 2});
+	plot.write((std::filesystem::path(dir) / "paths.png").string());
+}
+
+/** truth.tum, estimate.tum, odometry.tum (io/TumTrajectory.h); the timestamp is the step number
+ * (the steps of mrolr-slam carry no clock). */
+void writeTum(const std::string& dir, const std::vector<SlamStepLog>& steps)
+{
+	std::vector<io::StampedVehicle> truth, estimate, odometry;
+	for (size_t k = 0; k < steps.size(); ++k)
+		truth.push_back({double(k), steps[k].x_true}),
+		    estimate.push_back({double(k), steps[k].x_est}),
+		    odometry.push_back({double(k), steps[k].x_dr});
+	const std::filesystem::path d(dir);
+	io::writeTum((d / "truth.tum").string(), truth);
+	io::writeTum((d / "estimate.tum").string(), estimate);
+	io::writeTum((d / "odometry.tum").string(), odometry);
 }
 }  // namespace
 
@@ -94,7 +126,8 @@ void SlamApp::writeOutputs() const
 		f << m.label << "," << m.known << "," << m.p_FinW.x() << "," << m.p_FinW.y() << ","
 		  << m.p_FinW.z() << "," << sd.x() << "," << sd.y() << "," << sd.z() << "\n";
 	}
-	writePlot(out_dir, steps);
+	writePlot(out_dir, run_title, steps, map, true_landmarks);
+	writeTum(out_dir, steps);
 	const std::filesystem::path dir(out_dir);
 	writeDecisionRawlog((dir / "decisions.rawlog").string(), steps);
 	writeSlamScene((dir / "slam.3Dscene").string(), steps, map, true_landmarks);

@@ -9,6 +9,7 @@
 #include "SlamSetup.h"
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 namespace mrolr::apps
@@ -51,6 +52,8 @@ void SlamApp::runReplay()
 {
 	const SlamSetup s = loadSetup(config_path);
 	true_landmarks = landmarksOf(world_path);
+	run_title = "mrolr-slam: replay of '" +
+	            std::filesystem::path(rawlog_path).filename().string() + "'";
 	const std::vector<io::RawlogRecord> records = io::readRawlog(rawlog_path);
 	if (records.size() < 2)
 		throw std::runtime_error(rawlog_path + ": a replay needs at least 2 records");
