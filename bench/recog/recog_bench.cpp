@@ -7,8 +7,8 @@
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 #include <mrolr/util/Cli.h>
 
@@ -21,6 +21,7 @@
 #include <memory>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 namespace model = mrolr::model;
 
 namespace
@@ -158,7 +159,8 @@ void BM_RecogAbsentRenderedImages(benchmark::State& state)
 {
 	auto& f = rendered();
 	for (auto _ : state)
-		benchmark::DoNotOptimize(f.skip->recognize(f.scene.scene, &f.scene.up_L, f.images.get()));
+		benchmark::DoNotOptimize(f.skip->recognize(
+		    f.scene.scene, {f.scene.up_L, std::cref(*f.images), std::nullopt}));
 }
 BENCHMARK(BM_RecogAbsentRenderedImages)->Unit(benchmark::kMillisecond);
 

@@ -1,7 +1,7 @@
 // The table top estimated from the stereo scene alone (recog::estimateTablePlane) against the
 // world's: rendered lab views of cluttered tables, the robot's prior off by 40 mm.
 #include <mrolr/eval/RecognitionEvaluation.h>
-#include <mrolr/recog/TablePlaneEstimate.h>
+#include <mrolr/recog/plane/TablePlaneEstimate.h>
 #include <mrolr/util/Cli.h>
 
 #include <gtest/gtest.h>

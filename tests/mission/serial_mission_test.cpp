@@ -114,7 +114,7 @@ TEST(SerialMission, ThroughPtysWithDelaysAndLostBytesItIsTheSimulatedMission)
 	// answered from the device's cache, not executed twice: the very same run.
 	expectSamePaths(serial, sim.r);
 	EXPECT_EQ(rig.lab->truePose(), sim.truth.final_zxphi);
-	EXPECT_EQ(serial.search.T_OinC0.matrix(), sim.r.search.T_OinC0.matrix());
+	EXPECT_EQ(serial.search.T_OinC0_mm.matrix(), sim.r.search.T_OinC0_mm.matrix());
 	EXPECT_EQ(serial.retrieval.joints.toMmDeg(), sim.r.retrieval.joints.toMmDeg());
 	EXPECT_EQ(serial.shots.size(), sim.r.shots.size());
 	ASSERT_EQ(serial.links.size(), 3u);

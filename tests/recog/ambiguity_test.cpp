@@ -1,12 +1,13 @@
 // A nearly symmetric box whose telling face is hidden is reported ambiguous, with both poses and
 // their support; seen whole, or as a truly symmetric plain box, it is not.
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/WireFrameBuilder.h>
 
 #include <gtest/gtest.h>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 using V = Eigen::Vector3d;
 
 namespace

@@ -4,9 +4,9 @@
 #include "recog_test_util.h"
 #include "synthetic_rig.h"
 
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
@@ -18,6 +18,7 @@
 #include <sstream>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {
@@ -149,12 +150,14 @@ TEST(ImageVerifier, RecognizerAcceptsByImageScore)
 	const Recognizer rec(makeStaplerBox(), opts);
 	std::vector<Feature> scene;
 	for (const auto& f : p.box) scene.push_back(f.transformed(boxPose()));
-	const auto r = rec.recognize(scene, nullptr, &p.images);
+	const auto r = rec.recognize(scene, {std::nullopt, std::cref(p.images), std::nullopt});
 	ASSERT_TRUE(r.found);
-	EXPECT_GE(r.image_score, 0.9);
+	EXPECT_GE(r.image_score.value_or(0), 0.9);
 	EXPECT_LT(test::translationErrorMm(r.T_OinS, boxPose()), 1.0);
-	EXPECT_FALSE(Recognizer(makeCup(), opts).recognize(scene, nullptr, &p.images).found);
-	EXPECT_LT(rec.recognize(scene).image_score, 0);  // without images: no image score
+	EXPECT_FALSE(Recognizer(makeCup(), opts)
+	                 .recognize(scene, {std::nullopt, std::cref(p.images), std::nullopt})
+	                 .found);
+	EXPECT_FALSE(rec.recognize(scene).image_score);  // without images: no image score
 }
 
 TEST(ImageVerifier, BadInputIsReported)
@@ -182,7 +185,15 @@ TEST(ImageVerifier, BadInputIsReported)
 TEST(ImageVerifier, OptionsNameTheBadKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
-	cfg.setContent(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 50\ncanny_high = 20\n"));
+	std::ostringstream defaults;
+	ImageVerificationOptions().dump(defaults);
+	std::string bad_canny = "[iv]\n" + defaults.str();  // every key; canny_high below canny_low
+	for (const auto& [key, value] : {std::pair{"canny_low = ", "50"}, {"canny_high = ", "20"}})
+	{
+		const size_t at = bad_canny.find(key) + std::string(key).size();
+		bad_canny.replace(at, bad_canny.find('\n', at) - at, value);
+	}
+	cfg.setContent(bad_canny);
 	ImageVerificationOptions o;
 	try
 	{
@@ -193,9 +204,10 @@ TEST(ImageVerifier, OptionsNameTheBadKey)
 	{
 		EXPECT_NE(std::string(e.what()).find("canny_high"), std::string::npos) << e.what();
 	}
-	cfg.setContent(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
-	EXPECT_THROW(o.loadFromConfigFile(cfg, "iv"), mrolr::util::ConfigError);
-	// every key as dumped, one optional key out of range
+	// a fresh file: CConfigFileMemory::setContent keeps the keys of earlier contents
+	const mrpt::config::CConfigFileMemory partial(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
+	EXPECT_THROW(o.loadFromConfigFile(partial, "iv"), mrolr::util::ConfigError);
+	// every key as dumped, one key out of range
 	std::ostringstream all;
 	ImageVerificationOptions().dump(all);
 	std::string text = "[iv]\n" + all.str();

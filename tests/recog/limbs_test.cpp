@@ -3,9 +3,9 @@
 // camera lie on the projected silhouette, and a drawn can scores high at its pose with them and
 // clearly lower 10 mm away.
 #include "synthetic_rig.h"
-#include <mrolr/recog/ImageVerifier.h>
-#include <mrolr/recog/Limbs.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/images/Limbs.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/recog/WireFrameBuilder.h>
 #include <mrolr/util/Config.h>
 
@@ -16,6 +16,7 @@
 #include <random>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {
@@ -334,7 +335,9 @@ TEST(limbs, NewKeysAreRequiredAndRead)
 	const std::string common =
 	    "[iv]\nblur_sigma_px = 1\ncanny_low = 20\ncanny_high = 50\nedge_distance_px = 2\n"
 	    "orientation_tol_deg = 20\nsample_spacing_mm = 3\nmin_samples = 30\nmin_score = 0.7\n"
-	    "prefilter_score = 0\nrefine_candidates = 3\nyaw_step_deg = 10\ntruncate_px = 5\n";
+	    "prefilter_score = 0\nrefine_candidates = 3\nyaw_step_deg = 10\ntruncate_px = 5\n"
+	    "occluder_margin_mm = 10\nmin_unoccluded_fraction = 0.5\nmutual_occlusion = true\n"
+	    "min_in_image_fraction = 0.5\n";
 	ImageVerificationOptions o;
 	// a fresh file each time: CConfigFileMemory::setContent keeps the keys of earlier contents
 	const auto load = [&o](const std::string& text)

@@ -1,13 +1,14 @@
 // occludersOf (MutualOcclusion.h): the found results other than the one searched become
 // occluders at their poses; mismatched input is reported.
-#include <mrolr/recog/MutualOcclusion.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/recog/images/MutualOcclusion.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/util/Cli.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {

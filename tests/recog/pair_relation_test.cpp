@@ -1,12 +1,13 @@
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/PairRelation.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticObjects.h>
 
 #include <gtest/gtest.h>
 
 #include <random>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {

@@ -6,9 +6,9 @@
 #include "plane_test_util.h"
 #include "recog_test_util.h"
 
-#include <mrolr/recog/Limbs.h>
-#include <mrolr/recog/PlaneHypotheses.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/recog/images/Limbs.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
@@ -21,6 +21,7 @@
 #include <sstream>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 using namespace mrolr::recog::plane_test;
 
 namespace

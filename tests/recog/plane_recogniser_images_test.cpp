@@ -4,15 +4,16 @@
 #include "plane_test_util.h"
 #include "recog_test_util.h"
 
-#include <mrolr/recog/ImageVerifier.h>
-#include <mrolr/recog/PlaneHypotheses.h>
+#include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticObjects.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 using namespace mrolr::recog::plane_test;
 
 namespace
@@ -81,18 +82,18 @@ TEST(PlaneHypotheses, RecogniserFindsABoxFromOneLineInTheImages)
 	const SupportPlane plane = table();
 	const auto opts = RecognitionOptions::defaults();
 	const Recognizer rec(box, opts);
-	EXPECT_FALSE(rec.recognize(scene, &plane.n_S, &images).found);
-	const auto r = rec.recognize(scene, &plane.n_S, &images, &plane);
+	EXPECT_FALSE(rec.recognize(scene, {plane.n_S, std::cref(images), std::nullopt}).found);
+	const auto r = rec.recognize(scene, {plane.n_S, std::cref(images), plane});
 	ASSERT_TRUE(r.found);
-	EXPECT_TRUE(r.from_plane);
-	EXPECT_GE(r.image_score, 0.7);
+	EXPECT_EQ(r.origin, Origin::SupportPlane);
+	EXPECT_GE(r.image_score.value_or(0), 0.7);
 	const auto [rot, centre] = boxPoseError(r.T_OinS, T);
 	EXPECT_LT(rot, 3.0);
 	EXPECT_LT(centre, 5.0);
-	EXPECT_FALSE(Recognizer(makeCup(), opts).recognize(scene, &plane.n_S, &images, &plane).found);
+	EXPECT_FALSE(Recognizer(makeCup(), opts).recognize(scene, {plane.n_S, std::cref(images), plane}).found);
 	auto off = opts;
 	off.plane.enable = false;
-	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
+	EXPECT_FALSE(Recognizer(box, off).recognize(scene, {plane.n_S, std::cref(images), plane}).found);
 }
 
 // The same box seen by two of its vertical edges only (fragments, as stereo gives them against a
@@ -109,18 +110,18 @@ TEST(PlaneHypotheses, RecogniserFindsABoxFromTwoVerticalEdgesInTheImages)
 	                                    lineFeature(T * (b + hi), T * (b + lo))};
 	const SupportPlane plane = table();
 	const auto opts = RecognitionOptions::defaults();
-	const auto r = Recognizer(box, opts).recognize(scene, &plane.n_S, &images, &plane);
+	const auto r = Recognizer(box, opts).recognize(scene, {plane.n_S, std::cref(images), plane});
 	ASSERT_TRUE(r.found);
-	EXPECT_TRUE(r.from_plane);
+	EXPECT_EQ(r.origin, Origin::SupportPlane);
 	EXPECT_GE(r.image_score, opts.plane.edge_pair_min_image_score);
 	const auto [rot, centre] = boxPoseError(r.T_OinS, T);
 	EXPECT_LT(rot, 3.0);
 	EXPECT_LT(centre, 5.0);
 	auto strict = opts;
 	strict.plane.edge_pair_min_image_score = 1.0;
-	EXPECT_FALSE(Recognizer(box, strict).recognize(scene, &plane.n_S, &images, &plane).found);
+	EXPECT_FALSE(Recognizer(box, strict).recognize(scene, {plane.n_S, std::cref(images), plane}).found);
 	auto off = opts;
 	off.plane.edge_pair_hypotheses = false;
-	EXPECT_FALSE(Recognizer(box, off).recognize(scene, &plane.n_S, &images, &plane).found);
+	EXPECT_FALSE(Recognizer(box, off).recognize(scene, {plane.n_S, std::cref(images), plane}).found);
 }
 

@@ -3,7 +3,7 @@
  * plane_recogniser_images_test.cpp): a tilted table, upright poses on it, line features. */
 
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/SupportPlane.h>
+#include <mrolr/recog/plane/SupportPlane.h>
 
 #include <Eigen/Geometry>
 

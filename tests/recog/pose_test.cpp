@@ -1,8 +1,8 @@
 #include "recog_test_util.h"
 
 #include <mrolr/recog/PoseEstimation.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <random>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {

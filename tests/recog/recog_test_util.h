@@ -2,7 +2,7 @@
 /** Shared helpers of the recog tests: default options, pose errors. */
 
 #include <mrolr/recog/RecognitionOptions.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 
 #include <Eigen/Geometry>
@@ -22,9 +22,9 @@ inline double translationErrorMm(const Eigen::Isometry3d& a, const Eigen::Isomet
 
 /** The noise of the fixed synthetic table scenes: endpoint noise 0.7 mm, 30 % of lines fragmented,
  * 15 % missing, the far half hidden. */
-inline SceneNoise realisticNoise()
+inline sim::SceneNoise realisticNoise()
 {
-	SceneNoise n;
+	sim::SceneNoise n;
 	n.endpoint_sigma_mm = 0.7;
 	n.fragment_probability = 0.3;
 	n.missing_fraction = 0.15;

@@ -1,6 +1,6 @@
 #include <mrolr/apps/RecognizeApp.h>
 #include <mrolr/model/WireFrameIO.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/TransformCluster.h>
 #include <mrolr/recog/WireFrameBuilder.h>
 #include <mrolr/util/Cli.h>
@@ -139,8 +139,8 @@ TEST(RecognizeApp, JsonReportsAnAmbiguousPoseWithEveryPose)
 	label.box({-60, -30, 0}, {60, 30, 40});
 	label.polyline({{60, -20, 8}, {60, 20, 8}, {60, 20, 33}, {60, -20, 33}}, true);
 	plain.box({-60, -30, 0}, {60, 30, 40});
-	auto scene = mrolr::recog::placeInScene(plain.build(),
-	                                        mrolr::recog::tablePose(30, 25, V(20, -80, 700)));
+	auto scene = mrolr::sim::placeInScene(plain.build(),
+	                                        mrolr::sim::tablePose(30, 25, V(20, -80, 700)));
 	scene.frame = mrolr::model::WireFrameFrame::LeftCamera;
 	mrolr::model::saveWireFrame(label.build(), (dir / "model.wf").string());
 	mrolr::model::saveWireFrame(scene, (dir / "scene.wf").string());

@@ -1,8 +1,8 @@
 #include "recog_test_util.h"
 
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include <cstdio>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {
@@ -46,7 +47,7 @@ TEST(RecognizerAccuracy, TableScenesMeetTheIssueTargets)
 				    std::printf(
 				        "miss %s seed %u found %d level %d score %.2f rot %.1f trans %.1f "
 				        "vis %.2f\n",
-				        objects[k].name.c_str(), s, r.found, r.level, r.score, er, et,
+				        objects[k].name.c_str(), s, r.found, r.level.value_or(0), r.score, er, et,
 				        ts.visible_fraction);
 				    return;
 			    }
@@ -80,7 +81,7 @@ TEST(RecognizerAccuracy, AbsentObjectsAreNotFound)
 			const auto r = rec.recognize(ts.scene);
 			if (r.found)
 				std::printf("false positive %s seed %u level %d score %.2f\n",
-				            objects[k].name.c_str(), s, r.level, r.score);
+				            objects[k].name.c_str(), s, r.level.value_or(0), r.score);
 			false_positives += r.found;
 		}
 	}

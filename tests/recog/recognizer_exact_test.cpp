@@ -1,12 +1,13 @@
 #include "recog_test_util.h"
 
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 
 #include <gtest/gtest.h>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {
@@ -31,6 +32,7 @@ TEST(RecognizerExact, EveryObjectFoundWithExactPose)
 		const auto r = rec.recognize(scene);
 		ASSERT_TRUE(r.found) << objects[k].name;
 		EXPECT_EQ(r.level, 1) << objects[k].name;
+		EXPECT_EQ(r.origin, Origin::Clique);
 		EXPECT_NEAR(r.score, 1.0, 1e-9) << objects[k].name;
 		EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6) << objects[k].name;
 	}

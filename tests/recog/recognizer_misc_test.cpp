@@ -2,8 +2,8 @@
 
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include <sstream>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {
@@ -104,8 +105,8 @@ TEST(RecognizerMisc, PanSweepFindsTheSceneHoldingTheObject)
 	sweep.erase(sweep.begin() + 2);
 	const auto none = rec.searchSweep(sweep);
 	EXPECT_FALSE(none.found);
-	EXPECT_EQ(none.scene_index, -1);
-	EXPECT_EQ(none.level, 0);
+	EXPECT_FALSE(none.scene_index);
+	EXPECT_FALSE(none.level);
 	EXPECT_EQ(none.confidence, 0);
 }
 

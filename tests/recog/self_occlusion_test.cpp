@@ -2,7 +2,7 @@
 // object's shrunk polytope exactly when some point of it lies inside, and the camera-side View
 // and per-point PointSight give the same answers as the one-shot calls.
 #include <mrolr/recog/SelfOcclusion.h>
-#include <mrolr/recog/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/recog/Feature.h>
 
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 #include <random>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {

@@ -1,7 +1,7 @@
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SupportBound.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/Verification.h>
 
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include <random>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 
 namespace
 {

@@ -4,8 +4,8 @@
 
 #include <mrolr/recog/Recognizer.h>
 #include <mrolr/recog/SelfOcclusion.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/recog/WireFrameBuilder.h>
 
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include <cmath>
 
 using namespace mrolr::recog;
+using namespace mrolr::sim;
 using test::realisticNoise;
 
 namespace
@@ -77,13 +78,13 @@ TEST(UprightPrior, ASceneSeenUpsideDownFindsNothingUpright)
 	const Recognizer rec(objects[1], RecognitionOptions::defaults());
 	const auto ts = makeTableScene(objects, 1, 2, realisticNoise(), 77);
 	const Eigen::Vector3d up = tableUp(), down = -up;
-	const auto r = rec.recognize(ts.scene, &up);
+	const auto r = rec.recognize(ts.scene, {up, std::nullopt, std::nullopt});
 	ASSERT_TRUE(r.found);
 	EXPECT_LT(angleDeg(r.T_OinS.linear(), ts.T_OinS.linear()), 10);
-	const auto d = rec.recognize(ts.scene, &down);
+	const auto d = rec.recognize(ts.scene, {down, std::nullopt, std::nullopt});
 	EXPECT_FALSE(d.found);  // the true pose is rejected, a turned-over one is not supported
-	EXPECT_FALSE(rec.upright(ts.T_OinS, &down));
-	EXPECT_TRUE(rec.upright(ts.T_OinS, &up));
+	EXPECT_FALSE(rec.upright(ts.T_OinS, down));
+	EXPECT_TRUE(rec.upright(ts.T_OinS, up));
 }
 
 // The synthetic table scenes of recognizer_accuracy_test, searched with the scene's up direction
@@ -102,7 +103,7 @@ TEST(UprightPrior, TableScenesWithUpKeepTheTargetsAndNoFalsePositive)
 		    objects, k,
 		    [&](const TableScene& ts, unsigned)
 		    {
-			    const auto r = rec.recognize(ts.scene, &up);
+			    const auto r = rec.recognize(ts.scene, {up, std::nullopt, std::nullopt});
 			    recognised += r.found && angleDeg(r.T_OinS.linear(), ts.T_OinS.linear()) < 10 &&
 			                  (r.T_OinS.translation() - ts.T_OinS.translation()).norm() < 30;
 		    });
@@ -112,7 +113,7 @@ TEST(UprightPrior, TableScenesWithUpKeepTheTargetsAndNoFalsePositive)
 			false_positives +=
 			    rec.recognize(
 			           makeTableScene(others, -1, 4, realisticNoise(), 5000 + 10 * k + s).scene,
-			           &up)
+			           {up, std::nullopt, std::nullopt})
 			        .found;
 	}
 	EXPECT_GE(static_cast<double>(recognised) / trials, 0.95);

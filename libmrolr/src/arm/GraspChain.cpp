@@ -4,7 +4,7 @@
 #include <mrolr/arm/PoseText.h>
 #include <mrolr/util/Config.h>
 
-#include "IniFile.h"
+#include <mrolr/util/OptionsBinder.h>
 
 #include <Eigen/SVD>
 
@@ -31,7 +31,7 @@ void ArmMount::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 ArmMount ArmMount::fromFile(const std::string& path, const std::string& section)
 {
-	return detail::loadSection<ArmMount>(path, section, "arm mounting file");
+	return util::loadOptionsFile<ArmMount>(path, section);
 }
 
 void ArmMount::dump(std::ostream& out) const

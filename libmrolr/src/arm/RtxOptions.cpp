@@ -1,7 +1,7 @@
 #include <mrolr/arm/RtxOptions.h>
 #include <mrolr/util/Config.h>
 
-#include "IniFile.h"
+#include <mrolr/util/OptionsBinder.h>
 
 #include <iomanip>
 #include <ostream>
@@ -56,7 +56,7 @@ void RtxOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 RtxOptions RtxOptions::fromFile(const std::string& path, const std::string& section)
 {
-	return detail::loadSection<RtxOptions>(path, section, "configuration file");
+	return util::loadOptionsFile<RtxOptions>(path, section);
 }
 
 void RtxOptions::dump(std::ostream& out) const

@@ -22,20 +22,22 @@ double truthScore(const recog::Recognizer& rec, const std::vector<recog::Feature
 	const auto& o = rec.options();
 	return recog::verifyPose(rec.table(), scene, T_OinL, o.verify_position_error_mm,
 	                         o.verify_rotation_deg * M_PI / 180,
-	                         o.levels.front().length_threshold_mm, rec.occlusion(&up_L))
+	                         o.levels.front().length_threshold_mm, rec.occlusion(up_L))
 	    .score;
 }
 }  // namespace
 
 EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
                       const std::vector<double>& symmetry_deg, const EvaluationOptions& opts,
-                      const recog::ImageVerifier* images, const recog::SupportPlane* plane)
+                      const recog::SceneContext& context)
 {
 	EvalCase c;
 	c.scene = s.index;
 	c.model = rec.table().name();
 	const auto scene = recog::featuresOf(s.scene);
-	const recog::RecognitionResult r = rec.recognize(scene, &s.up_L, images, plane);
+	recog::SceneContext with_up = context;
+	with_up.up_S = s.up_L;
+	const recog::RecognitionResult r = rec.recognize(scene, with_up);
 	c.result = r;
 	c.image_score = r.image_score;
 	c.found = r.found, c.score = r.score, c.level = r.level, c.ms = r.ms;
@@ -47,11 +49,14 @@ EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
 	if (!truth) return c;
 	c.visible_fraction = truth->visible_fraction;
 	c.truth_score = truthScore(rec, scene, truth->T_OinL, s.up_L);
-	if (images)
+	if (context.images)
+	{
+		const recog::ImageVerifier& images = *context.images;
 		c.truth_image_score = images
-		                          ->score(rec.edgeSamples(images->options().sample_spacing_mm),
-		                                  truth->T_OinL, &rec.selfOcclusion())
+		                          .score(rec.edgeSamples(images.options().sample_spacing_mm),
+		                                 truth->T_OinL, &rec.selfOcclusion())
 		                          .score;
+	}
 	if (!c.found) return c;
 	c.rot_err_deg = rotationErrorDeg(truth->T_OinL.linear(), r.T_OinS.linear(), symmetry_deg);
 	c.trans_err_mm = (truth->T_OinL.translation() - r.T_OinS.translation()).norm();
@@ -78,7 +83,7 @@ EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOption
 		if (c.visible_fraction < opts.min_visible_fraction) continue;
 		++s.rate_cases;
 		if (!c.correct) continue;
-		s.recognised_from_plane += c.result.from_plane ? 1 : 0;
+		s.recognised_from_plane += c.result.origin == recog::Origin::SupportPlane ? 1 : 0;
 		++s.recognised, rot.push_back(c.rot_err_deg), trans.push_back(c.trans_err_mm);
 	}
 	s.rate = s.rate_cases ? static_cast<double>(s.recognised) / s.rate_cases : 0;

@@ -1,7 +1,7 @@
 // The whole set: the shipped generator, the models searched, every model in every scene.
 #include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
-#include <mrolr/recog/MutualOcclusion.h>
+#include <mrolr/recog/images/MutualOcclusion.h>
 #include <mrolr/sim/SceneBuilder.h>
 #include <mrolr/util/Cli.h>
 
@@ -57,7 +57,8 @@ void searchBehindFound(const Searchers& sr, const EvalScene& s, const recog::Ima
 	std::map<size_t, EvalCase> second;  // the cases of the second search, by model
 	auto search = [&](size_t i, const recog::ImageVerifier& behind)
 	{
-		second[i] = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, &behind, &s.plane_L);
+		second[i] = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts,
+		                         {std::nullopt, std::cref(behind), s.plane_L});
 		return second[i].result;
 	};
 	const auto after = recog::searchBehindFound(ptrs, found, images,
@@ -83,10 +84,12 @@ std::vector<recog::RecognitionResult> evaluateScene(const Searchers& sr, const E
 		images = std::make_unique<recog::ImageVerifier>(s.left, s.right, s.calib, *search.images);
 	std::vector<recog::RecognitionResult> found;
 	const size_t first = cases.size();
+	recog::SceneContext context;
+	context.plane = s.plane_L;
+	if (images) context.images = std::cref(*images);
 	for (size_t i = 0; i < sr.recs.size(); ++i)
 	{
-		cases.push_back(
-		    evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, images.get(), &s.plane_L));
+		cases.push_back(evaluateCase(sr.recs[i], s, sr.symmetries[i], opts, context));
 		found.push_back(cases.back().result);
 	}
 	if (images && search.images->mutual_occlusion)

@@ -88,7 +88,7 @@ void addRecognisedAndArm(mrpt::opengl::COpenGLScene& scene, const mission::Missi
 	    model::loadWireFrame((std::filesystem::path(o.models_dir) / (o.target + ".wf")).string()));
 	obj->setScale(0.001f);  // the model is in mm
 	obj->setName("recognised." + r.target);
-	obj->setPose(geometry::poseToMrpt(T_C0inW * metres(r.search.T_OinC0)));
+	obj->setPose(geometry::poseToMrpt(T_C0inW * metres(r.search.T_OinC0_mm)));
 	scene.insert(obj);
 	if (!r.retrieval.attempted) return;
 	arm::RtxKinematics kin(o.rtx);

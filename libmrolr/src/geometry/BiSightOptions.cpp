@@ -1,9 +1,6 @@
 #include <mrolr/geometry/BiSightOptions.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
-#include <mrpt/config/CConfigFile.h>
-
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -11,63 +8,46 @@ namespace mrolr::geometry
 {
 namespace
 {
-double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                    const std::string& key, double hi)
-{
-	const double v = util::readDouble(cfg, section, key);
-	util::requireInRange(cfg, section, key, v, 1e-12, hi);
-	return v;
-}
+using B = BiSightOptions;
+constexpr double kPositive = 1e-12;  // lengths and focal lengths: strictly positive
+constexpr double kFar_m = 1e3;       // offsets and heights: any the head could have
 
-int readPixels(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-               const std::string& key)
+const util::OptionsBinder<B>& binder()
 {
-	const long v = util::readInt(cfg, section, key);
-	util::requireInRange(cfg, section, key, static_cast<double>(v), 1, 100000);
-	return static_cast<int>(v);
+	static const auto b = util::OptionsBinder<B>()
+	                          .number("interocular_m", &B::interocular_m, kPositive, 10)
+	                          .number("head_height_m", &B::head_height_m, -kFar_m, kFar_m)
+	                          .number("pan_offset_m", &B::pan_offset_m, -kFar_m, kFar_m)
+	                          .number("tilt_offset_m", &B::tilt_offset_m, -kFar_m, kFar_m)
+	                          .number("optic_offset_m", &B::optic_offset_m, -kFar_m, kFar_m)
+	                          .number("focal_px_u", &B::focal_px_u, kPositive, 1e7)
+	                          .number("focal_px_v", &B::focal_px_v, kPositive, 1e7)
+	                          .number("u0_px", &B::u0_px, -1e7, 1e7)
+	                          .number("v0_px", &B::v0_px, -1e7, 1e7)
+	                          .integer("image_width_px", &B::image_width_px, 1, 100000)
+	                          .integer("image_height_px", &B::image_height_px, 1, 100000)
+	                          .number("pan_limit_deg", &B::pan_limit_deg, kPositive, 180)
+	                          .number("tilt_limit_deg", &B::tilt_limit_deg, kPositive, 90)
+	                          .number("vergence_limit_deg", &B::vergence_limit_deg, kPositive, 90);
+	return b;
 }
 }  // namespace
 
 void BiSightOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                         const std::string& section)
 {
-	using util::readDouble;
-	interocular_m = readPositive(cfg, section, "interocular_m", 10);
-	head_height_m = readDouble(cfg, section, "head_height_m");
-	pan_offset_m = readDouble(cfg, section, "pan_offset_m");
-	tilt_offset_m = readDouble(cfg, section, "tilt_offset_m");
-	optic_offset_m = readDouble(cfg, section, "optic_offset_m");
-	focal_px_u = readPositive(cfg, section, "focal_px_u", 1e7);
-	focal_px_v = readPositive(cfg, section, "focal_px_v", 1e7);
-	u0_px = readDouble(cfg, section, "u0_px");
-	v0_px = readDouble(cfg, section, "v0_px");
-	image_width_px = readPixels(cfg, section, "image_width_px");
-	image_height_px = readPixels(cfg, section, "image_height_px");
-	pan_limit_deg = readPositive(cfg, section, "pan_limit_deg", 180);
-	tilt_limit_deg = readPositive(cfg, section, "tilt_limit_deg", 90);
-	vergence_limit_deg = readPositive(cfg, section, "vergence_limit_deg", 90);
+	binder().load(cfg, section, *this);
 }
 
 BiSightOptions BiSightOptions::fromFile(const std::string& path, const std::string& section)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the configuration file");
-	mrpt::config::CConfigFile cfg(path);
-	BiSightOptions o;
-	o.loadFromConfigFile(cfg, section);
-	return o;
+	return util::loadOptionsFile<BiSightOptions>(path, section);
 }
 
 void BiSightOptions::dump(std::ostream& out) const
 {
-	out << std::setprecision(17) << "interocular_m = " << interocular_m
-	    << "\nhead_height_m = " << head_height_m << "\npan_offset_m = " << pan_offset_m
-	    << "\ntilt_offset_m = " << tilt_offset_m << "\noptic_offset_m = " << optic_offset_m
-	    << "\nfocal_px_u = " << focal_px_u << "\nfocal_px_v = " << focal_px_v
-	    << "\nu0_px = " << u0_px << "\nv0_px = " << v0_px << "\nimage_width_px = " << image_width_px
-	    << "\nimage_height_px = " << image_height_px << "\npan_limit_deg = " << pan_limit_deg
-	    << "\ntilt_limit_deg = " << tilt_limit_deg
-	    << "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
+	out << std::setprecision(17);
+	binder().dump(out, *this);
 }
 
 PinholeCamera BiSightOptions::camera() const

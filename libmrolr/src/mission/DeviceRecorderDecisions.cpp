@@ -177,15 +177,15 @@ void DeviceRecorder::recognised(const SearchResult& s, const Eigen::Vector3d& xv
 	std::ostringstream t;
 	t << target.name << " in frame " << (s.frame ? std::to_string(*s.frame) : "none")
 	  << ", confidence " << s.recognition.confidence << ", at the estimate (z, x, phi) ("
-	  << xv.transpose() << "): T_OinC0 (mm) " << rows(s.T_OinC0) << ", T_OinL (mm) "
-	  << rows(s.T_OinL);
+	  << xv.transpose() << "): T_OinC0 (mm) " << rows(s.T_OinC0_mm) << ", T_OinL (mm) "
+	  << rows(s.T_OinL_mm);
 	r.post(io::labelledComment("RECOGNISED", t.str(), r.stamp()));
 	if (!s.frame) return;
 	for (auto it = r.recent.rbegin(); it != r.recent.rend(); ++it)
 		if (it->frame == *s.frame)
 		{
 			const std::string name = "RECOGNISED_" + std::to_string(r.pictures++) + ".png";
-			const cv::Mat picture = recognisedPicture(*it, target, s.T_OinL, r.head.camera());
+			const cv::Mat picture = recognisedPicture(*it, target, s.T_OinL_mm, r.head.camera());
 			r.log.post([picture, name, stamp = r.stamp()](io::ObservationLogWriter& w)
 			           { w.write(*pictureOf("RECOGNISED", picture, name, stamp, w)); });
 			return;

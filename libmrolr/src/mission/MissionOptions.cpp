@@ -27,10 +27,7 @@ mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::strin
                                     const std::string& key, const std::string& base_dir)
 {
 	const auto path = resolve(base_dir, util::readString(cfg, section, key));
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(util::describeKey(cfg, section, key) + ": cannot open '" + path +
-		                        "'");
-	return mrpt::config::CConfigFile(path);
+	return util::openConfigFile(path, util::describeKey(cfg, section, key));
 }
 
 /** Keys that moved out of the mission file: a clear error instead of a silent no-op. */
@@ -123,9 +120,10 @@ void readVisionFile(const CConfigFileBase& cfg, const std::string& dir, MissionO
 	o.vision.loadFromConfigFile(vf, "vision");
 	if (o.navigation.image_nssd_ambiguity_margin >= 0)
 		o.vision.nssd_ambiguity_margin = o.navigation.image_nssd_ambiguity_margin;
-	const auto head = o.slam.head;
-	o.slam.loadFromConfigFile(vf, "slam");
-	o.slam.head = head;
+	slam::SlamOptions filter;  // the vision file's filter alone: its absent keys are defaults
+	filter.loadFromConfigFile(vf, "slam");
+	filter.head = o.slam.head;
+	o.slam = filter;
 }
 }  // namespace
 
@@ -157,9 +155,7 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 
 MissionOptions MissionOptions::load(const std::string& path, const PlanChoice& plan)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError("cannot open mission configuration '" + path + "'");
-	mrpt::config::CConfigFile cfg(path);
+	const mrpt::config::CConfigFile cfg = util::openConfigFile(path);
 	auto o = fromConfig(cfg, fs::path(path).parent_path().string(), plan);
 	o.config_path = path;
 	return o;

@@ -38,7 +38,7 @@ void Mission::Impl::retrieve()
 {
 	r.timeline.beginStage("retrieve");
 	auto reobserve = [&](const Eigen::Isometry3d& T_OinC0_mm) { return reobserveAt(T_OinC0_mm); };
-	Eigen::Isometry3d T_OinW = inW(r.search.T_OinC0, r.search_xv_estimate);
+	Eigen::Isometry3d T_OinW = inW(r.search.T_OinC0_mm, r.search_xv_estimate);
 	const PlanTable* table = tableUnder(o.plan.tables, T_OinW.translation());
 	double top_height_m = table ? table->top_height_m : 0.0;
 	Retrieval retrieval(o, target);

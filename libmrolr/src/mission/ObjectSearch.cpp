@@ -3,7 +3,7 @@
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObjectSearch.h>
 #include <mrolr/mission/TableCoverage.h>
-#include <mrolr/recog/MutualOcclusion.h>
+#include <mrolr/recog/images/MutualOcclusion.h>
 
 #include <chrono>
 #include <cmath>
@@ -61,8 +61,7 @@ ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& targ
 }
 
 recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
-                                                    const Eigen::Vector3d& up_L,
-                                                    const recog::SupportPlane* plane,
+                                                    const recog::SceneContext& context,
                                                     const recog::RecognitionResult& alone) const
 {
 	std::vector<const recog::Recognizer*> recs{&recognizer_};
@@ -70,12 +69,14 @@ recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
 	for (const auto& other : others_)
 	{
 		recs.push_back(&other);
-		first.push_back(other.recognize(view.scene, &up_L, view.images.get(), plane));
+		first.push_back(other.recognize(view.scene, context));
 	}
 	auto search = [&](size_t i, const recog::ImageVerifier& behind)
 	{
 		if (i != 0) return recog::RecognitionResult{};  // only the target is sought behind them
-		return recognizer_.recognize(view.scene, &up_L, &behind, plane);
+		recog::SceneContext behind_them = context;
+		behind_them.images = std::cref(behind);
+		return recognizer_.recognize(view.scene, behind_them);
 	};
 	return recog::searchBehindFound(recs, first, *view.images,
 	                                o_.image_verification.sample_spacing_mm, search)
@@ -109,16 +110,19 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	const Eigen::Isometry3d T_LinC0_mm = toMm(head_.T_LinC0(angles));
 	r.table_plane = recog::estimateTablePlane(view.scene, up_L, expectedTableHeights_mm(T_LinC0_mm));
 	r.table_plane_C0 = planeInC0(r.table_plane.plane, T_LinC0_mm);
-	const recog::SupportPlane* plane = r.table_plane.found ? &r.table_plane.plane : nullptr;
-	r.recognition = recognizer_.recognize(view.scene, &up_L, view.images.get(), plane);
+	recog::SceneContext context;
+	context.up_S = up_L;
+	if (view.images) context.images = std::cref(*view.images);
+	if (r.table_plane.found) context.plane = r.table_plane.plane;
+	r.recognition = recognizer_.recognize(view.scene, context);
 	if (!r.recognition.found && view.images && !others_.empty())
-		r.recognition = behindOthers(view, up_L, plane, r.recognition);
+		r.recognition = behindOthers(view, context, r.recognition);
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found;
 	if (!r.found) return r;
-	r.T_OinL = r.recognition.T_OinS;
-	r.T_OinC0 = T_LinC0_mm * r.T_OinL;
+	r.T_OinL_mm = r.recognition.T_OinS;
+	r.T_OinC0_mm = T_LinC0_mm * r.T_OinL_mm;
 	return r;
 }
 

@@ -2,6 +2,7 @@
 #include <mrolr/arm/GripperPose.h>
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/slam/Chi2.h>
+#include <mrolr/util/JsonOptional.h>
 
 #include <cmath>
 #include <iomanip>
@@ -45,8 +46,8 @@ json graspJson(const RetrievalResult& g)
 	          {"correction_deg", g.correction_deg},
 	          {"correction_applied", g.correction_applied},
 	          {"correction_refused", g.correction_refused},
-	          {"T_OinC0_first_mm", matrix34(g.T_OinC0_first)},
-	          {"T_OinC0_verified_mm", matrix34(g.T_OinC0_verified)},
+	          {"T_OinC0_first_mm", matrix34(g.T_OinC0_first_mm)},
+	          {"T_OinC0_verified_mm", matrix34(g.T_OinC0_verified_mm)},
 	          {"width_closed_mm", g.width_closed_mm},
 	          {"width_lifted_mm", g.width_lifted_mm},
 	          {"held", g.retrieved},
@@ -200,7 +201,7 @@ json tablePlaneJson(const SearchResult& s)
 json posesJson(const SearchResult& s)
 {
 	json out = json::array();
-	const Eigen::Isometry3d T_LinC0 = s.T_OinC0 * s.T_OinL.inverse();
+	const Eigen::Isometry3d T_LinC0 = s.T_OinC0_mm * s.T_OinL_mm.inverse();
 	for (const auto& p : s.recognition.poses)
 		out.push_back({{"T_OinC0_mm", matrix34(T_LinC0 * p.T_OinS)}, {"support", p.support}});
 	return out;
@@ -239,7 +240,7 @@ json robotJson(const MissionResult& r, const MissionOptions& o)
 	          {"path", pathJson(r.path)},
 	          {"map", mapJson(r.map)}};
 	if (r.found)
-		j["recognition"] = {{"T_OinC0_mm", matrix34(r.search.T_OinC0)},
+		j["recognition"] = {{"T_OinC0_mm", matrix34(r.search.T_OinC0_mm)},
 		                    {"frame", r.search.frame ? json(*r.search.frame) : json(nullptr)},
 		                    {"search_estimate_zxphi", vec(r.search_xv_estimate)},
 		                    {"table_plane_C0", tablePlaneJson(r.search)}};
@@ -325,7 +326,7 @@ json reportJson(const MissionResult& r, const MissionOptions& o)
 		                    {"score", r.search.recognition.score},
 		                    {"level", r.search.recognition.level},
 		                    {"views", r.search.views},
-		                    {"T_OinC0_mm", matrix34(r.search.T_OinC0)},
+		                    {"T_OinC0_mm", matrix34(r.search.T_OinC0_mm)},
 		                    {"T_OinC0_true_mm", nullptr},
 		                    {"table_plane", tablePlaneSummary(r.search)},
 		                    {"ambiguous", r.search.recognition.ambiguous},

@@ -206,15 +206,15 @@ RetrievalResult Retrieval::run(const Sighting& first, double table_top_height_m,
                                Timeline& timeline) const
 {
 	RetrievalResult r;
-	r.T_OinC0_first = first.T_OinC0_mm;
-	r.T_OinC0_first.translation().x() += o_.retrieval.inject_pose_error_mm;
+	r.T_OinC0_first_mm = first.T_OinC0_mm;
+	r.T_OinC0_first_mm.translation().x() += o_.retrieval.inject_pose_error_mm;
 	if (o_.retrieval.inject_pose_error_mm != 0)
 		timeline.note("injected pose error " + mm(o_.retrieval.inject_pose_error_mm) +
 		              " along C0's x");
 	{
 		ComputeTimer t(timeline);
-		r.T_OinA = arm::objectInArm(T_C0inA_, r.T_OinC0_first);
-		r.feasible = planGrasp(r, tableZinA(table_top_height_m, r.T_OinC0_first.translation()));
+		r.T_OinA = arm::objectInArm(T_C0inA_, r.T_OinC0_first_mm);
+		r.feasible = planGrasp(r, tableZinA(table_top_height_m, r.T_OinC0_first_mm.translation()));
 	}
 	if (!r.feasible) return r;
 	timeline.note("grasp planned (turned " + std::to_string(r.grasp_turn_deg) + " deg)");
@@ -268,7 +268,7 @@ double Retrieval::swingColumnMm(const RetrievalResult& r, const arm::RtxJoints& 
 arm::RtxJoints Retrieval::viewingJoints(const RetrievalResult& r, const arm::RtxJoints& pre) const
 {
 	if (!self_) return pre;
-	const Eigen::Vector3d p_inC0_m = r.T_OinC0_first * Eigen::Vector3d(0, 0, 30) / 1000.0;
+	const Eigen::Vector3d p_inC0_m = r.T_OinC0_first_mm * Eigen::Vector3d(0, 0, 30) / 1000.0;
 	const double step = std::max(20.0, o_.retrieval.approach_mm);
 	for (double up = 0; pre.d1_mm + up <= o_.rtx.d1_top_mm; up += step)
 	{
@@ -314,7 +314,7 @@ bool Retrieval::reachAndVerify(RetrievalResult& r, hw::ArmDevice& arm, const Reo
 			timeline.note("verification view with the hand " + mm(view.d1_mm - pre->d1_mm) +
 			              " above the pre-grasp, the arm clear of the object");
 		moveStraight(arm, view, timeline);
-		const auto seen = reobserve(r.T_OinC0_first);
+		const auto seen = reobserve(r.T_OinC0_first_mm);
 		if (view.d1_mm != pre->d1_mm) moveStraight(arm, *pre, timeline);
 		if (seen)
 			correct(r, seen->T_OinC0_mm, timeline);
@@ -350,7 +350,7 @@ void Retrieval::correct(RetrievalResult& r, const Eigen::Isometry3d& T_OinC0_mm,
 {
 	ComputeTimer t(timeline);
 	r.verified = true;
-	r.T_OinC0_verified = T_OinC0_mm;
+	r.T_OinC0_verified_mm = T_OinC0_mm;
 	const Eigen::Isometry3d T_OinA = arm::objectInArm(T_C0inA_, T_OinC0_mm);
 	const double turn = nearestTurn(r, T_OinA);
 	const Eigen::Isometry3d T_GinA = T_OinA * graspInObject(turn);

@@ -10,9 +10,9 @@ using detail::angleBetweenDeg;
 Sighting sightingOf(const SearchResult& s)
 {
 	Sighting out;
-	out.T_OinC0_mm = s.T_OinC0;
+	out.T_OinC0_mm = s.T_OinC0_mm;
 	if (!s.recognition.ambiguous) return out;
-	const Eigen::Isometry3d T_LinC0 = s.T_OinC0 * s.T_OinL.inverse();
+	const Eigen::Isometry3d T_LinC0 = s.T_OinC0_mm * s.T_OinL_mm.inverse();
 	for (const auto& p : s.recognition.poses) out.poses_C0_mm.push_back(T_LinC0 * p.T_OinS);
 	return out;
 }

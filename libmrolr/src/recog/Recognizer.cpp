@@ -84,7 +84,7 @@ namespace
 {
 double rankOf(const RecognitionResult& r)
 {
-	return r.image_score >= 0 ? r.image_score + 0.05 * r.score : r.score + 0.05 * r.coverage;
+	return r.image_score ? *r.image_score + 0.05 * r.score : r.score + 0.05 * r.coverage;
 }
 
 /** Smallest expected-visible share of the model's length over cameras 300 mm from the centroid
@@ -104,12 +104,36 @@ double minVisibleShare(const std::vector<Feature>& fs, const SelfOcclusion& occ,
 	return 0.8 * least;
 }
 
-double confidenceOf(double score, size_t level, size_t levels)
+}  // namespace
+
+double cliqueConfidence(double score, int level, size_t levels)
 {
-	const double f = levels > 1 ? static_cast<double>(level) / (levels - 1) : 0.0;
+	const double f = levels > 1 ? static_cast<double>(level - 1) / (levels - 1) : 0.0;
 	return score * (1.0 - 0.5 * f);
 }
-}  // namespace
+
+const char* originName(Origin origin)
+{
+	switch (origin)
+	{
+		case Origin::Clique: return "clique";
+		case Origin::SupportPlane: return "support_plane";
+		case Origin::None: break;
+	}
+	return "none";
+}
+
+double planeConfidence(double image_score)
+{
+	return 0.5 * image_score;
+}
+
+std::optional<Eigen::Vector3d> SceneContext::up() const
+{
+	if (up_S) return up_S;
+	if (plane) return plane->n_S;
+	return std::nullopt;
+}
 
 Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& opts)
     : table_(model, opts.auto_clique_count, opts.auto_clique_size, opts.auto_cliques,
@@ -160,18 +184,25 @@ bool Recognizer::upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d*
 }
 
 RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
-                                               FocusBounds* bounds, const Eigen::Vector3d* up_S,
-                                               const ImageVerifier* images) const
+                                               FocusBounds& bounds,
+                                               const SceneContext& context) const
+{
+	const auto up = context.up();
+	return atLevel(scene, level, bounds, up ? &*up : nullptr,
+	               context.images ? &context.images->get() : nullptr);
+}
+
+RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t level,
+                                      FocusBounds& bounds, const Eigen::Vector3d* up_S,
+                                      const ImageVerifier* images) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
 	best.model = table_.name();
-	best.image_score = images ? 0.0 : -1.0;
+	if (images) best.image_score = 0.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-	FocusBounds own;
-	const auto hyps =
-	    hypothesesAt(tableFor(images != nullptr), os, opts_, p,
-	                 focusFilter(scene, os, level, bounds ? *bounds : own, up_S, images));
+	const auto hyps = hypothesesAt(tableFor(images != nullptr), os, opts_, p,
+	                               focusFilter(scene, os, level, bounds, up_S, images));
 	const auto clusters =
 	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	std::vector<VerifiedPose> verified;
@@ -181,7 +212,7 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 		auto [T, v] =
 		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
 		if (!upright(T, up_S) || (images && v.score < minScore(level, up_S, images))) continue;
-		verified.push_back({T, std::move(v), -1.0, k});
+		verified.push_back({T, std::move(v), std::nullopt, k});
 	}
 	if (images) judgeInImages(verified, *images, os.features, p, up_S);
 	double best_rank = 0;
@@ -194,25 +225,28 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 		best.score = h.v.score;
 		best.coverage = h.v.coverage;
 		best.matched = h.v.matched;
-		best.agreeing_cliques = static_cast<int>(clusters[h.cluster].members.size());
-		best.spread_rot_deg = clusters[h.cluster].spread_rot_deg;
-		best.spread_trans_mm = clusters[h.cluster].spread_trans_mm;
+		best.origin = Origin::Clique;
+		best.agreeing_cliques = static_cast<int>(clusters[h.hypothesis].members.size());
+		best.spread_rot_deg = clusters[h.hypothesis].spread_rot_deg;
+		best.spread_trans_mm = clusters[h.hypothesis].spread_trans_mm;
 	}
-	best.found = images ? best.image_score >= images->options().min_score
+	best.found = images ? *best.image_score >= images->options().min_score
 	                    : best.score >= minScore(level, up_S);
-	if (best.found) markAmbiguity(best, verified);
-	best.level = best.found ? static_cast<int>(level) + 1 : 0;
-	const double s = images ? std::max(0.0, best.image_score) : best.score;
-	best.confidence = best.found ? confidenceOf(s, level, opts_.levels.size()) : 0.0;
+	if (!best.found) return best;
+	markAmbiguity(best, verified);
+	best.level = static_cast<int>(level) + 1;
+	best.confidence = cliqueConfidence(images ? std::max(0.0, *best.image_score) : best.score,
+	                                   *best.level, opts_.levels.size());
 	return best;
 }
 
 RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
-                                        const Eigen::Vector3d* up_S, const ImageVerifier* images,
-                                        const SupportPlane* plane) const
+                                        const SceneContext& context) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
-	if (!up_S && plane) up_S = &plane->n_S;
+	const auto up = context.up();
+	const Eigen::Vector3d* up_S = up ? &*up : nullptr;
+	const ImageVerifier* images = context.images ? &context.images->get() : nullptr;
 	RecognitionResult best;
 	best.model = table_.name();
 	size_t last = opts_.levels.size();
@@ -226,16 +260,18 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = recognizeAtLevel(scene, l, &bounds, up_S, images);
+		RecognitionResult r = atLevel(scene, l, bounds, up_S, images);
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
 	}
-	if (images && plane && opts_.plane.enable && (!best.found || opts_.plane.run_when == "always"))
+	if (images && context.plane && opts_.plane.enable &&
+	    (!best.found || opts_.plane.run_when == PlaneRunWhen::Always))
 	{
-		RecognitionResult r = recognizeOnPlane(scene, *plane, *images);
-		if (r.found ? !best.found || rankOf(r) > rankOf(best)
-		            : !best.found && r.image_score > best.image_score)
+		RecognitionResult r = recognizeOnPlane(scene, *context.plane, *images);
+		const bool better_candidate =
+		    !best.image_score || r.image_score.value_or(0) > *best.image_score;
+		if (r.found ? !best.found || rankOf(r) > rankOf(best) : !best.found && better_candidate)
 			best = r;
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
@@ -289,11 +325,10 @@ double Recognizer::modelLength_mm(size_t level) const
 	return len;
 }
 
-RecognitionResult Recognizer::recognize(const model::WireFrame& scene, const Eigen::Vector3d* up_S,
-                                        const ImageVerifier* images,
-                                        const SupportPlane* plane) const
+RecognitionResult Recognizer::recognize(const model::WireFrame& scene,
+                                        const SceneContext& context) const
 {
-	return recognize(featuresOf(scene), up_S, images, plane);
+	return recognize(featuresOf(scene), context);
 }
 
 RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& scenes) const
@@ -305,7 +340,7 @@ RecognitionResult Recognizer::searchSweep(const std::vector<model::WireFrame>& s
 	{
 		RecognitionResult r = recognize(scenes[i]);
 		if (r.found || r.score > best.score) best = r;
-		if (r.found) best.scene_index = static_cast<int>(i);
+		if (r.found) best.scene_index = static_cast<int>(i);  // r's own is empty
 	}
 	best.ms =
 	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -30,8 +31,8 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
     const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ);
 
 /** Ranking of a verified pose: by its image score when there is one (3D score as tie-break). */
-inline double rankOf(const VerificationResult& v, double image_score)
+inline double rankOf(const VerificationResult& v, const std::optional<double>& image_score)
 {
-	return image_score >= 0 ? image_score + 0.05 * v.score : recog::rankOf(v);
+	return image_score ? *image_score + 0.05 * v.score : recog::rankOf(v);
 }
 }  // namespace mrolr::recog::detail

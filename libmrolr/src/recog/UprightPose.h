@@ -1,7 +1,7 @@
 #pragma once
 // Poses of objects standing upright on the support plane, shared by the plane hypotheses
 // (PlaneHypotheses.cpp, PlaneLimbHypotheses.cpp). Internal header.
-#include <mrolr/recog/SupportPlane.h>
+#include <mrolr/recog/plane/SupportPlane.h>
 
 #include <Eigen/Core>
 

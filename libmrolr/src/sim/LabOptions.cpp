@@ -24,10 +24,7 @@ mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::strin
                                     const std::string& base_dir)
 {
 	const auto path = resolve(base_dir, util::readString(cfg, "files", key));
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(util::describeKey(cfg, "files", key) + ": cannot open '" + path +
-		                        "'");
-	return mrpt::config::CConfigFile(path);
+	return util::openConfigFile(path, util::describeKey(cfg, "files", key));
 }
 
 /** A different noise stream per run: frame k of a run renders with seed + k. */

@@ -1,7 +1,7 @@
 // The simulator's shortcut sensors: ideal landmark angles and exact scene wire-frames.
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/geometry/IdealHead.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SimulatedSensors.h>
 #include <mrolr/util/Config.h>
@@ -97,7 +97,7 @@ bool ExactScenes::originInLeftImage(const Eigen::Vector3d& p_C0,
 
 model::WireFrame ExactScenes::scene(const geometry::HeadAngles& angles)
 {
-	recog::SceneNoise noise;
+	sim::SceneNoise noise;
 	noise.endpoint_sigma_mm = o_.endpoint_sigma_mm;
 	noise.missing_fraction = o_.missing_fraction;
 	noise.fragment_probability = o_.fragment_probability;
@@ -113,8 +113,8 @@ model::WireFrame ExactScenes::scene(const geometry::HeadAngles& angles)
 		if (p.z() <= 0.05 || p.norm() > o_.max_object_range_m) continue;
 		if (!originInLeftImage((T_C0inW.inverse() * T_OinW).translation(), angles)) continue;
 		T_OinL.translation() *= 1000.0;
-		const auto moved = recog::placeInScene(exact_.at(lab_.modelOf(name)), T_OinL);
-		recog::appendWireFrame(out, recog::corruptScene(moved, noise, rng_));
+		const auto moved = sim::placeInScene(exact_.at(lab_.modelOf(name)), T_OinL);
+		sim::appendWireFrame(out, sim::corruptScene(moved, noise, rng_));
 	}
 	return out;
 }

@@ -1,141 +1,114 @@
 #include <mrolr/slam/SlamOptions.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <ostream>
 #include <stdexcept>
 
 namespace mrolr::slam
 {
-using util::readDouble;
-using util::requireInRange;
-
-UpdateMethod parseUpdateMethod(const std::string& name)
+namespace
 {
-	if (name == "sequential") return UpdateMethod::Sequential;
-	if (name == "batch") return UpdateMethod::Batch;
-	if (name == "postponed") return UpdateMethod::Postponed;
-	throw std::invalid_argument("unknown update method '" + name +
-	                            "' (expected sequential, batch or postponed)");
+const util::ChoiceNames<UpdateMethod>& updateMethodNames()
+{
+	static const util::ChoiceNames<UpdateMethod> names = {{"sequential", UpdateMethod::Sequential},
+	                                                      {"batch", UpdateMethod::Batch},
+	                                                      {"postponed", UpdateMethod::Postponed}};
+	return names;
 }
+
+const util::ChoiceNames<JacobianPoint>& jacobianNames()
+{
+	static const util::ChoiceNames<JacobianPoint> names = {
+	    {"standard", JacobianPoint::Standard}, {"first_estimate", JacobianPoint::FirstEstimate}};
+	return names;
+}
+
+template <class E>
+std::string nameOf(const util::ChoiceNames<E>& names, E value)
+{
+	for (const auto& [n, v] : names)
+		if (v == value) return n;
+	return "?";
+}
+}  // namespace
 
 std::string toString(UpdateMethod m)
 {
-	switch (m)
-	{
-		case UpdateMethod::Sequential:
-			return "sequential";
-		case UpdateMethod::Batch:
-			return "batch";
-		case UpdateMethod::Postponed:
-			return "postponed";
-	}
-	return "?";
-}
-
-JacobianPoint parseJacobianPoint(const std::string& name)
-{
-	if (name == "standard") return JacobianPoint::Standard;
-	if (name == "first_estimate") return JacobianPoint::FirstEstimate;
-	throw std::invalid_argument("unknown jacobians '" + name +
-	                            "' (expected standard or first_estimate)");
+	return nameOf(updateMethodNames(), m);
 }
 
 std::string toString(JacobianPoint point)
 {
-	return point == JacobianPoint::FirstEstimate ? "first_estimate" : "standard";
+	return nameOf(jacobianNames(), point);
 }
 
 namespace
 {
-JacobianPoint readJacobians(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
+using H = HeadModelOptions;
+using S = SlamOptions;
+using util::Presence;
+
+const util::OptionsBinder<H>& headBinder()
 {
-	if (!util::hasKey(cfg, s, "jacobians")) return JacobianPoint::Standard;
-	try
-	{
-		return parseJacobianPoint(util::readString(cfg, s, "jacobians"));
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw util::ConfigError(util::describeKey(cfg, s, "jacobians") + ": " + e.what());
-	}
+	static const auto b =
+	    util::OptionsBinder<H>()
+	        .number("interocular_m", [](H& o) -> double& { return o.constants.interocular_m; },
+	                1e-3, 10)
+	        .number("head_height_m", [](H& o) -> double& { return o.constants.head_height_m; },
+	                -10, 10)
+	        .number("pan_limit_deg", &H::pan_limit_deg, 0, 180)
+	        .number("tilt_limit_deg", &H::tilt_limit_deg, 0, 90)
+	        .number("vergence_limit_deg", &H::vergence_limit_deg, 0, 90);
+	return b;
 }
 
-double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
-              const std::string& key, double lo, double hi)
+const util::OptionsBinder<S>& slamBinder()
 {
-	const double v = readDouble(cfg, s, key);
-	requireInRange(cfg, s, key, v, lo, hi);
-	return v;
+	static const auto b =
+	    util::OptionsBinder<S>()
+	        .number("std_pan_rad", &S::std_pan_rad, 1e-9, 1)
+	        .number("std_elevation_rad", &S::std_elevation_rad, 1e-9, 1)
+	        .number("std_vergence_rad", &S::std_vergence_rad, 1e-9, 1)
+	        .choice("update_method", &S::update_method, updateMethodNames())
+	        // FEJ-EKF and the second-order process noise are variants a user may leave out
+	        .choice("jacobians", &S::jacobians, jacobianNames(), Presence::Optional)
+	        .integer("process_noise_order", &S::process_noise_order, 1, 2, Presence::Optional)
+	        .number("gate_probability", &S::gate_probability, 0.5, 1 - 1e-12)
+	        .number("process_noise_floor_m", &S::process_noise_floor_m, 0, 1)
+	        .number("process_noise_floor_rad", &S::process_noise_floor_rad, 0, 1)
+	        .integer("min_visible_features", &S::min_visible_features, 0, 100)
+	        .integer("attempt_window", &S::attempt_window, 1, 1000)
+	        .number("visibility_ratio_min", &S::visibility_ratio_min, 0, 1)
+	        .number("visibility_ratio_max", &S::visibility_ratio_max, 1, 100)
+	        .number("max_view_change_deg", &S::max_view_change_deg, 0, 180)
+	        .number("innovation_volume_sigma", &S::innovation_volume_sigma, 0.1, 10)
+	        .number("head_speed_deg_per_s", &S::head_speed_deg_per_s, 1e-3, 1e4)
+	        .number("saccade_overhead_s", &S::saccade_overhead_s, 0, 100)
+	        .number("step_time_s", &S::step_time_s, 1e-3, 1e4);
+	return b;
 }
 }  // namespace
 
 void HeadModelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                           const std::string& s)
 {
-	constants.interocular_m = readIn(cfg, s, "interocular_m", 1e-3, 10);
-	constants.head_height_m = readIn(cfg, s, "head_height_m", -10, 10);
-	pan_limit_deg = readIn(cfg, s, "pan_limit_deg", 0, 180);
-	tilt_limit_deg = readIn(cfg, s, "tilt_limit_deg", 0, 90);
-	vergence_limit_deg = readIn(cfg, s, "vergence_limit_deg", 0, 90);
+	headBinder().load(cfg, s, *this);
 }
 
 void HeadModelOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "interocular_m = " << constants.interocular_m
-	    << "\nhead_height_m = " << constants.head_height_m << "\npan_limit_deg = " << pan_limit_deg
-	    << "\ntilt_limit_deg = " << tilt_limit_deg
-	    << "\nvergence_limit_deg = " << vergence_limit_deg << "\n";
+	headBinder().dump(out, *this);
 }
 
 void SlamOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
 {
-	std_pan_rad = readIn(cfg, s, "std_pan_rad", 1e-9, 1);
-	std_elevation_rad = readIn(cfg, s, "std_elevation_rad", 1e-9, 1);
-	std_vergence_rad = readIn(cfg, s, "std_vergence_rad", 1e-9, 1);
-	try
-	{
-		update_method = parseUpdateMethod(util::readString(cfg, s, "update_method"));
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw util::ConfigError(util::describeKey(cfg, s, "update_method") + ": " + e.what());
-	}
-	jacobians = readJacobians(cfg, s);
-	process_noise_order = static_cast<int>(util::readInt(cfg, s, "process_noise_order", 1));
-	requireInRange(cfg, s, "process_noise_order", process_noise_order, 1, 2);
-	gate_probability = readIn(cfg, s, "gate_probability", 0.5, 1 - 1e-12);
-	process_noise_floor_m = readIn(cfg, s, "process_noise_floor_m", 0, 1);
-	process_noise_floor_rad = readIn(cfg, s, "process_noise_floor_rad", 0, 1);
-	min_visible_features = static_cast<int>(readIn(cfg, s, "min_visible_features", 0, 100));
-	attempt_window = static_cast<int>(readIn(cfg, s, "attempt_window", 1, 1000));
-	visibility_ratio_min = readIn(cfg, s, "visibility_ratio_min", 0, 1);
-	visibility_ratio_max = readIn(cfg, s, "visibility_ratio_max", 1, 100);
-	max_view_change_deg = readIn(cfg, s, "max_view_change_deg", 0, 180);
-	innovation_volume_sigma = readIn(cfg, s, "innovation_volume_sigma", 0.1, 10);
-	head_speed_deg_per_s = readIn(cfg, s, "head_speed_deg_per_s", 1e-3, 1e4);
-	saccade_overhead_s = readIn(cfg, s, "saccade_overhead_s", 0, 100);
-	step_time_s = readIn(cfg, s, "step_time_s", 1e-3, 1e4);
+	slamBinder().load(cfg, s, *this);
 }
 
 void SlamOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "[slam]\nstd_pan_rad = " << std_pan_rad << "\nstd_elevation_rad = " << std_elevation_rad
-	    << "\nstd_vergence_rad = " << std_vergence_rad
-	    << "\nupdate_method = " << toString(update_method)
-	    << "\njacobians = " << toString(jacobians)
-	    << "\nprocess_noise_order = " << process_noise_order
-	    << "\ngate_probability = " << gate_probability
-	    << "\nprocess_noise_floor_m = " << process_noise_floor_m
-	    << "\nprocess_noise_floor_rad = " << process_noise_floor_rad
-	    << "\nmin_visible_features = " << min_visible_features
-	    << "\nattempt_window = " << attempt_window
-	    << "\nvisibility_ratio_min = " << visibility_ratio_min
-	    << "\nvisibility_ratio_max = " << visibility_ratio_max
-	    << "\nmax_view_change_deg = " << max_view_change_deg
-	    << "\ninnovation_volume_sigma = " << innovation_volume_sigma
-	    << "\nhead_speed_deg_per_s = " << head_speed_deg_per_s
-	    << "\nsaccade_overhead_s = " << saccade_overhead_s << "\nstep_time_s = " << step_time_s
-	    << "\n";
+	out << "[slam]\n";
+	slamBinder().dump(out, *this);
 	head.dumpToTextStream(out);
 }
 

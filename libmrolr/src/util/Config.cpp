@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 namespace mrolr::util
@@ -35,6 +36,14 @@ std::string trim(const std::string& s)
 	throw ConfigError(describeKey(cfg, section, key) + ": " + why);
 }
 }  // namespace
+
+mrpt::config::CConfigFile openConfigFile(const std::string& path, const std::string& named_by)
+{
+	if (!std::ifstream(path).good())
+		throw ConfigError("cannot open '" + path + "'" +
+		                  (named_by.empty() ? std::string() : " (named by " + named_by + ")"));
+	return mrpt::config::CConfigFile(path);
+}
 
 std::string describeKey(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key)

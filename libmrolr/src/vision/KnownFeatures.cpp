@@ -43,9 +43,7 @@ KnownFeature parseEntry(const mrpt::config::CConfigFileBase& cfg, const std::str
 
 std::vector<KnownFeature> loadKnownFeatures(const std::string& path)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the known-features file");
-	mrpt::config::CConfigFile cfg(path);
+	const mrpt::config::CConfigFile cfg = util::openConfigFile(path);
 	std::vector<std::string> keys;
 	cfg.getAllKeys(kSection, keys);
 	std::vector<KnownFeature> out;

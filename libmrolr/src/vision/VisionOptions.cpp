@@ -1,9 +1,7 @@
-#include <mrolr/util/Config.h>
+// [vision]: its keys declared once (util/OptionsBinder.h).
+#include <mrolr/util/OptionsBinder.h>
 #include <mrolr/vision/VisionOptions.h>
 
-#include <mrpt/config/CConfigFile.h>
-
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -11,79 +9,58 @@ namespace mrolr::vision
 {
 namespace
 {
-double readIn(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-              const std::string& key, double lo, double hi)
-{
-	const double v = util::readDouble(cfg, section, key);
-	util::requireInRange(cfg, section, key, v, lo, hi);
-	return v;
-}
+using V = VisionOptions;
 
-int readIntIn(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-              const std::string& key, long lo, long hi)
+const util::OptionsBinder<V>& binder()
 {
-	const long v = util::readInt(cfg, section, key);
-	util::requireInRange(cfg, section, key, static_cast<double>(v), lo, hi);
-	return static_cast<int>(v);
+	static const auto b =
+	    util::OptionsBinder<V>()
+	        .integer("patch_size_px", &V::patch_size_px, 3, 101)
+	        .number("nssd_threshold", &V::nssd_threshold, 1e-6, 4)
+	        // 0 (absent): no ambiguity test, the thesis's matcher
+	        .number("nssd_ambiguity_margin", &V::nssd_ambiguity_margin, 0, 4,
+	                util::Presence::Optional)
+	        .number("search_n_sigma", &V::search_n_sigma, 0.1, 20)
+	        .number("epipolar_band_px", &V::epipolar_band_px, 0, 1000)
+	        .number("epipolar_min_depth_m", &V::epipolar_min_depth_m, 1e-3, 1e6)
+	        .number("epipolar_max_depth_m", &V::epipolar_max_depth_m, 1e-3, 1e6)
+	        .number("min_corner_eigenvalue", &V::min_corner_eigenvalue, 0, 1e6)
+	        .number("lockon_radius_px", &V::lockon_radius_px, 0, 1000)
+	        .integer("fixation_max_attempts", &V::fixation_max_attempts, 1, 100)
+	        .number("fixation_search_radius_px", &V::fixation_search_radius_px, 1, 10000)
+	        .number("pixel_sigma_px", &V::pixel_sigma_px, 1e-6, 1000)
+	        .number("acquire_pan_deg", &V::acquire_pan_deg, 0, 180)
+	        .number("acquire_tilt_deg", &V::acquire_tilt_deg, -90, 90)
+	        .integer("acquire_box_px", &V::acquire_box_px, 3, 100000)
+	        .integer("known_search_box_px", &V::known_search_box_px, 1, 100000)
+	        .choice("selection", &V::selection,
+	                util::ChoiceNames<Selection>{{"largest_vs", Selection::LargestVs},
+	                                             {"saccade", Selection::Saccade}});
+	return b;
 }
 }  // namespace
 
 void VisionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	patch_size_px = readIntIn(cfg, section, "patch_size_px", 3, 101);
+	binder().load(cfg, section, *this);
 	if (patch_size_px % 2 == 0)
 		throw util::ConfigError(util::describeKey(cfg, section, "patch_size_px") +
 		                        ": must be odd (a centre pixel)");
-	nssd_threshold = readIn(cfg, section, "nssd_threshold", 1e-6, 4);
-	nssd_ambiguity_margin = util::readDouble(cfg, section, "nssd_ambiguity_margin", 0.0);
-	util::requireInRange(cfg, section, "nssd_ambiguity_margin", nssd_ambiguity_margin, 0, 4);
-	search_n_sigma = readIn(cfg, section, "search_n_sigma", 0.1, 20);
-	epipolar_band_px = readIn(cfg, section, "epipolar_band_px", 0, 1000);
-	epipolar_min_depth_m = readIn(cfg, section, "epipolar_min_depth_m", 1e-3, 1e6);
-	epipolar_max_depth_m = readIn(cfg, section, "epipolar_max_depth_m", epipolar_min_depth_m, 1e6);
-	min_corner_eigenvalue = readIn(cfg, section, "min_corner_eigenvalue", 0, 1e6);
-	lockon_radius_px = readIn(cfg, section, "lockon_radius_px", 0, 1000);
-	fixation_max_attempts = readIntIn(cfg, section, "fixation_max_attempts", 1, 100);
-	fixation_search_radius_px = readIn(cfg, section, "fixation_search_radius_px", 1, 10000);
-	pixel_sigma_px = readIn(cfg, section, "pixel_sigma_px", 1e-6, 1000);
-	acquire_pan_deg = readIn(cfg, section, "acquire_pan_deg", 0, 180);
-	acquire_tilt_deg = readIn(cfg, section, "acquire_tilt_deg", -90, 90);
-	acquire_box_px = readIntIn(cfg, section, "acquire_box_px", patch_size_px, 100000);
-	known_search_box_px = readIntIn(cfg, section, "known_search_box_px", 1, 100000);
-	const std::string sel = util::readString(cfg, section, "selection");
-	if (sel != "largest_vs" && sel != "saccade")
-		throw util::ConfigError(util::describeKey(cfg, section, "selection") + " = '" + sel +
-		                        "': expected largest_vs or saccade");
-	selection = sel == "saccade" ? Selection::Saccade : Selection::LargestVs;
+	util::requireInRange(cfg, section, "epipolar_max_depth_m", epipolar_max_depth_m,
+	                     epipolar_min_depth_m, 1e6);
+	util::requireInRange(cfg, section, "acquire_box_px", acquire_box_px, patch_size_px, 100000);
 }
 
 VisionOptions VisionOptions::fromFile(const std::string& path, const std::string& section)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError(path + ": cannot open the configuration file");
-	mrpt::config::CConfigFile cfg(path);
-	VisionOptions o;
-	o.loadFromConfigFile(cfg, section);
-	return o;
+	return util::loadOptionsFile<VisionOptions>(path, section);
 }
 
 void VisionOptions::dump(std::ostream& out) const
 {
-	out << std::setprecision(17) << "patch_size_px = " << patch_size_px
-	    << "\nnssd_threshold = " << nssd_threshold
-	    << "\nnssd_ambiguity_margin = " << nssd_ambiguity_margin
-	    << "\nsearch_n_sigma = " << search_n_sigma << "\nepipolar_band_px = " << epipolar_band_px
-	    << "\nepipolar_min_depth_m = " << epipolar_min_depth_m
-	    << "\nepipolar_max_depth_m = " << epipolar_max_depth_m
-	    << "\nmin_corner_eigenvalue = " << min_corner_eigenvalue
-	    << "\nlockon_radius_px = " << lockon_radius_px
-	    << "\nfixation_max_attempts = " << fixation_max_attempts
-	    << "\nfixation_search_radius_px = " << fixation_search_radius_px
-	    << "\npixel_sigma_px = " << pixel_sigma_px << "\nacquire_pan_deg = " << acquire_pan_deg
-	    << "\nacquire_tilt_deg = " << acquire_tilt_deg << "\nacquire_box_px = " << acquire_box_px
-	    << "\nknown_search_box_px = " << known_search_box_px
-	    << "\nselection = " << (selection == Selection::Saccade ? "saccade" : "largest_vs") << "\n";
+	out << std::setprecision(17);
+	binder().dump(out, *this);
 }
 
 }  // namespace mrolr::vision

@@ -16,7 +16,7 @@
 
 #include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/WireFrame.h>
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/stereo/SceneReconstruction.h>
 
@@ -26,6 +26,7 @@
 
 #include <memory>
 #include <ostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,7 +101,7 @@ struct ViewRegistration
 	double turn_deg = 0;
 	bool view_is_model = false;  ///< the view was the recogniser's model (else its scene)
 	double score = 0;            ///< recogniser's verified score
-	int level = 0;               ///< recogniser's level (1-based)
+	std::optional<int> level;    ///< the recogniser's clique level (1-based) when registered
 	/** Error against the known angle, modulo the object's symmetry: rotation angle (deg) and
 	 * displacement of the view's centroid (mm) of S⁻¹ · T_VinM · T_trueᵀ, T_true = Rz(−angle) and
 	 * S the turn by symmetry_deg. */

@@ -138,9 +138,9 @@ struct EvalCase
 	bool found = false, correct = false;         ///< correct: found and within the error limits
 	double rot_err_deg = -1, trans_err_mm = -1;  ///< -1 unless present and found
 	double score = 0, truth_score = 0;  ///< verified score found / at the true pose (present)
-	/** Image score (recog::ImageVerifier) found / at the true pose; -1 without images. */
-	double image_score = -1, truth_image_score = -1;
-	int level = 0;
+	/** Image score (recog::ImageVerifier) found / at the true pose; empty without images. */
+	std::optional<double> image_score, truth_image_score;
+	std::optional<int> level;  ///< the clique level that recognised (1-based), as the result's
 	int levels_skipped = 0;  ///< levels the support bound skipped
 	double score_bound = 0;  ///< SupportBound over the coarsest level's model length
 	double ms = 0;
@@ -148,12 +148,12 @@ struct EvalCase
 };
 
 /** Searches @p rec's model in @p s and compares with the truth (@p symmetry_deg of the model's
- * object, from symmetryAnglesDeg). @p images: the scene's stereo pair for image verification, or
- * null (3D verification only); @p plane: the support plane (s.plane_L), or null. */
+ * object, from symmetryAnglesDeg). The search knows the scene's up direction (s.up_L) and what
+ * @p context adds: the scene's stereo pair for image verification, its support plane (s.plane_L).
+ */
 EvalCase evaluateCase(const recog::Recognizer& rec, const EvalScene& s,
                       const std::vector<double>& symmetry_deg, const EvaluationOptions& opts,
-                      const recog::ImageVerifier* images = nullptr,
-                      const recog::SupportPlane* plane = nullptr);
+                      const recog::SceneContext& context);
 
 /** The figures of a set of cases. */
 struct EvalSummary

@@ -20,7 +20,7 @@ class DecisionLog
 	/** A navigation measurement from images: the selected feature, its search ellipses, the
 	 * match, accepted or refused and its NIS (thesis 5.5–5.7). */
 	virtual void measurement(const vision::CycleRecord& c) = 0;
-	/** The object recognised (@p r.T_OinL, T_OinC0, mm) at the estimate @p xv_estimate, with
+	/** The object recognised (@p r.T_OinL_mm, T_OinC0_mm) at the estimate @p xv_estimate, with
 	 * the model @p target that was recognised. */
 	virtual void recognised(const SearchResult& r, const Eigen::Vector3d& xv_estimate,
 	                        const model::WireFrame& target) = 0;

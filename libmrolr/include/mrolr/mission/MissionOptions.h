@@ -17,7 +17,7 @@
 #include <mrolr/mission/ObstacleOptions.h>
 #include <mrolr/mission/PlaceOptions.h>
 #include <mrolr/mission/Plan.h>
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/slam/SlamOptions.h>
 #include <mrolr/stereo/SceneReconstruction.h>

@@ -10,7 +10,7 @@
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
-#include <mrolr/recog/TablePlaneEstimate.h>
+#include <mrolr/recog/plane/TablePlaneEstimate.h>
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -28,11 +28,11 @@ struct SearchResult
 	bool found = false;
 	recog::RecognitionResult recognition;
 	geometry::HeadAngles angles;  ///< head angles of the view that recognised
-	Eigen::Isometry3d T_OinL = Eigen::Isometry3d::Identity();   ///< recognised, mm
-	Eigen::Isometry3d T_OinC0 = Eigen::Isometry3d::Identity();  ///< recognised, mm
+	Eigen::Isometry3d T_OinL_mm = Eigen::Isometry3d::Identity();   ///< recognised
+	Eigen::Isometry3d T_OinC0_mm = Eigen::Isometry3d::Identity();  ///< recognised
 	/** The camera frame of the view (hw::StereoImages::frame); none for a simulated scene. */
 	std::optional<uint64_t> frame;
-	/** The table top estimated from the view's scene (recog/TablePlaneEstimate.h), and the same
+	/** The table top estimated from the view's scene (recog/plane/TablePlaneEstimate.h), and the same
 	 * plane in C0 (mm): given to the recogniser with the up direction. */
 	recog::TablePlaneEstimate table_plane;
 	recog::SupportPlane table_plane_C0;
@@ -93,8 +93,8 @@ class ObjectSearch
 
 	/** The target sought again behind the other models found in @p view ([search]
 	 * behind_found); @p alone: its recognition without them. */
-	recog::RecognitionResult behindOthers(const SearchView& view, const Eigen::Vector3d& up_L,
-	                                      const recog::SupportPlane* plane,
+	recog::RecognitionResult behindOthers(const SearchView& view,
+	                                      const recog::SceneContext& context,
 	                                      const recog::RecognitionResult& alone) const;
 
 	const MissionOptions& o_;

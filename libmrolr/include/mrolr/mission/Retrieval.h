@@ -75,9 +75,9 @@ struct RetrievalResult
 	std::vector<arm::RtxJoints> correction_route;
 	/** The object pose (C0, mm) the grasp was first planned on (recognised, plus any injected
 	 * error) and the one the verification recognised. */
-	Eigen::Isometry3d T_OinC0_first = Eigen::Isometry3d::Identity();
-	Eigen::Isometry3d T_OinC0_verified = Eigen::Isometry3d::Identity();
-	/** The stereo pair T_OinC0_first was recognised in (C0 of that moment, which the base keeps
+	Eigen::Isometry3d T_OinC0_first_mm = Eigen::Isometry3d::Identity();
+	Eigen::Isometry3d T_OinC0_verified_mm = Eigen::Isometry3d::Identity();
+	/** The stereo pair T_OinC0_first_mm was recognised in (C0 of that moment, which the base keeps
 	 * until the lift); none for a simulated scene. */
 	std::optional<uint64_t> frame;
 	double width_closed_mm = 0;  ///< jaw distance right after closing

@@ -2,7 +2,7 @@
 /** The seven matching parameters of thesis 6.3.2 / paper 3.2 and their fine-to-coarse schedule of
  * thesis 6.4 (12 levels by default), read from config/recognition.ini. */
 
-#include <mrolr/recog/PlaneHypothesisOptions.h>
+#include <mrolr/recog/plane/PlaneHypothesisOptions.h>
 
 #include <mrpt/config/CConfigFileBase.h>
 

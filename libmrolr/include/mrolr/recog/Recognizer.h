@@ -6,19 +6,21 @@
  * answer carries a confidence and an absent object is reported as not found. */
 
 #include <mrolr/recog/CliqueMatcher.h>
-#include <mrolr/recog/ImageVerifier.h>
 #include <mrolr/recog/ModelTable.h>
-#include <mrolr/recog/PlaneHypotheses.h>
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/recog/SelfOcclusion.h>
-#include <mrolr/recog/SupportPlane.h>
 #include <mrolr/recog/SupportBound.h>
 #include <mrolr/recog/Verification.h>
+#include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
+#include <mrolr/recog/plane/SupportPlane.h>
 
 #include <Eigen/Geometry>
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,28 +34,46 @@ struct PoseSupport
 	double support = 0;
 };
 
+/** Where an answer (or, when nothing was found, the best candidate) came from. */
+enum class Origin
+{
+	None,         ///< no hypothesis was verified
+	Clique,       ///< a cluster of clique transforms at one of the levels (thesis 6.3)
+	SupportPlane  ///< a single scene feature on the support plane (PlaneHypotheses.h)
+};
+
+/** "none", "clique" or "support_plane", for reports. */
+const char* originName(Origin origin);
+
+/** The confidence of a clique answer: its score (the image score when verified in images) ×
+ * (1 − 0.5 (level − 1)/(levels − 1)), level 1-based: a coarser level accepts looser matches. */
+double cliqueConfidence(double score, int level, size_t levels);
+/** The confidence of a support-plane answer: half its image score. One scene feature made the
+ * hypothesis, where a clique answer rests on several that agree. */
+double planeConfidence(double image_score);
+
 struct RecognitionResult
 {
 	std::string model;
 	bool found = false;
+	Origin origin = Origin::None;
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< model → scene frame (mm)
 	double score = 0;       ///< verified fraction of the model's length supported by the scene
 	double coverage = 0;    ///< supported length / length of the model features with support
 	int matched = 0;        ///< model features supported in the scene
-	int level = 0;          ///< 1-based level that recognised (0 when not found)
-	double confidence = 0;  ///< score × (1 − 0.5 (level − 1)/(levels − 1)); 0 when not found
+	/** The 1-based level whose clique recognised; empty when not found or from the plane. */
+	std::optional<int> level;
+	/** cliqueConfidence() or planeConfidence() of a found answer; 0 when not found. */
+	double confidence = 0;
 	int agreeing_cliques = 0;    ///< clique transforms in the winning cluster
 	double spread_rot_deg = 0;   ///< RMS spread of those transforms (deg)
 	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
-	int scene_index = -1;        ///< which scene of a sweep held it (-1 when not found)
+	std::optional<int> scene_index;  ///< which scene of a sweep held it (searchSweep, found)
 	double ms = 0;               ///< wall time of the search (ms)
 	int levels_skipped = 0;      ///< levels skipped: SupportBound says they cannot verify
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
-	 * model edge samples on image edges), which decided acceptance; -1 without images. */
-	double image_score = -1;
-	/** The answer's pose came from a single-feature hypothesis on the support plane
-	 * (PlaneHypotheses.h; level is then options().levels.size() + 1), not from a clique. */
-	bool from_plane = false;
+	 * model edge samples on image edges), which decided acceptance; empty without images. */
+	std::optional<double> image_score;
 	/** Found in the second search of mutual occlusion (MutualOcclusion.h): this many recognised
 	 * objects' regions were left out of the image score. 0: found without them. */
 	int occluders = 0;
@@ -62,6 +82,27 @@ struct RecognitionResult
 	 * best (T_OinS) first; empty when not ambiguous. */
 	bool ambiguous = false;
 	std::vector<PoseSupport> poses;
+};
+
+/** What is known of a scene besides its features; each part is optional.
+ * - up_S: the scene's up direction (unit, scene frame); poses tilted more than
+ *   RecognitionOptions::upright_max_tilt_deg from it are rejected. Without it a support plane's
+ *   normal is the up direction.
+ * - images: the stereo pair the scene was reconstructed from (scene frame = left camera L). With
+ *   it the 3D score is only a pre-filter (ImageVerificationOptions::prefilter_score) and a
+ *   hypothesis is accepted, and ranked, by its image score (min_score); the scene's features
+ *   still generate the hypotheses.
+ * - plane: the support plane the objects stand on (scene frame). With images and
+ *   RecognitionOptions::plane.enable, single scene features on it make further hypotheses
+ *   (Recognizer::recognizeOnPlane) after the levels, the better-ranked answer kept. */
+struct SceneContext
+{
+	std::optional<Eigen::Vector3d> up_S;
+	std::optional<std::reference_wrapper<const ImageVerifier>> images;
+	std::optional<SupportPlane> plane;
+
+	/** The up direction in force: up_S, else the plane's normal, else none. */
+	std::optional<Eigen::Vector3d> up() const;
 };
 
 class Recognizer
@@ -74,26 +115,13 @@ class Recognizer
 	/** Runs the levels fine to coarse on one scene; after the first level that recognises, runs
 	 * options().confirm_levels more and keeps the best-ranked answer (a coarser level can find the
 	 * clique that a nearly symmetric object's true pose needs). With skip_hopeless_levels, levels
-	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run.
-	 * @p up_S: the scene's up direction (unit, scene frame) when known; poses tilted more than
-	 * options().upright_max_tilt_deg from it are rejected.
-	 * @p images: the stereo pair the scene was reconstructed from (scene frame = left camera L),
-	 * or null. With images the 3D score is only a pre-filter (images->options().prefilter_score)
-	 * and a hypothesis is accepted, and ranked, by its image score (images->options().min_score);
-	 * the scene's features still generate the hypotheses.
-	 * @p plane: the support plane the objects stand on (scene frame), or null. With images and
-	 * options().plane.enable, single scene features on it make further hypotheses
-	 * (recognizeOnPlane) after the levels, the better-ranked answer kept (options().plane.run_when
-	 * "always"; "not_found": only when the levels found nothing).
-	 * Without @p up_S its normal is the up direction. */
-	RecognitionResult recognize(const model::WireFrame& scene,
-	                            const Eigen::Vector3d* up_S = nullptr,
-	                            const ImageVerifier* images = nullptr,
-	                            const SupportPlane* plane = nullptr) const;
+	 * whose verify_min_score no pose can reach (SupportBound, computed once) are not run. Then,
+	 * with images and a plane in @p context, the support-plane hypotheses
+	 * (options().plane.run_when: always, or only when the levels found nothing). */
 	RecognitionResult recognize(const std::vector<Feature>& scene,
-	                            const Eigen::Vector3d* up_S = nullptr,
-	                            const ImageVerifier* images = nullptr,
-	                            const SupportPlane* plane = nullptr) const;
+	                            const SceneContext& context = {}) const;
+	RecognitionResult recognize(const model::WireFrame& scene,
+	                            const SceneContext& context = {}) const;
 
 	/** Hypotheses from single scene features on @p plane (PlaneHypothesisGenerator), ranked by a
 	 * quick image score (options().plane.prerank_spacing_mm), the best options().plane
@@ -114,12 +142,11 @@ class Recognizer
 	};
 
 	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's
-	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene; @p up_S
-	 * and @p images as in recognize(). */
+	 * verify_min_score. @p bounds: focus bounds shared between the levels of one scene (start
+	 * with an empty one); @p context's up direction and images as in recognize() (not its plane).
+	 */
 	RecognitionResult recognizeAtLevel(const std::vector<Feature>& scene, size_t level,
-	                                   FocusBounds* bounds = nullptr,
-	                                   const Eigen::Vector3d* up_S = nullptr,
-	                                   const ImageVerifier* images = nullptr) const;
+	                                   FocusBounds& bounds, const SceneContext& context) const;
 
 	/** Thesis 6.4: scene models of a pan sweep in order; the first scene where the object is
 	 * recognised ends the search. */
@@ -127,7 +154,10 @@ class Recognizer
 
 	/** True when no up direction is given or the pose's model +z is within
 	 * options().upright_max_tilt_deg of @p up_S. */
-	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;
+	bool upright(const Eigen::Isometry3d& T_OinS, const std::optional<Eigen::Vector3d>& up_S) const
+	{
+		return upright(T_OinS, up_S ? &*up_S : nullptr);
+	}
 
 	/** SupportBound of the scene for the most permissive verification tolerances of all levels
 	 * (mm of model length). */
@@ -149,23 +179,30 @@ class Recognizer
 	/** edgeSamples(@p spacing_mm) with their sight against selfOcclusion(): built on the first
 	 * call for each spacing and kept (thread-safe; shared by copies of this Recognizer). */
 	const SightedSamples& sightedSamples(double spacing_mm) const;
-	/** The self-occlusion verification uses with the scene up direction @p up_S: the model's
-	 * when options().verify_visible_only and an upright prior is set, else nullptr. */
-	const SelfOcclusion* occlusion(const Eigen::Vector3d* up_S) const { return occlusionFor(up_S); }
+	/** The self-occlusion the 3D verification uses with the scene up direction @p up_S: the
+	 * model's when options().verify_visible_only and an upright prior is set, else none. */
+	const SelfOcclusion* occlusion(const std::optional<Eigen::Vector3d>& up_S) const
+	{
+		return occlusionFor(up_S ? &*up_S : nullptr);
+	}
 	/** The model's self-occlusion, always built: image verification hides the back edges with it
 	 * whether or not the 3D score does. */
 	const SelfOcclusion& selfOcclusion() const { return *occlusion_; }
 	const RecognitionOptions& options() const { return opts_; }
 
  private:
-	/** A cluster's pose after 3D verification (and its image score, -1 without images). */
+	/** A hypothesis's pose after 3D verification, and its image score once judged in images. */
 	struct VerifiedPose
 	{
 		Eigen::Isometry3d T;
 		VerificationResult v;
-		double image = -1;
-		size_t cluster = 0;
+		std::optional<double> image;
+		size_t hypothesis = 0;  ///< the clique cluster or plane hypothesis it came from
 	};
+	// Internally an absent up direction or image pair is a null pointer.
+	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;
+	RecognitionResult atLevel(const std::vector<Feature>& scene, size_t level, FocusBounds& bounds,
+	                          const Eigen::Vector3d* up_S, const ImageVerifier* images) const;
 	/** Marks @p best ambiguous when another of @p poses is a near-equal rival (not a symmetry). */
 	void markAmbiguity(RecognitionResult& best, const std::vector<VerifiedPose>& poses) const;
 	/** True when the model's edges under @p a and @p b coincide within ambiguity_symmetry_mm. */

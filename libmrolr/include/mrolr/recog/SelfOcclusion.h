@@ -8,7 +8,7 @@
  * it passes through that polytope shrunk by a margin. Model frame, millimetres. */
 
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/Limbs.h>
+#include <mrolr/recog/images/Limbs.h>
 
 #include <Eigen/Core>
 

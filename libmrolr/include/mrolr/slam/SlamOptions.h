@@ -20,9 +20,7 @@ enum class UpdateMethod
 	Postponed    ///< Davison's postponed update while one feature is tracked (appendix C)
 };
 
-/** "sequential" | "batch" | "postponed"; throws std::invalid_argument naming the value otherwise.
- */
-UpdateMethod parseUpdateMethod(const std::string& name);
+/** "sequential" | "batch" | "postponed", as the key update_method names it. */
 std::string toString(UpdateMethod method);
 
 /** Where the filter evaluates its Jacobians. */
@@ -33,8 +31,7 @@ enum class JacobianPoint
 	               ///< propagated estimates, measurement Jacobians at each feature's first estimate
 };
 
-/** "standard" | "first_estimate"; throws std::invalid_argument naming the value otherwise. */
-JacobianPoint parseJacobianPoint(const std::string& name);
+/** "standard" | "first_estimate", as the key jacobians names it. */
 std::string toString(JacobianPoint point);
 
 /** Head constants and joint limits, from the head's section (keys as in config/bisight.ini). */

@@ -3,6 +3,7 @@
  * so that a missing or malformed key is reported with the file, the section and the key, instead of
  * MRPT's silent default of 0 for unparsable numbers. */
 
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <stdexcept>
@@ -17,6 +18,11 @@ class ConfigError : public std::runtime_error
    public:
 	using std::runtime_error::runtime_error;
 };
+
+/** The `.ini` file @p path, which must be readable (MRPT's CConfigFile reads a missing file as an
+ * empty one); ConfigError "cannot open 'PATH'", with " (named by WHAT)" when @p named_by says
+ * which key or option gave the path. */
+mrpt::config::CConfigFile openConfigFile(const std::string& path, const std::string& named_by = "");
 
 /** "FILE [SECTION] KEY" for messages; FILE is "<memory>" for a CConfigFileMemory. */
 std::string describeKey(

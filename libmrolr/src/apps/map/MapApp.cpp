@@ -22,8 +22,7 @@ namespace fs = std::filesystem;
 /** The mission file with the overrides written in (never saved). */
 mrpt::config::CConfigFile configWith(const std::string& path, const std::vector<std::string>& sets)
 {
-	if (!std::ifstream(path).good()) throw util::ConfigError("cannot open '" + path + "'");
-	mrpt::config::CConfigFile cfg(path);
+	mrpt::config::CConfigFile cfg = util::openConfigFile(path);
 	for (const auto& s : sets)
 	{
 		const auto eq = s.find('='), dot = s.rfind('.', eq);

@@ -151,9 +151,7 @@ namespace
 mrpt::config::CConfigFile openWithOverrides(const std::string& path,
                                             const std::vector<std::string>& overrides)
 {
-	if (!std::ifstream(path).good())
-		throw util::ConfigError("cannot open mission configuration '" + path + "'");
-	mrpt::config::CConfigFile cfg(path);
+	mrpt::config::CConfigFile cfg = util::openConfigFile(path);
 	for (const auto& o : overrides)
 		if (!isPlanOverride(o))
 		{

@@ -3,6 +3,7 @@
 #include <mrolr/model/ModelStats.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/util/Cli.h>
+#include <mrolr/util/JsonOptional.h>
 
 #include <mrpt/config/CConfigFile.h>
 

@@ -14,7 +14,7 @@ std::string notRecognised(const recog::RecognitionResult& r)
 {
 	std::ostringstream s;
 	s << "not recognised (best score " << r.score;
-	if (r.image_score >= 0) s << ", image score " << r.image_score;
+	if (r.image_score) s << ", image score " << *r.image_score;
 	s << ")";
 	return s.str();
 }
@@ -30,17 +30,17 @@ void take(ViewRegistration& r, const recog::RecognitionResult& res, const Eigen:
 void matchShorter(ViewRegistration& r, const AlignView& view, const model::WireFrame& acc_M,
                   const AlignContext& c)
 {
-	const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  // the turntable's +z in T and in M
-	const Eigen::Vector3d* up_S = c.align.upright_prior ? &up : nullptr;
+	recog::SceneContext up;  // the turntable's +z in T and in M
+	if (c.align.upright_prior) up.up_S = Eigen::Vector3d::UnitZ();
 	r.view_is_model = model::totalLength(view.wf_T) <= model::totalLength(acc_M);
 	if (r.view_is_model)
 	{
-		const auto res = recog::Recognizer(view.wf_T, c.recognition).recognize(acc_M, up_S);
+		const auto res = recog::Recognizer(view.wf_T, c.recognition).recognize(acc_M, up);
 		take(r, res, res.T_OinS);
 	}
 	else
 	{
-		const auto res = recog::Recognizer(acc_M, c.recognition).recognize(view.wf_T, up_S);
+		const auto res = recog::Recognizer(acc_M, c.recognition).recognize(view.wf_T, up);
 		take(r, res, res.T_OinS.inverse());
 	}
 }
@@ -54,9 +54,10 @@ void matchInImages(ViewRegistration& r, const AlignView& view, const model::Wire
 	const auto scene_L =
 	    model::transformWireFrame(view.wf_T, T_TinL, model::WireFrameFrame::LeftCamera);
 	const Eigen::Vector3d up_L = T_TinL.linear() * Eigen::Vector3d::UnitZ();
-	const auto res =
-	    recog::Recognizer(acc_M, c.recognition)
-	        .recognize(scene_L, c.align.upright_prior ? &up_L : nullptr, view.images.get());
+	recog::SceneContext context;
+	if (c.align.upright_prior) context.up_S = up_L;
+	context.images = std::cref(*view.images);
+	const auto res = recog::Recognizer(acc_M, c.recognition).recognize(scene_L, context);
 	// p_L = T_MinL · p_M and p_T = T_LinT · p_L
 	take(r, res, (c.T_LinT_mm * res.T_OinS).inverse());
 }

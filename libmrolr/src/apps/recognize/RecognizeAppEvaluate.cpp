@@ -4,6 +4,7 @@
 #include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/util/Cli.h>
+#include <mrolr/util/JsonOptional.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
@@ -12,7 +13,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <ostream>
+#include <sstream>
 
 namespace mrolr::apps
 {
@@ -20,6 +23,16 @@ namespace fs = std::filesystem;
 
 namespace
 {
+/** The value, or "-" when there is none (no images, not found). */
+template <class T>
+std::string orDash(const std::optional<T>& v)
+{
+	if (!v) return "-";
+	std::ostringstream s;
+	s << std::fixed << std::setprecision(2) << *v;
+	return s.str();
+}
+
 nlohmann::json caseJson(const eval::EvalCase& c)
 {
 	return {{"scene", c.scene},
@@ -35,7 +48,7 @@ nlohmann::json caseJson(const eval::EvalCase& c)
 	        {"image_score", c.image_score},
 	        {"truth_image_score", c.truth_image_score},
 	        {"level", c.level},
-	        {"from_plane", c.result.from_plane},
+	        {"origin", recog::originName(c.result.origin)},
 	        {"occluders", c.result.occluders},
 	        {"ambiguous", c.result.ambiguous},
 	        {"levels_skipped", c.levels_skipped},
@@ -140,11 +153,12 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 			out << "scene " << c.scene << " " << c.model << (c.present ? "" : " (absent)")
 			    << ": visible " << c.visible_fraction << ", "
 			    << (c.found ? (c.correct ? "found" : "WRONG") : "not found")
-			    << (c.found && c.result.from_plane ? " (plane)" : "")
+			    << (c.found && c.result.origin == recog::Origin::SupportPlane ? " (plane)" : "")
 			    << (c.found && c.result.occluders ? " (behind found)" : "")
 			    << (c.found && c.result.ambiguous ? " (ambiguous)" : "") << ", score " << c.score
-			    << " (at truth " << c.truth_score << "), image " << c.image_score << " (at truth "
-			    << c.truth_image_score << "), level " << c.level << ", err " << c.rot_err_deg
+			    << " (at truth " << c.truth_score << "), image " << orDash(c.image_score)
+			    << " (at truth " << orDash(c.truth_image_score) << "), level " << orDash(c.level)
+			    << ", err " << c.rot_err_deg
 			    << " deg " << c.trans_err_mm << " mm, " << c.ms << " ms\n";
 	const auto& s = eval_summary;
 	out << "recognised " << s.recognised << "/" << s.rate_cases << " (" << 100 * s.rate

@@ -9,9 +9,9 @@
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include <mrolr/recog/MutualOcclusion.h>
-#include <mrolr/recog/SyntheticObjects.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/recog/images/MutualOcclusion.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
 
 #include <filesystem>
 #include <fstream>
@@ -34,9 +34,9 @@ cv::Mat readImage(const std::string& path, int flags)
 
 std::string imageNote(const recog::RecognitionResult& r)
 {
-	if (r.image_score < 0) return "";
+	if (!r.image_score) return "";
 	std::ostringstream s;
-	s << std::fixed << std::setprecision(3) << ", image score " << r.image_score;
+	s << std::fixed << std::setprecision(3) << ", image score " << *r.image_score;
 	return s.str();
 }
 
@@ -113,9 +113,10 @@ int RecognizeApp::run(std::ostream& out)
 recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer& rec,
                                                          const recog::ImageVerifier& images) const
 {
-	const Eigen::Vector3d* up = support_plane ? &support_plane->n_S : nullptr;
-	const recog::SupportPlane* plane = support_plane ? &*support_plane : nullptr;
-	recog::RecognitionResult r = rec.recognize(scenes.front(), up, &images, plane);
+	recog::SceneContext context;  // the plane's normal is the up direction
+	context.images = std::cref(images);
+	context.plane = support_plane;
+	recog::RecognitionResult r = rec.recognize(scenes.front(), context);
 	if (r.found) r.scene_index = 0;
 	return r;
 }
@@ -157,18 +158,18 @@ void RecognizeApp::loadRecognitionOptions()
 void RecognizeApp::writeDemo(std::ostream& out) const
 {
 	namespace fs = std::filesystem;
-	const auto objects = recog::makeLabObjects();
+	const auto objects = sim::makeLabObjects();
 	fs::create_directories(fs::path(demo_dir) / "models");
 	fs::create_directories(fs::path(demo_dir) / "scenes");
 	for (const auto& o : objects)
 		model::saveWireFrame(o, (fs::path(demo_dir) / "models" / (o.name + ".wf")).string());
-	recog::SceneNoise noise;
+	sim::SceneNoise noise;
 	noise.endpoint_sigma_mm = 0.7, noise.fragment_probability = 0.3, noise.missing_fraction = 0.15;
 	noise.hide_back_side = true;
 	nlohmann::json truth = nlohmann::json::array();
 	for (int k = 0; k < 4; ++k)
 	{
-		const auto ts = recog::makeTableScene(objects, k < 3 ? k : -1, 3, noise, 4242 + k);
+		const auto ts = sim::makeTableScene(objects, k < 3 ? k : -1, 3, noise, 4242 + k);
 		const auto name = "table_" + std::to_string(k);
 		model::saveWireFrame(ts.scene, (fs::path(demo_dir) / "scenes" / (name + ".wf")).string());
 		truth.push_back({{"scene", name + ".wf"},
@@ -198,8 +199,9 @@ void RecognizeApp::printText(std::ostream& out) const
 			continue;
 		}
 		const auto rpy = rollPitchYawDeg(r.T_OinS.linear());
-		out << r.model << ": found in scene " << r.scene_index << " at level " << r.level
-		    << (r.from_plane ? " (support-plane hypothesis)" : "")
+		out << r.model << ": found in scene " << r.scene_index.value_or(0)
+		    << (r.level ? " at level " + std::to_string(*r.level) : std::string())
+		    << (r.origin == recog::Origin::SupportPlane ? " (support-plane hypothesis)" : "")
 		    << (r.occluders ? " (behind " + std::to_string(r.occluders) + " found)" : std::string())
 		    << (r.ambiguous ? " (ambiguous: " + std::to_string(r.poses.size()) + " poses)"
 		                    : std::string())

@@ -1,7 +1,8 @@
 #include "RecognizeOutput.h"
 
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
+#include <mrolr/util/JsonOptional.h>
 
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
@@ -93,7 +94,7 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"spread_rot_deg", r.spread_rot_deg},
 	        {"spread_trans_mm", r.spread_trans_mm},
 	        {"image_score", r.image_score},
-	        {"from_plane", r.from_plane},
+	        {"origin", recog::originName(r.origin)},
 	        {"occluders", r.occluders},
 	        {"ambiguous", r.ambiguous},
 	        {"poses", poses}};
@@ -121,7 +122,7 @@ void writeOverlay(cv::Mat left, const stereo::StereoCalibration& calib,
 	for (size_t k = 0; k < models.size(); ++k)
 	{
 		if (!results[k].found) continue;
-		const auto placed = recog::placeInScene(models[k], results[k].T_OinS);
+		const auto placed = sim::placeInScene(models[k], results[k].T_OinS);
 		const auto& colour = kColours[k % 6];
 		drawWireFrame(left, placed, calib, colour, 2);
 		const auto anchor = project({results[k].T_OinS.translation()}, calib);
@@ -141,7 +142,7 @@ void writeScene3D(const std::vector<model::WireFrame>& scenes,
 	{
 		if (!results[k].found) continue;
 		const auto& c = kColours[k % 6];
-		scene.insert(linesOf(recog::placeInScene(models[k], results[k].T_OinS),
+		scene.insert(linesOf(sim::placeInScene(models[k], results[k].T_OinS),
 		                     {static_cast<float>(c[2] / 255), static_cast<float>(c[1] / 255),
 		                      static_cast<float>(c[0] / 255)}));
 	}

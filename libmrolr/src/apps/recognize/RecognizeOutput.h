@@ -17,7 +17,8 @@ namespace mrolr::apps
 Eigen::Vector3d rollPitchYawDeg(const Eigen::Matrix3d& R);
 
 /** {"model", "found", "T", "score", "matched", "level", "ms", "confidence", "scene",
- * "rpy_deg", "t_mm", "agreeing_cliques", "spread_rot_deg", "spread_trans_mm"}. */
+ * "rpy_deg", "t_mm", "agreeing_cliques", "spread_rot_deg", "spread_trans_mm", "image_score",
+ * "origin", "occluders", "ambiguous", "poses"}; level, scene and image_score null when absent. */
 nlohmann::json resultJson(const recog::RecognitionResult& r);
 
 /** Points along a wire-frame's lines and arcs (mm, its own frame), as polylines. */

@@ -131,7 +131,7 @@ void RobotView::measurement(const vision::CycleRecord& c)
 void RobotView::recognised(const mission::SearchResult& r, const Eigen::Vector3d& xv,
                            const model::WireFrame& target)
 {
-	Eigen::Isometry3d T_OinC0_m = r.T_OinC0;
+	Eigen::Isometry3d T_OinC0_m = r.T_OinC0_mm;
 	T_OinC0_m.translation() /= 1000.0;  // mm → m
 	geometry_msgs::PoseStamped p;
 	p.header.stamp = ros::toRosTime(last_time_s_);

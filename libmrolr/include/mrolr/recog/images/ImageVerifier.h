@@ -8,7 +8,7 @@
  * (unrectified) images of the stereo::StereoCalibration. */
 
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/Limbs.h>
+#include <mrolr/recog/images/Limbs.h>
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
@@ -64,7 +64,7 @@ struct ImageVerificationOptions
 	bool mutual_occlusion = true;
 	/** A pose with less than this fraction of its samples not hidden by the object itself inside
 	 * the images (both summed) scores 0: a few edges of an object standing mostly outside the
-	 * view fit clutter at the image border too easily. Optional key. */
+	 * view fit clutter at the image border too easily. */
 	double min_in_image_fraction = 0.5;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
@@ -112,6 +112,16 @@ struct ImageScore
 	int outside = 0;   ///< samples not hidden by the object itself but outside the images
 };
 
+/** One image's share of an ImageScore (ImageVerifier::score sums both images'). */
+struct ImageCount
+{
+	int considered = 0;   ///< samples expected visible and inside the image, not occluded
+	int supported = 0;    ///< of those, on an edge of compatible direction
+	int occluded = 0;     ///< in-view samples hidden by an Occluder
+	int outside = 0;      ///< samples not hidden by the object itself but outside the image
+	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
+};
+
 /** An object recognised in the same stereo pair, which may hide parts of another: its edge
  * samples (model frame, mm), its solid (SelfOcclusion, for interpenetrates(); may be null) and
  * its pose in L. */
@@ -131,25 +141,15 @@ class EdgeImage
 	EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
 	          const Eigen::Isometry3d& T_CcvInL, const ImageVerificationOptions& o);
 
-	/** Adds to @p considered / @p supported the samples of @p s_O carried by @p T_OinL that are
-	 * in front of the camera, inside the image and not hidden by @p occ (may be null). */
-	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	           const SelfOcclusion* occ, int& considered, int& supported) const;
-	/** As count(), and adds to @p cost_px2 each considered sample's squared distance to the edges
-	 * (bilinear, capped at @p truncate_px; the cap when the nearest edge's direction disagrees). */
-	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-	           double& cost_px2) const;
-	/** As the previous count(), and adds to @p occluded the samples hidden by the occluders and
-	 * to @p outside (may be null) those not hidden by @p occ but outside the image (or more than
-	 * 45° off the optic axis, or behind the camera). */
-	void count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-	           const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-	           double& cost_px2, int& occluded, int* outside = nullptr) const;
-	/** The same on samples whose sight is known. */
-	void count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL, double truncate_px,
-	           int& considered, int& supported, double& cost_px2, int& occluded,
-	           int* outside = nullptr) const;
+	/** What this image says of the samples of @p s carried by @p T_OinL: of those in front of
+	 * the camera, inside the image and not hidden by the object itself (s.occ), how many the
+	 * occluders hide, how many are considered and how many of those an edge supports; those not
+	 * hidden by the object but outside the image (or more than 45° off the optic axis, or behind
+	 * the camera). With @p truncate_px > 0, cost_px2 sums each considered sample's squared
+	 * distance to the edges (bilinear, capped at @p truncate_px; the cap when the nearest edge's
+	 * direction disagrees). */
+	ImageCount count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	                 double truncate_px = 0) const;
 
 	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
 	 * without distortion (those outside the image too; the hull of a cylinder's rims is its

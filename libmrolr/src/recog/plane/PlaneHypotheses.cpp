@@ -1,8 +1,8 @@
 // Pose hypotheses from one scene feature on the support plane (PlaneHypotheses.h).
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/recog/PlaneHypotheses.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
 
-#include "UprightPose.h"
+#include "../UprightPose.h"
 
 #include <algorithm>
 #include <cmath>

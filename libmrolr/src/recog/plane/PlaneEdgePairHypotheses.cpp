@@ -1,8 +1,8 @@
 // Edge-pair hypotheses on the support plane (PlaneHypotheses.h): two scene lines along the plane's
 // normal taken as two vertical edges of the model (a box's), as far apart as they.
-#include <mrolr/recog/PlaneHypotheses.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
 
-#include "UprightPose.h"
+#include "../UprightPose.h"
 
 #include <algorithm>
 #include <cmath>

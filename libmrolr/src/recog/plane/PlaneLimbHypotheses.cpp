@@ -1,9 +1,9 @@
 // Limb hypotheses on the support plane (PlaneHypotheses.h): a scene line along the plane's normal
 // taken as the outline of one of the model's cylinders.
-#include <mrolr/recog/Limbs.h>
-#include <mrolr/recog/PlaneHypotheses.h>
+#include <mrolr/recog/images/Limbs.h>
+#include <mrolr/recog/plane/PlaneHypotheses.h>
 
-#include "UprightPose.h"
+#include "../UprightPose.h"
 
 #include <algorithm>
 #include <cmath>

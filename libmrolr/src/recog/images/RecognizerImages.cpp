@@ -1,6 +1,6 @@
 // Recognizer's verification in the stereo images (ImageVerifier.h): every pose that passed the 3D
 // pre-filter is scored in the images; the best few are refined there and verified again in 3D.
-#include "RecognizerDetail.h"
+#include "../RecognizerDetail.h"
 
 #include <mrolr/recog/Recognizer.h>
 
@@ -22,7 +22,7 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	for (size_t k = 0; k < poses.size() && static_cast<int>(k) < o.refine_candidates; ++k)
 	{
 		auto& h = poses[k];
-		if (h.image < 0.5 * o.min_score) break;
+		if (*h.image < 0.5 * o.min_score) break;
 		const Eigen::Isometry3d T = images.refine(samples, h.T, axes_O);
 		if (!upright(T, up_S)) continue;
 		h.T = T;

@@ -1,6 +1,6 @@
 // A picture of one hypothesis's judgement in one image (ImageVerifier.h): for looking at why a
 // pose scores what it scores.
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 
 #include <opencv2/imgproc.hpp>
 

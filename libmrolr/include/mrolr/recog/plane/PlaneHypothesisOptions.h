@@ -9,15 +9,21 @@
 
 namespace mrolr::recog
 {
+/** When the support-plane hypotheses run: "always" after the clique levels, the better-ranked
+ * answer kept (a plane hypothesis can correct a clique's wrong yaw of a nearly symmetric object);
+ * "not_found": only when the levels found nothing. */
+enum class PlaneRunWhen
+{
+	Always,
+	NotFound
+};
+
 /** Section [plane_hypotheses] of config/recognition.ini. The section is optional (without it
  * these defaults); when present every key must be there. */
 struct PlaneHypothesisOptions
 {
 	bool enable = true;  ///< make plane hypotheses (only with images and a support plane)
-	/** "always": after the clique levels, the better-ranked answer kept (a plane hypothesis
-	 * can correct a clique's wrong yaw of a nearly symmetric object); "not_found": only when the
-	 * levels found nothing. */
-	std::string run_when = "always";
+	PlaneRunWhen run_when = PlaneRunWhen::Always;  ///< key run_when: always | not_found
 	double rim_normal_tol_deg = 15;    ///< a model rim's normal within this of the model's +z
 	double scene_normal_tol_deg = 20;  ///< a scene conic's normal within this of the plane's
 	double radius_tol_mm = 6;          ///< |scene mean semi-axis − model rim radius|

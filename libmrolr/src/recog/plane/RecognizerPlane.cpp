@@ -2,7 +2,7 @@
 // (PlaneHypotheses.h), ranked by a quick image score and judged in the images like the clique
 // hypotheses (judgeInImages). Only with images: a hypothesis shares a single feature with the
 // scene, so its 3D score says next to nothing about it; the images see the whole object.
-#include "RecognizerDetail.h"
+#include "../RecognizerDetail.h"
 
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/Recognizer.h>
@@ -50,7 +50,6 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	RecognitionResult best;
 	best.model = table_.name();
 	best.image_score = 0;
-	best.from_plane = true;
 	const std::vector<PlaneHypothesis> hyps = plane_gen_->generate(scene, plane);
 	const SightedSamples& coarse = sightedSamples(po.prerank_spacing_mm);
 	std::vector<double> quick(hyps.size());
@@ -68,7 +67,7 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		poses.push_back({T,
 		                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
 		                            occlusionFor(up_S)),
-		                 -1.0, k});
+		                 std::nullopt, k});
 	}
 	judgeInImages(poses, images, os.features, p, up_S);
 	double best_rank = -1;
@@ -78,7 +77,8 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		const double rank = detail::rankOf(h.v, h.image);
 		// a pair of vertical lines is common in a scene of boxes and cylinders: edge-pair answers
 		// need more of the images
-		if (hyps[h.cluster].from_edge_pair && h.image < po.edge_pair_min_image_score) continue;
+		if (hyps[h.hypothesis].from_edge_pair && *h.image < po.edge_pair_min_image_score)
+			continue;
 		if (!upright(h.T, up_S) ||
 		    std::abs(plane_gen_->baseOffset_mm(h.T, plane)) > po.max_base_offset_mm)
 			continue;
@@ -91,13 +91,13 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		best.coverage = h.v.coverage;
 		best.matched = h.v.matched;
 		best.agreeing_cliques = 0;
+		best.origin = Origin::SupportPlane;
 	}
 	best.found =
-	    best.image_score >= std::max(images.options().min_score, po.min_image_score);
-	const size_t levels = opts_.levels.size();
-	best.level = best.found ? static_cast<int>(levels) + 1 : 0;
-	best.confidence = best.found ? 0.5 * best.image_score : 0.0;
-	if (best.found) markAmbiguity(best, eligible);
+	    *best.image_score >= std::max(images.options().min_score, po.min_image_score);
+	if (!best.found) return best;
+	best.confidence = planeConfidence(*best.image_score);
+	markAmbiguity(best, eligible);
 	return best;
 }
 

@@ -1,5 +1,5 @@
 // The table top from one stereo scene: horizontal features at a height, sides standing on it.
-#include <mrolr/recog/TablePlaneEstimate.h>
+#include <mrolr/recog/plane/TablePlaneEstimate.h>
 
 #include <Eigen/Eigenvalues>
 

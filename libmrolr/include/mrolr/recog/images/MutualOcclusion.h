@@ -5,7 +5,7 @@
  * (ImageVerifier::withOccluders) are left out of the image score of the others, which are then
  * searched again. */
 
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
 
 #include <functional>

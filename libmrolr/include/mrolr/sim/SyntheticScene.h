@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-namespace mrolr::recog
+namespace mrolr::sim
 {
 struct SceneNoise
 {
@@ -56,4 +56,4 @@ struct TableScene
 TableScene makeTableScene(const std::vector<model::WireFrame>& objects, int target, int clutter,
                           const SceneNoise& noise, unsigned seed);
 
-}  // namespace mrolr::recog
+}  // namespace mrolr::sim

@@ -1,5 +1,5 @@
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 
 #include <opencv2/imgproc.hpp>
 
@@ -169,13 +169,6 @@ bool EdgeImage::oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) c
 	return std::abs(n.x * tangent_px.x + n.y * tangent_px.y) <= sin_tol_ * len;
 }
 
-void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                      const SelfOcclusion* occ, int& considered, int& supported) const
-{
-	double cost = 0;
-	count(s_O, T_OinL, occ, 0, considered, supported, cost);
-}
-
 bool EdgeImage::occludedAt(const cv::Point2d& px, double depth_mm) const
 {
 	if (occluder_z_.empty()) return false;
@@ -236,43 +229,28 @@ void EdgeImage::forEachInViewWithDepth(const SightedSamples& ss, const Eigen::Is
 		}
 }
 
-void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-                      double& cost_px2) const
+ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+                            double truncate_px) const
 {
-	int occluded = 0;
-	count(s_O, T_OinL, occ, truncate_px, considered, supported, cost_px2, occluded);
-}
-
-void EdgeImage::count(const std::vector<EdgeSample>& s_O, const Eigen::Isometry3d& T_OinL,
-                      const SelfOcclusion* occ, double truncate_px, int& considered, int& supported,
-                      double& cost_px2, int& occluded, int* outside) const
-{
-	count(SightedSamples(s_O, occ), T_OinL, truncate_px, considered, supported, cost_px2, occluded,
-	      outside);
-}
-
-void EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
-                      double truncate_px, int& considered, int& supported, double& cost_px2,
-                      int& occluded, int* outside) const
-{
+	ImageCount c;
 	forEachInViewWithDepth<false>(
 	    s, T_OinL,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool, double depth_mm)
 	    {
 		    if (occludedAt(px, depth_mm))
 		    {
-			    ++occluded;
+			    ++c.occluded;
 			    return;
 		    }
-		    ++considered;
-		    supported += supports(px, tangent) ? 1 : 0;
+		    ++c.considered;
+		    c.supported += supports(px, tangent) ? 1 : 0;
 		    if (truncate_px <= 0) return;
 		    const double d =
 		        oriented(px, tangent) ? std::min(truncate_px, distanceAt(px)) : truncate_px;
-		    cost_px2 += d * d;
+		    c.cost_px2 += d * d;
 	    },
-	    outside);
+	    &c.outside);
+	return c;
 }
 
 std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s_O,
@@ -320,12 +298,10 @@ ImageScore ImageVerifier::score(const SightedSamples& samples,
 	ImageScore s;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		int considered = 0, supported = 0, occluded = 0, outside = 0;
-		images_[i].count(samples, T_OinL, opts_.truncate_px, considered, supported, s.cost,
-		                 occluded, &outside);
-		s.per_image[i] = considered ? static_cast<double>(supported) / considered : 0.0;
-		s.considered += considered, s.supported += supported, s.occluded += occluded;
-		s.outside += outside;
+		const ImageCount c = images_[i].count(samples, T_OinL, opts_.truncate_px);
+		s.per_image[i] = c.considered ? static_cast<double>(c.supported) / c.considered : 0.0;
+		s.considered += c.considered, s.supported += c.supported, s.occluded += c.occluded;
+		s.outside += c.outside, s.cost += c.cost_px2;
 	}
 	s.cost = s.considered ? s.cost / s.considered : 1e300;
 	const bool enough_unoccluded =

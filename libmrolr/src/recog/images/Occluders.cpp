@@ -1,6 +1,6 @@
 // Mutual occlusion in the image verification (ImageVerifier::withOccluders, docs/recog.md): the
 // image regions covered by objects already recognised in the same stereo pair, with their depth.
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,13 +1,14 @@
-#include <mrolr/recog/SyntheticObjects.h>
 #include <mrolr/recog/WireFrameBuilder.h>
+#include <mrolr/sim/SyntheticObjects.h>
 
 #include <array>
 #include <cmath>
 
-namespace mrolr::recog
+namespace mrolr::sim
 {
 namespace
 {
+using recog::WireFrameBuilder;
 using V = Eigen::Vector3d;
 using Stroke = std::array<double, 4>;  // u0 v0 u1 v1 in the unit letter box
 
@@ -172,4 +173,4 @@ std::vector<model::WireFrame> makeLabObjects()
 	        makeBook(),         makeTeaBox(), makeWedge(),  makeTapeRoll(), makeBracket()};
 }
 
-}  // namespace mrolr::recog
+}  // namespace mrolr::sim

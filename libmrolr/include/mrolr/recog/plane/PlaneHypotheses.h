@@ -29,8 +29,8 @@
 
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/PlaneHypothesisOptions.h>
-#include <mrolr/recog/SupportPlane.h>
+#include <mrolr/recog/plane/PlaneHypothesisOptions.h>
+#include <mrolr/recog/plane/SupportPlane.h>
 
 #include <Eigen/Geometry>
 

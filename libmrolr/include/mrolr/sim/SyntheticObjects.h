@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace mrolr::recog
+namespace mrolr::sim
 {
 /** 60 mm alphabet cube: 12 edges and the letters A, E, F, H, K, T drawn in lines on its faces. */
 model::WireFrame makeAlphabetCube();
@@ -35,4 +35,4 @@ model::WireFrame makeBracket();
 /** The ten objects above, in that order (the "10-model database"). */
 std::vector<model::WireFrame> makeLabObjects();
 
-}  // namespace mrolr::recog
+}  // namespace mrolr::sim

@@ -1,7 +1,7 @@
 // Refinement of a pose hypothesis in the stereo images (ImageVerifier::refine): a sweep of
 // rotations about the model's up axis, then a pattern search on the truncated oriented chamfer
 // distance. Both move the pose only where the images say it fits better.
-#include <mrolr/recog/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 
 #include <cmath>
 

@@ -1,10 +1,10 @@
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/SyntheticScene.h>
+#include <mrolr/sim/SyntheticScene.h>
 
 #include <algorithm>
 
-namespace mrolr::recog
+namespace mrolr::sim
 {
 namespace
 {
@@ -66,7 +66,7 @@ void addConic(model::WireFrame& out, model::Conic3 c, const SceneNoise& n, std::
 model::WireFrame corruptScene(const model::WireFrame& wf, const SceneNoise& noise,
                               std::mt19937& rng, double* visible_fraction)
 {
-	const auto fs = featuresOf(wf);
+	const auto fs = recog::featuresOf(wf);
 	Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
 	double extent = 0, total = 0, kept = 0;
 	for (const auto& f : fs) centroid += f.m / static_cast<double>(fs.size());
@@ -143,4 +143,4 @@ TableScene makeTableScene(const std::vector<model::WireFrame>& objects, int targ
 	return ts;
 }
 
-}  // namespace mrolr::recog
+}  // namespace mrolr::sim

@@ -15,7 +15,7 @@
  * points, whose normal is kept only when the features span the plane in two directions and it
  * lies within max_tilt_deg of up. Lengths mm. */
 #include <mrolr/model/WireFrame.h>
-#include <mrolr/recog/SupportPlane.h>
+#include <mrolr/recog/plane/SupportPlane.h>
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 // Limbs of bodies of revolution (Limbs.h): coaxial circles grouped into a profile, and the two
 // outline generators of each cylinder or cone frustum between consecutive levels.
-#include <mrolr/recog/Limbs.h>
+#include <mrolr/recog/images/Limbs.h>
 
 #include <algorithm>
 #include <cmath>

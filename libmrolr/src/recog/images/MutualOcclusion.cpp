@@ -1,4 +1,4 @@
-#include <mrolr/recog/MutualOcclusion.h>
+#include <mrolr/recog/images/MutualOcclusion.h>
 
 #include <stdexcept>
 
