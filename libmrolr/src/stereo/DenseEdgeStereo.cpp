@@ -1,5 +1,5 @@
 #include <mrolr/stereo/DenseEdgeStereo.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
@@ -42,42 +42,41 @@ double side(const cv::Point2d& p, const cv::Point2d& n, const cv::Mat& d,
 }
 }  // namespace
 
-void DenseEdgeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                          const std::string& section)
+namespace
 {
-	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	enabled = util::readBool(cfg, section, "dense_edge_stereo", enabled);
-	block_size_px =
-	    static_cast<int>(util::readInt(cfg, section, "dense_block_size_px", block_size_px));
-	rd("dense_min_depth_mm", min_depth_mm);
-	rd("dense_max_depth_mm", max_depth_mm);
-	rd("dense_side_offset_px", side_offset_px);
-	rd("dense_max_side_spread_px", max_side_spread_px);
-	rd("dense_max_disparity_jump_px", max_disparity_jump_px);
-	min_run_edgels =
-	    static_cast<int>(util::readInt(cfg, section, "dense_min_run_edgels", min_run_edgels));
-	unmatched_only = util::readBool(cfg, section, "dense_unmatched_only", unmatched_only);
-	require_both_sides =
-	    util::readBool(cfg, section, "dense_require_both_sides", require_both_sides);
-	util::requireInRange(cfg, section, "dense_block_size_px", block_size_px, 1, 21);
+using O = DenseEdgeOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& denseEdgeOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .flag("dense_edge_stereo", &O::enabled, kOpt)
+	    .integer("dense_block_size_px", &O::block_size_px, 1, 21, kOpt)
+	    .number("dense_min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
+	    .number("dense_max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
+	    .number("dense_side_offset_px", &O::side_offset_px, 2, 20, kOpt)
+	    .number("dense_max_side_spread_px", &O::max_side_spread_px, 0, 100, kOpt)
+	    .number("dense_max_disparity_jump_px", &O::max_disparity_jump_px, 0, 1e4, kOpt)
+	    .integer("dense_min_run_edgels", &O::min_run_edgels, 2, 1000000, kOpt)
+	    .flag("dense_unmatched_only", &O::unmatched_only, kOpt)
+	    .flag("dense_require_both_sides", &O::require_both_sides, kOpt);
+	return b;
+}
+}  // namespace
+
+void DenseEdgeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                         const std::string& section)
+{
+	denseEdgeOptionsBinder().load(cfg, section, *this);
 	if (block_size_px % 2 == 0)
-		throw std::runtime_error("[" + section + "] dense_block_size_px must be odd");
-	util::requireInRange(cfg, section, "dense_min_depth_mm", min_depth_mm, 1, 1e6);
+		throw util::ConfigError(util::describeKey(cfg, section, "dense_block_size_px") +
+		                        ": must be odd");
 	util::requireInRange(cfg, section, "dense_max_depth_mm", max_depth_mm, min_depth_mm + 1, 1e7);
-	util::requireInRange(cfg, section, "dense_side_offset_px", side_offset_px, 2, 20);
-	util::requireInRange(cfg, section, "dense_min_run_edgels", min_run_edgels, 2, 1e6);
 }
 
 void DenseEdgeOptions::dump(std::ostream& out) const
 {
-	out << "dense_edge_stereo = " << enabled << "\ndense_block_size_px = " << block_size_px
-	    << "\ndense_min_depth_mm = " << min_depth_mm << "\ndense_max_depth_mm = " << max_depth_mm
-	    << "\ndense_side_offset_px = " << side_offset_px
-	    << "\ndense_max_side_spread_px = " << max_side_spread_px
-	    << "\ndense_max_disparity_jump_px = " << max_disparity_jump_px
-	    << "\ndense_min_run_edgels = " << min_run_edgels
-	    << "\ndense_unmatched_only = " << unmatched_only
-	    << "\ndense_require_both_sides = " << require_both_sides << "\n";
+	denseEdgeOptionsBinder().dump(out, *this);
 }
 
 cv::Mat denseDisparity(const cv::Mat& left_rect, const cv::Mat& right_rect, double d_min_px,

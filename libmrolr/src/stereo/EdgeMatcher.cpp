@@ -1,5 +1,5 @@
 #include <mrolr/stereo/EdgeMatcher.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -133,28 +133,32 @@ void computeSupport(std::vector<std::vector<Candidate>>& cand, const std::vector
 }
 }  // namespace
 
-void MatchOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                      const std::string& section)
+namespace
 {
-	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	rd("disparity_gradient_limit", disparity_gradient_limit);
-	rd("support_radius_px", support_radius_px);
-	rd("max_orientation_diff_deg", max_orientation_diff_deg);
-	rd("min_edge_angle_deg", min_edge_angle_deg);
-	rd("min_support", min_support);
-	util::requireInRange(cfg, section, "disparity_gradient_limit", disparity_gradient_limit, 0.05,
-	                     2);
-	util::requireInRange(cfg, section, "support_radius_px", support_radius_px, 1, 200);
-	util::requireInRange(cfg, section, "min_edge_angle_deg", min_edge_angle_deg, 0, 80);
+using O = MatchOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& matchOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("disparity_gradient_limit", &O::disparity_gradient_limit, 0.05, 2, kOpt)
+	    .number("support_radius_px", &O::support_radius_px, 1, 200, kOpt)
+	    .number("max_orientation_diff_deg", &O::max_orientation_diff_deg, 0, 180, kOpt)
+	    .number("min_edge_angle_deg", &O::min_edge_angle_deg, 0, 80, kOpt)
+	    .number("min_support", &O::min_support, 0, 1, kOpt);
+	return b;
+}
+}  // namespace
+
+void MatchOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                     const std::string& section)
+{
+	matchOptionsBinder().load(cfg, section, *this);
 }
 
 void MatchOptions::dump(std::ostream& out) const
 {
-	out << "disparity_gradient_limit = " << disparity_gradient_limit
-	    << "\nsupport_radius_px = " << support_radius_px
-	    << "\nmax_orientation_diff_deg = " << max_orientation_diff_deg
-	    << "\nmin_edge_angle_deg = " << min_edge_angle_deg << "\nmin_support = " << min_support
-	    << "\n";
+	matchOptionsBinder().dump(out, *this);
 }
 
 std::vector<EdgeMatch> matchEdgeStrings(const std::vector<EdgeString>& left,

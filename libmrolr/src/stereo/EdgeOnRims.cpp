@@ -1,5 +1,5 @@
 #include <mrolr/stereo/EdgeOnRims.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <Eigen/Geometry>
 
@@ -151,44 +151,39 @@ std::vector<ConicFit3> edgeOnRims(const std::vector<EdgeString>& left_strings,
 	return out;
 }
 
-void EdgeOnRimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                          const std::string& section)
+namespace
 {
-	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	enabled = util::readBool(cfg, section, "edge_on_rims", enabled);
-	rd("edge_on_rim_max_image_deg", max_image_deg);
-	rd("edge_on_rim_corner_radius_px", corner_radius_px);
-	rd("edge_on_rim_max_extension_px", max_extension_px);
-	rd("edge_on_rim_min_steepness", min_steepness);
-	rd("edge_on_rim_max_chord_tilt_deg", max_chord_tilt_deg);
-	rd("edge_on_rim_max_chord_view_cos", max_chord_view_cos);
-	rd("edge_on_rim_max_residual_px", max_residual_px);
-	rd("edge_on_rim_min_radius_mm", min_radius_mm);
-	rd("edge_on_rim_max_radius_mm", max_radius_mm);
-	util::requireInRange(cfg, section, "edge_on_rim_max_image_deg", max_image_deg, 0, 45);
-	util::requireInRange(cfg, section, "edge_on_rim_corner_radius_px", corner_radius_px, 0, 50);
-	util::requireInRange(cfg, section, "edge_on_rim_max_extension_px", max_extension_px, 0, 500);
-	util::requireInRange(cfg, section, "edge_on_rim_min_steepness", min_steepness, 0, 1);
-	util::requireInRange(cfg, section, "edge_on_rim_max_chord_tilt_deg", max_chord_tilt_deg, 0,
-	                     90);
-	util::requireInRange(cfg, section, "edge_on_rim_max_chord_view_cos", max_chord_view_cos, 0, 1);
-	util::requireInRange(cfg, section, "edge_on_rim_max_residual_px", max_residual_px, 0.05, 20);
-	util::requireInRange(cfg, section, "edge_on_rim_min_radius_mm", min_radius_mm, 0, 1e4);
+using O = EdgeOnRimOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& edgeOnRimOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .flag("edge_on_rims", &O::enabled, kOpt)
+	    .number("edge_on_rim_max_image_deg", &O::max_image_deg, 0, 45, kOpt)
+	    .number("edge_on_rim_corner_radius_px", &O::corner_radius_px, 0, 50, kOpt)
+	    .number("edge_on_rim_max_extension_px", &O::max_extension_px, 0, 500, kOpt)
+	    .number("edge_on_rim_min_steepness", &O::min_steepness, 0, 1, kOpt)
+	    .number("edge_on_rim_max_chord_tilt_deg", &O::max_chord_tilt_deg, 0, 90, kOpt)
+	    .number("edge_on_rim_max_chord_view_cos", &O::max_chord_view_cos, 0, 1, kOpt)
+	    .number("edge_on_rim_max_residual_px", &O::max_residual_px, 0.05, 20, kOpt)
+	    .number("edge_on_rim_min_radius_mm", &O::min_radius_mm, 0, 1e4, kOpt)
+	    .number("edge_on_rim_max_radius_mm", &O::max_radius_mm, 0, 1e5, kOpt);
+	return b;
+}
+}  // namespace
+
+void EdgeOnRimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                         const std::string& section)
+{
+	edgeOnRimOptionsBinder().load(cfg, section, *this);
 	util::requireInRange(cfg, section, "edge_on_rim_max_radius_mm", max_radius_mm, min_radius_mm,
 	                     1e5);
 }
 
 void EdgeOnRimOptions::dump(std::ostream& out) const
 {
-	out << "edge_on_rims = " << enabled << "\nedge_on_rim_max_image_deg = " << max_image_deg
-	    << "\nedge_on_rim_corner_radius_px = " << corner_radius_px
-	    << "\nedge_on_rim_max_extension_px = " << max_extension_px
-	    << "\nedge_on_rim_min_steepness = " << min_steepness
-	    << "\nedge_on_rim_max_chord_tilt_deg = " << max_chord_tilt_deg
-	    << "\nedge_on_rim_max_chord_view_cos = " << max_chord_view_cos
-	    << "\nedge_on_rim_max_residual_px = " << max_residual_px
-	    << "\nedge_on_rim_min_radius_mm = " << min_radius_mm
-	    << "\nedge_on_rim_max_radius_mm = " << max_radius_mm << "\n";
+	edgeOnRimOptionsBinder().dump(out, *this);
 }
 
 }  // namespace mrolr::stereo

@@ -1,5 +1,5 @@
 #include <mrolr/stereo/EdgeStrings.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/edge_drawing.hpp>
@@ -79,25 +79,31 @@ cv::Point2d Edgel::tangent() const
 	return n > 0 ? cv::Point2d(-grad.y / n, grad.x / n) : cv::Point2d(1, 0);
 }
 
-void EdgeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                     const std::string& section)
+namespace
 {
-	blur_sigma_px = util::readDouble(cfg, section, "blur_sigma_px", blur_sigma_px);
-	gradient_threshold =
-	    static_cast<int>(util::readInt(cfg, section, "gradient_threshold", gradient_threshold));
-	anchor_threshold =
-	    static_cast<int>(util::readInt(cfg, section, "anchor_threshold", anchor_threshold));
-	min_string_edgels =
-	    static_cast<int>(util::readInt(cfg, section, "min_string_edgels", min_string_edgels));
-	util::requireInRange(cfg, section, "blur_sigma_px", blur_sigma_px, 0, 10);
-	util::requireInRange(cfg, section, "min_string_edgels", min_string_edgels, 2, 1e6);
+using O = EdgeOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& edgeOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("blur_sigma_px", &O::blur_sigma_px, 0, 10, kOpt)
+	    .integer("gradient_threshold", &O::gradient_threshold, 0, 100000, kOpt)
+	    .integer("anchor_threshold", &O::anchor_threshold, 0, 100000, kOpt)
+	    .integer("min_string_edgels", &O::min_string_edgels, 2, 1000000, kOpt);
+	return b;
+}
+}  // namespace
+
+void EdgeOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                    const std::string& section)
+{
+	edgeOptionsBinder().load(cfg, section, *this);
 }
 
 void EdgeOptions::dump(std::ostream& out) const
 {
-	out << "blur_sigma_px = " << blur_sigma_px << "\ngradient_threshold = " << gradient_threshold
-	    << "\nanchor_threshold = " << anchor_threshold
-	    << "\nmin_string_edgels = " << min_string_edgels << "\n";
+	edgeOptionsBinder().dump(out, *this);
 }
 
 std::vector<EdgeString> detectEdgeStrings(const cv::Mat& grey, const EdgeOptions& o)

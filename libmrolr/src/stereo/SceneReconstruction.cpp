@@ -1,6 +1,6 @@
 #include <mrolr/stereo/Rectifier.h>
 #include <mrolr/stereo/SceneReconstruction.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <opencv2/imgproc.hpp>
 
@@ -102,30 +102,39 @@ bool continues(const EdgeMatch& prev, const EdgeMatch& m, const FitOptions& o)
 }
 }  // namespace
 
-void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                      const std::string& section)
+namespace
 {
-	min_depth_mm = util::readDouble(cfg, section, "min_depth_mm", min_depth_mm);
-	max_depth_mm = util::readDouble(cfg, section, "max_depth_mm", max_depth_mm);
-	util::requireInRange(cfg, section, "min_depth_mm", min_depth_mm, 1, 1e6);
+using O = SceneOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& sceneOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
+	    .number("max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
+	    .number("rectify_alpha", [](O& o) -> double& { return o.rectify.alpha; }, 0, 1, kOpt)
+	    .number("rectify_size_scale", [](O& o) -> double& { return o.rectify.size_scale; }, 0.25,
+	            4, kOpt)
+	    .integer("border_margin_px", &O::border_margin_px, 0, 50, kOpt)
+	    .flag("horizontal_enabled", [](O& o) -> bool& { return o.horizontal.enabled; }, kOpt)
+	    .number("horizontal_max_angle_deg",
+	            [](O& o) -> double& { return o.horizontal.max_angle_deg; }, 0, 90, kOpt)
+	    .number("horizontal_corner_radius_px",
+	            [](O& o) -> double& { return o.horizontal.corner_radius_px; }, 0, 100, kOpt)
+	    .number("horizontal_min_right_support",
+	            [](O& o) -> double& { return o.horizontal.min_right_support; }, 0, 1, kOpt);
+	return b;
+}
+}  // namespace
+
+void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                     const std::string& section)
+{
+	sceneOptionsBinder().load(cfg, section, *this);
 	util::requireInRange(cfg, section, "max_depth_mm", max_depth_mm, min_depth_mm + 1, 1e7);
-	rectify.alpha = util::readDouble(cfg, section, "rectify_alpha", rectify.alpha);
-	rectify.size_scale = util::readDouble(cfg, section, "rectify_size_scale", rectify.size_scale);
-	border_margin_px =
-	    static_cast<int>(util::readInt(cfg, section, "border_margin_px", border_margin_px));
-	util::requireInRange(cfg, section, "rectify_alpha", rectify.alpha, 0, 1);
-	util::requireInRange(cfg, section, "rectify_size_scale", rectify.size_scale, 0.25, 4);
-	util::requireInRange(cfg, section, "border_margin_px", border_margin_px, 0, 50);
 	edges.loadFromConfigFile(cfg, section);
 	match.loadFromConfigFile(cfg, section);
 	fit.loadFromConfigFile(cfg, section);
-	horizontal.enabled = util::readBool(cfg, section, "horizontal_enabled", horizontal.enabled);
-	horizontal.max_angle_deg =
-	    util::readDouble(cfg, section, "horizontal_max_angle_deg", horizontal.max_angle_deg);
-	horizontal.corner_radius_px =
-	    util::readDouble(cfg, section, "horizontal_corner_radius_px", horizontal.corner_radius_px);
-	horizontal.min_right_support = util::readDouble(cfg, section, "horizontal_min_right_support",
-	                                                horizontal.min_right_support);
 	segments.loadFromConfigFile(cfg, section);
 	dense.loadFromConfigFile(cfg, section);
 	circles.loadFromConfigFile(cfg, section);
@@ -134,16 +143,10 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 
 void SceneOptions::dump(std::ostream& out) const
 {
-	out << "min_depth_mm = " << min_depth_mm << "\nmax_depth_mm = " << max_depth_mm
-	    << "\nrectify_alpha = " << rectify.alpha << "\nrectify_size_scale = " << rectify.size_scale
-	    << "\nborder_margin_px = " << border_margin_px << "\n";
+	sceneOptionsBinder().dump(out, *this);
 	edges.dump(out);
 	match.dump(out);
 	fit.dump(out);
-	out << "horizontal_enabled = " << horizontal.enabled
-	    << "\nhorizontal_max_angle_deg = " << horizontal.max_angle_deg
-	    << "\nhorizontal_corner_radius_px = " << horizontal.corner_radius_px
-	    << "\nhorizontal_min_right_support = " << horizontal.min_right_support << "\n";
 	segments.dump(out);
 	dense.dump(out);
 	circles.dump(out);

@@ -2,7 +2,7 @@
 #include <mrolr/stereo/EdgelSupport.h>
 #include <mrolr/stereo/EllipseStereo.h>
 #include <mrolr/stereo/SegmentStereo.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -316,53 +316,44 @@ void reconstructPieces(const PieceStereoInput& in, const Rectifier& rect, const 
 	}
 }
 
-void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                              const std::string& section)
+namespace
 {
-	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	enabled = util::readBool(cfg, section, "segment_stereo", enabled);
-	rd("segment_max_angle_diff_deg", max_angle_diff_deg);
-	rd("segment_min_row_overlap", min_row_overlap);
-	rd("segment_max_side_diff_grey", max_side_diff_grey);
-	rd("segment_horizontal_deg", horizontal_deg);
-	rd("segment_corner_radius_px", corner_radius_px);
-	rd("segment_duplicate_mm", duplicate_mm);
-	rd("segment_max_disparity_gradient", max_disparity_gradient);
-	min_conic_matches = static_cast<int>(
-	    util::readInt(cfg, section, "segment_min_conic_matches", min_conic_matches));
-	corner_pairs = util::readBool(cfg, section, "segment_corner_pairs", corner_pairs);
-	rd("segment_corner_row_tol_px", corner_row_tol_px);
-	rd("segment_corner_consistency_px", corner_consistency_px);
-	corner_lines = util::readBool(cfg, section, "segment_corner_lines", corner_lines);
-	rd("segment_corner_line_min_support", corner_line_min_support);
-	min_line_edgels =
-	    static_cast<int>(util::readInt(cfg, section, "segment_min_line_edgels", min_line_edgels));
-	both_sides_below_edgels = static_cast<int>(
-	    util::readInt(cfg, section, "segment_both_sides_below_edgels", both_sides_below_edgels));
-	util::requireInRange(cfg, section, "segment_corner_row_tol_px", corner_row_tol_px, 0.01, 10);
-	util::requireInRange(cfg, section, "segment_min_row_overlap", min_row_overlap, 0, 1);
-	util::requireInRange(cfg, section, "segment_min_conic_matches", min_conic_matches, 3, 1e6);
-	util::requireInRange(cfg, section, "segment_corner_line_min_support", corner_line_min_support,
-	                     0.01, 1);
+using O = SegmentStereoOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& segmentStereoOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .flag("segment_stereo", &O::enabled, kOpt)
+	    .number("segment_max_angle_diff_deg", &O::max_angle_diff_deg, 0, 90, kOpt)
+	    .number("segment_min_row_overlap", &O::min_row_overlap, 0, 1, kOpt)
+	    .number("segment_max_side_diff_grey", &O::max_side_diff_grey, 0, 255, kOpt)
+	    .number("segment_horizontal_deg", &O::horizontal_deg, 0, 90, kOpt)
+	    .number("segment_corner_radius_px", &O::corner_radius_px, 0, 100, kOpt)
+	    .number("segment_duplicate_mm", &O::duplicate_mm, 0, 1000, kOpt)
+	    .number("segment_max_disparity_gradient", &O::max_disparity_gradient, 0, 10, kOpt)
+	    .integer("segment_min_conic_matches", &O::min_conic_matches, 3, 1000000, kOpt)
+	    .flag("segment_corner_pairs", &O::corner_pairs, kOpt)
+	    .number("segment_corner_row_tol_px", &O::corner_row_tol_px, 0.01, 10, kOpt)
+	    .integer("segment_min_line_edgels", &O::min_line_edgels, 2, 1000000, kOpt)
+	    .integer("segment_both_sides_below_edgels", &O::both_sides_below_edgels, 0, 1000000,
+	             kOpt)
+	    .number("segment_corner_consistency_px", &O::corner_consistency_px, 0, 100, kOpt)
+	    .flag("segment_corner_lines", &O::corner_lines, kOpt)
+	    .number("segment_corner_line_min_support", &O::corner_line_min_support, 0.01, 1, kOpt);
+	return b;
+}
+}  // namespace
+
+void SegmentStereoOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                             const std::string& section)
+{
+	segmentStereoOptionsBinder().load(cfg, section, *this);
 }
 
 void SegmentStereoOptions::dump(std::ostream& out) const
 {
-	out << "segment_stereo = " << enabled << "\nsegment_max_angle_diff_deg = " << max_angle_diff_deg
-	    << "\nsegment_min_row_overlap = " << min_row_overlap
-	    << "\nsegment_max_side_diff_grey = " << max_side_diff_grey
-	    << "\nsegment_horizontal_deg = " << horizontal_deg
-	    << "\nsegment_corner_radius_px = " << corner_radius_px
-	    << "\nsegment_duplicate_mm = " << duplicate_mm
-	    << "\nsegment_max_disparity_gradient = " << max_disparity_gradient
-	    << "\nsegment_min_conic_matches = " << min_conic_matches
-	    << "\nsegment_corner_pairs = " << corner_pairs
-	    << "\nsegment_corner_row_tol_px = " << corner_row_tol_px
-	    << "\nsegment_min_line_edgels = " << min_line_edgels
-	    << "\nsegment_both_sides_below_edgels = " << both_sides_below_edgels
-	    << "\nsegment_corner_consistency_px = " << corner_consistency_px
-	    << "\nsegment_corner_lines = " << corner_lines
-	    << "\nsegment_corner_line_min_support = " << corner_line_min_support << "\n";
+	segmentStereoOptionsBinder().dump(out, *this);
 }
 
 }  // namespace mrolr::stereo

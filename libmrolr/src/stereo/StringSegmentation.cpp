@@ -1,5 +1,5 @@
 #include <mrolr/stereo/Fit3.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <ostream>
 
@@ -44,33 +44,36 @@ void segmentString(const std::vector<StereoEdgel>& e, const Rectifier& rect, con
 	split(e, 0, e.size(), rect, o, lines, conics);
 }
 
-void FitOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                    const std::string& section)
+namespace
 {
-	auto rd = [&](const char* k, double& v) { v = util::readDouble(cfg, section, k, v); };
-	auto ri = [&](const char* k, int& v)
-	{ v = static_cast<int>(util::readInt(cfg, section, k, v)); };
-	rd("line_tol_px", line_tol_px);
-	rd("conic_tol_px", conic_tol_px);
-	rd("min_arc_deg", min_arc_deg);
-	rd("max_conic_radius_px", max_conic_radius_px);
-	ri("min_line_edgels", min_line_edgels);
-	ri("min_conic_edgels", min_conic_edgels);
-	rd("max_rms_mm", max_rms_mm);
-	ri("max_gap_edgels", max_gap_edgels);
-	rd("max_disparity_jump_px", max_disparity_jump_px);
-	util::requireInRange(cfg, section, "line_tol_px", line_tol_px, 0.05, 50);
-	util::requireInRange(cfg, section, "min_line_edgels", min_line_edgels, 3, 1e6);
-	util::requireInRange(cfg, section, "min_conic_edgels", min_conic_edgels, 6, 1e6);
+using O = FitOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
+
+const util::OptionsBinder<O>& fitOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("line_tol_px", &O::line_tol_px, 0.05, 50, kOpt)
+	    .number("conic_tol_px", &O::conic_tol_px, 0.05, 50, kOpt)
+	    .number("min_arc_deg", &O::min_arc_deg, 0, 360, kOpt)
+	    .number("max_conic_radius_px", &O::max_conic_radius_px, 1, 1e5, kOpt)
+	    .integer("min_line_edgels", &O::min_line_edgels, 3, 1000000, kOpt)
+	    .integer("min_conic_edgels", &O::min_conic_edgels, 6, 1000000, kOpt)
+	    .number("max_rms_mm", &O::max_rms_mm, 0, 1e4, kOpt)
+	    .integer("max_gap_edgels", &O::max_gap_edgels, 0, 1000000, kOpt)
+	    .number("max_disparity_jump_px", &O::max_disparity_jump_px, 0, 1e4, kOpt);
+	return b;
+}
+}  // namespace
+
+void FitOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
+                                   const std::string& section)
+{
+	fitOptionsBinder().load(cfg, section, *this);
 }
 
 void FitOptions::dump(std::ostream& out) const
 {
-	out << "line_tol_px = " << line_tol_px << "\nconic_tol_px = " << conic_tol_px
-	    << "\nmin_arc_deg = " << min_arc_deg << "\nmax_conic_radius_px = " << max_conic_radius_px
-	    << "\nmin_line_edgels = " << min_line_edgels << "\nmin_conic_edgels = " << min_conic_edgels
-	    << "\nmax_rms_mm = " << max_rms_mm << "\nmax_gap_edgels = " << max_gap_edgels
-	    << "\nmax_disparity_jump_px = " << max_disparity_jump_px << "\n";
+	fitOptionsBinder().dump(out, *this);
 }
 
 }  // namespace mrolr::stereo
