@@ -1,5 +1,5 @@
 #include <mrolr/arm/GraspFeasibility.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -89,35 +89,34 @@ std::string fmt(const char* text, double a, double b)
 }
 }  // namespace
 
+namespace
+{
+using O = GraspFeasibilityOptions;
+
+const util::OptionsBinder<O>& graspFeasibilityOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("gripper_opening_max_mm", &O::gripper_opening_max_mm, 0, 1e6)
+	    .number("grip_margin_mm", &O::grip_margin_mm, 0, 1e6)
+	    .number("finger_length_mm", &O::finger_length_mm, 0, 1e6)
+	    .number("finger_width_mm", &O::finger_width_mm, 0, 1e6)
+	    .number("approach_distance_mm", &O::approach_distance_mm, 0, 1e6)
+	    .number("table_clearance_mm", &O::table_clearance_mm, 0, 1e6)
+	    .number("neighbour_clearance_mm", &O::neighbour_clearance_mm, 0, 1e6)
+	    .number("sample_step_mm", &O::sample_step_mm, 1e-3, 1e6);
+	return b;
+}
+}  // namespace
+
 void GraspFeasibilityOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                                  const std::string& section)
 {
-	const auto positive = [&](const char* key)
-	{
-		const double v = util::readDouble(cfg, section, key);
-		util::requireInRange(cfg, section, key, v, 0, 1e6);
-		return v;
-	};
-	gripper_opening_max_mm = positive("gripper_opening_max_mm");
-	grip_margin_mm = positive("grip_margin_mm");
-	finger_length_mm = positive("finger_length_mm");
-	finger_width_mm = positive("finger_width_mm");
-	approach_distance_mm = positive("approach_distance_mm");
-	table_clearance_mm = positive("table_clearance_mm");
-	neighbour_clearance_mm = positive("neighbour_clearance_mm");
-	sample_step_mm = positive("sample_step_mm");
-	util::requireInRange(cfg, section, "sample_step_mm", sample_step_mm, 1e-3, 1e6);
+	graspFeasibilityOptionsBinder().load(cfg, section, *this);
 }
 
 void GraspFeasibilityOptions::dump(std::ostream& out) const
 {
-	out << "gripper_opening_max_mm = " << gripper_opening_max_mm
-	    << "\ngrip_margin_mm = " << grip_margin_mm << "\nfinger_length_mm = " << finger_length_mm
-	    << "\nfinger_width_mm = " << finger_width_mm
-	    << "\napproach_distance_mm = " << approach_distance_mm
-	    << "\ntable_clearance_mm = " << table_clearance_mm
-	    << "\nneighbour_clearance_mm = " << neighbour_clearance_mm
-	    << "\nsample_step_mm = " << sample_step_mm << "\n";
+	graspFeasibilityOptionsBinder().dump(out, *this);
 }
 
 std::vector<Eigen::Vector3d> sampleWireFrame(const model::WireFrame& wf, const Eigen::Isometry3d& T,

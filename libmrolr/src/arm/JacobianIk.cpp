@@ -1,5 +1,5 @@
 #include <mrolr/arm/JacobianIk.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <mrpt/math/wrap2pi.h>
 
@@ -43,28 +43,34 @@ Vector6 dlsStep(const Jacobian6& J, const Vector6& e, const JacobianIkOptions& o
 }
 }  // namespace
 
+namespace
+{
+using O = JacobianIkOptions;
+
+const util::OptionsBinder<O>& jacobianIkOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .integer("max_iterations", &O::max_iterations, 1, 1000000)
+	    .number("tolerance_mm", &O::tolerance_mm, 0, 1e6)
+	    .number("tolerance_rad", &O::tolerance_rad, 0, 10)
+	    .number("length_scale_mm", &O::length_scale_mm, 1e-6, 1e6)
+	    .number("damping_max", &O::damping_max, 0, 1e12)
+	    .number("singular_threshold", &O::singular_threshold, 0, 1e12)
+	    .number("max_step_rad", &O::max_step_rad, 1e-6, 10);
+	return b;
+}
+}  // namespace
+
 void JacobianIkOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                            const std::string& section)
 {
-	max_iterations = static_cast<int>(util::readInt(cfg, section, "max_iterations"));
-	util::requireInRange(cfg, section, "max_iterations", max_iterations, 1, 1e6);
-	tolerance_mm = util::readDouble(cfg, section, "tolerance_mm");
-	tolerance_rad = util::readDouble(cfg, section, "tolerance_rad");
-	length_scale_mm = util::readDouble(cfg, section, "length_scale_mm");
-	util::requireInRange(cfg, section, "length_scale_mm", length_scale_mm, 1e-6, 1e6);
-	damping_max = util::readDouble(cfg, section, "damping_max");
-	singular_threshold = util::readDouble(cfg, section, "singular_threshold");
-	max_step_rad = util::readDouble(cfg, section, "max_step_rad");
-	util::requireInRange(cfg, section, "max_step_rad", max_step_rad, 1e-6, 10);
+	jacobianIkOptionsBinder().load(cfg, section, *this);
 }
 
 void JacobianIkOptions::dump(std::ostream& out) const
 {
-	out << std::setprecision(10) << "max_iterations = " << max_iterations
-	    << "\ntolerance_mm = " << tolerance_mm << "\ntolerance_rad = " << tolerance_rad
-	    << "\nlength_scale_mm = " << length_scale_mm << "\ndamping_max = " << damping_max
-	    << "\nsingular_threshold = " << singular_threshold << "\nmax_step_rad = " << max_step_rad
-	    << "\n";
+	out << std::setprecision(10);
+	jacobianIkOptionsBinder().dump(out, *this);
 }
 
 JacobianIk::JacobianIk(const RtxOptions& rtx, const JacobianIkOptions& options)

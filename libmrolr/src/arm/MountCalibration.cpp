@@ -1,6 +1,6 @@
 // The head-to-arm transform from marker positions (eq 6.7.2 over several poses).
 #include <mrolr/arm/MountCalibration.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <Eigen/Geometry>
 
@@ -28,21 +28,29 @@ double spreadOffLine(const Eigen::Matrix3Xd& p)
 }
 }  // namespace
 
+namespace
+{
+using O = MarkerOptions;
+
+const util::OptionsBinder<O>& markerOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .vector3("p_MinG_mm", &O::p_MinG_mm, -1e4, 1e4)
+	    .number("side_mm", &O::side_mm, 5, 500)
+	    .integer("aruco_id", &O::aruco_id, 0, 49);
+	return b;
+}
+}  // namespace
+
 void MarkerOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	const auto p = util::readDoubles(cfg, section, "p_MinG_mm", 3);
-	p_MinG_mm = {p[0], p[1], p[2]};
-	side_mm = util::readDouble(cfg, section, "side_mm");
-	util::requireInRange(cfg, section, "side_mm", side_mm, 5, 500);
-	aruco_id = util::readInt(cfg, section, "aruco_id");
-	util::requireInRange(cfg, section, "aruco_id", aruco_id, 0, 49);
+	markerOptionsBinder().load(cfg, section, *this);
 }
 
 void MarkerOptions::dump(std::ostream& out) const
 {
-	out << "p_MinG_mm = " << p_MinG_mm.transpose() << "\nside_mm = " << side_mm
-	    << "\naruco_id = " << aruco_id << "\n";
+	markerOptionsBinder().dump(out, *this);
 }
 
 MountFit fitHeadInArm(const std::vector<Eigen::Vector3d>& p_MinA_mm,

@@ -172,6 +172,27 @@ class OptionsBinder
 		           });
 	}
 
+	/** Three numbers into a 3-vector (Eigen::Vector3d: constructed from three, indexed by []),
+	 * each in [lo, hi]. */
+	template <class M>
+	OptionsBinder& vector3(const std::string& key, M member, double lo, double hi,
+	                       Presence presence = Presence::Required)
+	{
+		return add(key, presence,
+		           [=](const Cfg& cfg, const std::string& s, Options& o)
+		           {
+			           const auto v = readDoubles(cfg, s, key, 3);
+			           for (const double x : v) requireInRange(cfg, s, key, x, lo, hi);
+			           auto& f = field(o, member);
+			           f = std::remove_reference_t<decltype(f)>(v[0], v[1], v[2]);
+		           },
+		           [=](std::ostream& out, const Options& o)
+		           {
+			           const auto& v = field(o, member);
+			           out << v[0] << " " << v[1] << " " << v[2];
+		           });
+	}
+
 	/** Reads every declared key of @p section into @p o; a required key that is missing, a
 	 * malformed value or one out of range throws ConfigError naming file, section and key. */
 	void load(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
