@@ -28,7 +28,7 @@ TEST(RecogOptions, DumpRoundTrips)
 {
 	auto o = RecognitionOptions::defaults();
 	o.levels[3].rotation_deg = 2.75;
-	o.pose_method = "both";
+	o.pose_method = PoseMethod::Both;
 	std::ostringstream s;
 	s << "[recognition]\n";
 	o.dump(s);

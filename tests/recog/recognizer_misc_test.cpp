@@ -29,7 +29,7 @@ SceneNoise noisy()
 TEST(RecognizerMisc, ArunAndBothPoseMethods)
 {
 	const auto objects = makeLabObjects();
-	for (const char* method : {"arun", "both"})
+	for (const PoseMethod method : {PoseMethod::Arun, PoseMethod::Both})
 	{
 		auto opts = RecognitionOptions::defaults();
 		opts.pose_method = method;
@@ -37,8 +37,8 @@ TEST(RecognizerMisc, ArunAndBothPoseMethods)
 		{
 			const auto T = tablePose(33.0 * k, 30, Eigen::Vector3d(0, -120, 750));
 			const auto r = Recognizer(objects[k], opts).recognize(placeInScene(objects[k], T));
-			ASSERT_TRUE(r.found) << method << " " << objects[k].name;
-			EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6) << method;
+			ASSERT_TRUE(r.found) << int(method) << " " << objects[k].name;
+			EXPECT_LT((r.T_OinS.matrix() - T.matrix()).cwiseAbs().maxCoeff(), 1e-6) << int(method);
 		}
 	}
 }

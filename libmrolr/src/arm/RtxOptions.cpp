@@ -1,5 +1,4 @@
 #include <mrolr/arm/RtxOptions.h>
-#include <mrolr/util/Config.h>
 
 #include <mrolr/util/OptionsBinder.h>
 
@@ -13,21 +12,34 @@ namespace
 constexpr const char* kMotorNames[kMotorCount] = {"column", "shoulder", "elbow",
                                                   "yaw",    "wrist1",   "wrist2"};
 
-double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                    const std::string& key)
-{
-	const double v = util::readDouble(cfg, section, key);
-	util::requireInRange(cfg, section, key, v, 1e-12, 1e6);
-	return v;
-}
+using R = RtxOptions;
+constexpr double kPositive = 1e-12;  // lengths and scale factors: strictly positive
 
-CountRange readRange(const mrpt::config::CConfigFileBase& cfg, const std::string& section, Motor m)
+const util::OptionsBinder<R>& binder()
 {
-	const std::string base = std::string(motorName(m)) + "_counts_";
-	CountRange r{util::readDouble(cfg, section, base + "min"),
-	             util::readDouble(cfg, section, base + "max")};
-	util::requireInRange(cfg, section, base + "max", r.max, r.min, 1e9);
-	return r;
+	static const auto b = []
+	{
+		auto d = util::OptionsBinder<R>()
+		             .number("a2_mm", &R::a2_mm, kPositive, 1e6)
+		             .number("a3_mm", &R::a3_mm, kPositive, 1e6)
+		             .number("d6_mm", &R::d6_mm, kPositive, 1e6)
+		             .number("q1_fixed_deg", &R::q1_fixed_deg, -360, 360)
+		             .number("d1_top_mm", &R::d1_top_mm, -1e6, 1e6)
+		             .number("column_mm_per_count", &R::column_mm_per_count, kPositive, 1e6)
+		             .number("shoulder_deg_per_count", &R::shoulder_deg_per_count, kPositive, 1e6)
+		             .number("elbow_deg_per_count", &R::elbow_deg_per_count, kPositive, 1e6)
+		             .number("yaw_deg_per_count", &R::yaw_deg_per_count, kPositive, 1e6)
+		             .number("wrist_deg_per_count", &R::wrist_deg_per_count, kPositive, 1e6);
+		for (int i = 0; i < kMotorCount; ++i)  // <motor>_counts_min, <motor>_counts_max
+		{
+			const std::string base = std::string(kMotorNames[i]) + "_counts_";
+			d.number(base + "min", [i](R& o) -> double& { return o.limits[i].min; }, -1e9, 1e9);
+			d.number(base + "max", [i](R& o) -> double& { return o.limits[i].max; }, -1e9, 1e9);
+		}
+		d.number("wrist_radius_max_mm", &R::wrist_radius_max_mm, kPositive, 1e6);
+		return d;
+	}();
+	return b;
 }
 }  // namespace
 
@@ -39,19 +51,10 @@ const char* motorName(Motor m)
 void RtxOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                     const std::string& section)
 {
-	a2_mm = readPositive(cfg, section, "a2_mm");
-	a3_mm = readPositive(cfg, section, "a3_mm");
-	d6_mm = readPositive(cfg, section, "d6_mm");
-	q1_fixed_deg = util::readDouble(cfg, section, "q1_fixed_deg");
-	d1_top_mm = util::readDouble(cfg, section, "d1_top_mm");
-	column_mm_per_count = readPositive(cfg, section, "column_mm_per_count");
-	shoulder_deg_per_count = readPositive(cfg, section, "shoulder_deg_per_count");
-	elbow_deg_per_count = readPositive(cfg, section, "elbow_deg_per_count");
-	yaw_deg_per_count = readPositive(cfg, section, "yaw_deg_per_count");
-	wrist_deg_per_count = readPositive(cfg, section, "wrist_deg_per_count");
+	binder().load(cfg, section, *this);
 	for (int i = 0; i < kMotorCount; ++i)
-		limits[i] = readRange(cfg, section, static_cast<Motor>(i));
-	wrist_radius_max_mm = readPositive(cfg, section, "wrist_radius_max_mm");
+		util::requireInRange(cfg, section, std::string(kMotorNames[i]) + "_counts_max",
+		                     limits[i].max, limits[i].min, 1e9);
 }
 
 RtxOptions RtxOptions::fromFile(const std::string& path, const std::string& section)
@@ -61,20 +64,8 @@ RtxOptions RtxOptions::fromFile(const std::string& path, const std::string& sect
 
 void RtxOptions::dump(std::ostream& out) const
 {
-	out << std::setprecision(10) << "a2_mm = " << a2_mm << "\na3_mm = " << a3_mm
-	    << "\nd6_mm = " << d6_mm << "\nq1_fixed_deg = " << q1_fixed_deg
-	    << "\nd1_top_mm = " << d1_top_mm << "\ncolumn_mm_per_count = " << column_mm_per_count
-	    << "\nshoulder_deg_per_count = " << shoulder_deg_per_count
-	    << "\nelbow_deg_per_count = " << elbow_deg_per_count
-	    << "\nyaw_deg_per_count = " << yaw_deg_per_count
-	    << "\nwrist_deg_per_count = " << wrist_deg_per_count << "\n";
-	for (int i = 0; i < kMotorCount; ++i)
-	{
-		const std::string base = std::string(kMotorNames[i]) + "_counts_";
-		out << base << "min = " << limits[i].min << "\n"
-		    << base << "max = " << limits[i].max << "\n";
-	}
-	out << "wrist_radius_max_mm = " << wrist_radius_max_mm << "\n";
+	out << std::setprecision(10);
+	binder().dump(out, *this);
 }
 
 }  // namespace mrolr::arm

@@ -1,5 +1,5 @@
 #include <mrolr/base/LabmateModel.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include "ArcFunctions.h"
 
@@ -11,45 +11,40 @@ namespace mrolr::base
 {
 using detail::arcTerms;
 
+namespace
+{
+using O = LabmateOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& labmateOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("wheel_half_separation_m", &O::wheel_half_separation_m, 1e-3, 10)
+	    .number("velocity_noise_fraction", &O::velocity_noise_fraction, 0, 1)
+	    .number("translation_speed_mps", &O::translation_speed_mps, 1e-6, 10)
+	    .number("rotation_wheel_speed_mps", &O::rotation_wheel_speed_mps, 1e-6, 10)
+	    // the encoder and the body's shape: a model of the thesis's odometry needs neither
+	    .number("encoder_ticks_per_m", &O::encoder_ticks_per_m, 1, 1e8, kOpt)
+	    .number("footprint_length_m", &O::footprint_length_m, 0.05, 5, kOpt)
+	    .number("footprint_width_m", &O::footprint_width_m, 0.05, 5, kOpt)
+	    .number("deck_height_m", &O::deck_height_m, 0.01, 3, kOpt)
+	    .number("mast_half_width_m", &O::mast_half_width_m, 0, 1, kOpt)
+	    .number("mast_top_height_m", &O::mast_top_height_m, 0.01, 5, kOpt);
+	return b;
+}
+}  // namespace
+
 void LabmateOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                         const std::string& section)
 {
-	using util::readDouble;
-	using util::requireInRange;
-	wheel_half_separation_m = readDouble(cfg, section, "wheel_half_separation_m");
-	requireInRange(cfg, section, "wheel_half_separation_m", wheel_half_separation_m, 1e-3, 10);
-	velocity_noise_fraction = readDouble(cfg, section, "velocity_noise_fraction");
-	requireInRange(cfg, section, "velocity_noise_fraction", velocity_noise_fraction, 0, 1);
-	translation_speed_mps = readDouble(cfg, section, "translation_speed_mps");
-	requireInRange(cfg, section, "translation_speed_mps", translation_speed_mps, 1e-6, 10);
-	rotation_wheel_speed_mps = readDouble(cfg, section, "rotation_wheel_speed_mps");
-	requireInRange(cfg, section, "rotation_wheel_speed_mps", rotation_wheel_speed_mps, 1e-6, 10);
-	encoder_ticks_per_m = readDouble(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m);
-	requireInRange(cfg, section, "encoder_ticks_per_m", encoder_ticks_per_m, 1, 1e8);
-	footprint_length_m = readDouble(cfg, section, "footprint_length_m", footprint_length_m);
-	requireInRange(cfg, section, "footprint_length_m", footprint_length_m, 0.05, 5);
-	footprint_width_m = readDouble(cfg, section, "footprint_width_m", footprint_width_m);
-	requireInRange(cfg, section, "footprint_width_m", footprint_width_m, 0.05, 5);
-	deck_height_m = readDouble(cfg, section, "deck_height_m", deck_height_m);
-	requireInRange(cfg, section, "deck_height_m", deck_height_m, 0.01, 3);
-	mast_half_width_m = readDouble(cfg, section, "mast_half_width_m", mast_half_width_m);
-	requireInRange(cfg, section, "mast_half_width_m", mast_half_width_m, 0, 1);
-	mast_top_height_m = readDouble(cfg, section, "mast_top_height_m", mast_top_height_m);
-	requireInRange(cfg, section, "mast_top_height_m", mast_top_height_m, deck_height_m, 5);
+	labmateOptionsBinder().load(cfg, section, *this);
+	util::requireInRange(cfg, section, "mast_top_height_m", mast_top_height_m, deck_height_m, 5);
 }
 
 void LabmateOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "[labmate]\nwheel_half_separation_m  = " << wheel_half_separation_m
-	    << "\nvelocity_noise_fraction  = " << velocity_noise_fraction
-	    << "\ntranslation_speed_mps    = " << translation_speed_mps
-	    << "\nrotation_wheel_speed_mps = " << rotation_wheel_speed_mps
-	    << "\nencoder_ticks_per_m      = " << encoder_ticks_per_m
-	    << "\nfootprint_length_m       = " << footprint_length_m
-	    << "\nfootprint_width_m        = " << footprint_width_m
-	    << "\ndeck_height_m            = " << deck_height_m
-	    << "\nmast_half_width_m        = " << mast_half_width_m
-	    << "\nmast_top_height_m        = " << mast_top_height_m << "\n";
+	out << "[labmate]\n";
+	labmateOptionsBinder().dump(out, *this);
 }
 
 LabmateModel::LabmateModel(const LabmateOptions& options) : options_(options)

@@ -1,32 +1,38 @@
 #include <mrolr/base/TrajectoryPlanner.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <cmath>
 #include <ostream>
 
 namespace mrolr::base
 {
+namespace
+{
+using O = TrajectoryOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& trajectoryOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("step_length_m", &O::step_length_m, 1e-3, 100)
+	    .number("min_step_m", &O::min_step_m, 1e-4, 100)
+	    .number("max_rotation_step_deg", &O::max_rotation_step_deg, 0.1, 360)
+	    .number("position_tolerance_m", &O::position_tolerance_m, 0, 10, kOpt);
+	return b;
+}
+}  // namespace
+
 void TrajectoryOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                            const std::string& section)
 {
-	using util::readDouble;
-	using util::requireInRange;
-	step_length_m = readDouble(cfg, section, "step_length_m");
-	requireInRange(cfg, section, "step_length_m", step_length_m, 1e-3, 100);
-	min_step_m = readDouble(cfg, section, "min_step_m");
-	requireInRange(cfg, section, "min_step_m", min_step_m, 1e-4, step_length_m);
-	max_rotation_step_deg = readDouble(cfg, section, "max_rotation_step_deg");
-	requireInRange(cfg, section, "max_rotation_step_deg", max_rotation_step_deg, 0.1, 360);
-	position_tolerance_m = readDouble(cfg, section, "position_tolerance_m", position_tolerance_m);
-	requireInRange(cfg, section, "position_tolerance_m", position_tolerance_m, 0, 10);
+	trajectoryOptionsBinder().load(cfg, section, *this);
+	util::requireInRange(cfg, section, "min_step_m", min_step_m, 1e-4, step_length_m);
 }
 
 void TrajectoryOptions::dumpToTextStream(std::ostream& out) const
 {
-	out << "[trajectory]\nstep_length_m         = " << step_length_m
-	    << "\nmin_step_m            = " << min_step_m
-	    << "\nmax_rotation_step_deg = " << max_rotation_step_deg
-	    << "\nposition_tolerance_m  = " << position_tolerance_m << "\n";
+	out << "[trajectory]\n";
+	trajectoryOptionsBinder().dump(out, *this);
 }
 
 double wrapAngle(double a)

@@ -3,7 +3,7 @@
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/mission/DockCalibration.h>
 #include <mrolr/stereo/ArucoMarker.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,32 +29,37 @@ double angleDeg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
 }
 }  // namespace
 
+namespace
+{
+using C = DockCalibrationOptions;
+constexpr auto kOpt = util::Presence::Optional;  // calibration was added after the mission files
+
+const util::OptionsBinder<C>& dockCalibrationBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<C>()
+	        .flag("enabled", &C::enabled, kOpt)
+	        .integer("poses", &C::poses, 3, 64, kOpt)
+	        .integer("min_poses", &C::min_poses, 3, 64, kOpt)
+	        .number("column_above_table_mm", &C::column_above_table_mm, 0, 1000, kOpt)
+	        .number("spread_mm", &C::spread_mm, 10, 500, kOpt)
+	        .number("max_rms_mm", &C::max_rms_mm, 0.01, 100, kOpt)
+	        .number("max_change_mm", &C::max_change_mm, 0, 1000, kOpt)
+	        .number("max_change_deg", &C::max_change_deg, 0, 90, kOpt);
+	return b;
+}
+}  // namespace
+
 void DockCalibrationOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                                 const std::string& s)
 {
-	enabled = util::readBool(c, s, "enabled", enabled);
-	poses = static_cast<int>(util::readInt(c, s, "poses", poses));
-	util::requireInRange(c, s, "poses", poses, 3, 64);
-	min_poses = static_cast<int>(util::readInt(c, s, "min_poses", min_poses));
+	dockCalibrationBinder().load(c, s, *this);
 	util::requireInRange(c, s, "min_poses", min_poses, 3, poses);
-	column_above_table_mm = util::readDouble(c, s, "column_above_table_mm", column_above_table_mm);
-	util::requireInRange(c, s, "column_above_table_mm", column_above_table_mm, 0, 1000);
-	spread_mm = util::readDouble(c, s, "spread_mm", spread_mm);
-	util::requireInRange(c, s, "spread_mm", spread_mm, 10, 500);
-	max_rms_mm = util::readDouble(c, s, "max_rms_mm", max_rms_mm);
-	util::requireInRange(c, s, "max_rms_mm", max_rms_mm, 0.01, 100);
-	max_change_mm = util::readDouble(c, s, "max_change_mm", max_change_mm);
-	util::requireInRange(c, s, "max_change_mm", max_change_mm, 0, 1000);
-	max_change_deg = util::readDouble(c, s, "max_change_deg", max_change_deg);
-	util::requireInRange(c, s, "max_change_deg", max_change_deg, 0, 90);
 }
 
 void DockCalibrationOptions::dump(std::ostream& out) const
 {
-	out << "enabled = " << (enabled ? "true" : "false") << "\nposes = " << poses
-	    << "\nmin_poses = " << min_poses << "\ncolumn_above_table_mm = " << column_above_table_mm
-	    << "\nspread_mm = " << spread_mm << "\nmax_rms_mm = " << max_rms_mm
-	    << "\nmax_change_mm = " << max_change_mm << "\nmax_change_deg = " << max_change_deg << "\n";
+	dockCalibrationBinder().dump(out, *this);
 }
 
 DockCalibrator::DockCalibrator(const DockCalibrationOptions& o, const arm::RtxOptions& rtx,

@@ -2,7 +2,7 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/Navigator.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -60,23 +60,31 @@ std::vector<Side> sidesOf(const PlanTable& t)
 }
 }  // namespace
 
+namespace
+{
+using D = DockingOptions;
+constexpr auto kOpt = util::Presence::Optional;  // docking was added after the mission files
+
+const util::OptionsBinder<D>& dockingBinder()
+{
+	static const auto b = util::OptionsBinder<D>()
+	                          .flag("drive_to_reach", &D::drive_to_reach, kOpt)
+	                          .number("standoff_m", &D::standoff_m, 0.05, 5, kOpt)
+	                          .number("lateral_step_m", &D::lateral_step_m, 0.01, 2, kOpt)
+	                          .integer("lateral_steps", &D::lateral_steps, 0, 20, kOpt);
+	return b;
+}
+}  // namespace
+
 void DockingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                         const std::string& s)
 {
-	drive_to_reach = util::readBool(c, s, "drive_to_reach", drive_to_reach);
-	standoff_m = util::readDouble(c, s, "standoff_m", standoff_m);
-	util::requireInRange(c, s, "standoff_m", standoff_m, 0.05, 5);
-	lateral_step_m = util::readDouble(c, s, "lateral_step_m", lateral_step_m);
-	util::requireInRange(c, s, "lateral_step_m", lateral_step_m, 0.01, 2);
-	lateral_steps = static_cast<int>(util::readInt(c, s, "lateral_steps", lateral_steps));
-	util::requireInRange(c, s, "lateral_steps", lateral_steps, 0, 20);
+	dockingBinder().load(c, s, *this);
 }
 
 void DockingOptions::dump(std::ostream& out) const
 {
-	out << "drive_to_reach = " << (drive_to_reach ? "true" : "false")
-	    << "\nstandoff_m = " << standoff_m << "\nlateral_step_m = " << lateral_step_m
-	    << "\nlateral_steps = " << lateral_steps << "\n";
+	dockingBinder().dump(out, *this);
 }
 
 const PlanTable* tableUnder(const std::vector<PlanTable>& tables, const Eigen::Vector3d& p_OinW_m)

@@ -1,6 +1,6 @@
 #include <mrolr/model/AutoCliques.h>
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -65,18 +65,29 @@ Clique cliqueAround(const Info& focus, std::vector<Info> visible, int size)
 }
 }  // namespace
 
+namespace
+{
+using C = CliqueOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [cliques]: every key of config/model.ini
+
+const util::OptionsBinder<C>& cliqueOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<C>()
+	        .integer("clique_size", &C::clique_size, 2, 100, kOpt)
+	        .integer("max_cliques", &C::max_cliques, 0, 1000000, kOpt)
+	        .integer("azimuths", &C::azimuths, 1, 360, kOpt)
+	        .numbers("elevations_deg", &C::elevations_deg, 0, -90, 90, kOpt)  // any count
+	        .number("conic_weight", &C::conic_weight, 0, 1000, kOpt)
+	        .number("facing_margin_mm", &C::facing_margin_mm, 0, 1e6, kOpt);
+	return b;
+}
+}  // namespace
+
 void CliqueOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	clique_size = static_cast<int>(util::readInt(cfg, section, "clique_size", clique_size));
-	max_cliques = static_cast<int>(util::readInt(cfg, section, "max_cliques", max_cliques));
-	azimuths = static_cast<int>(util::readInt(cfg, section, "azimuths", azimuths));
-	if (util::hasKey(cfg, section, "elevations_deg"))
-		elevations_deg = util::readDoubles(cfg, section, "elevations_deg");
-	conic_weight = util::readDouble(cfg, section, "conic_weight", conic_weight);
-	facing_margin_mm = util::readDouble(cfg, section, "facing_margin_mm", facing_margin_mm);
-	util::requireInRange(cfg, section, "clique_size", clique_size, 2, 100);
-	util::requireInRange(cfg, section, "azimuths", azimuths, 1, 360);
+	cliqueOptionsBinder().load(cfg, section, *this);
 }
 
 std::vector<Eigen::Vector3d> viewingDirections(const CliqueOptions& o)

@@ -1,6 +1,6 @@
 #include <mrolr/model/ModelStats.h>
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -67,14 +67,26 @@ void featureErrors(const WireFrame& model, const WireFrame& truth,
 }
 }  // namespace
 
+namespace
+{
+using Q = QualityOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [quality]: every key of config/model.ini
+
+const util::OptionsBinder<Q>& qualityOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<Q>()
+	        .number("tol_mm", &Q::tol_mm, 1e-3, 1e4, kOpt)
+	        .number("max_angle_deg", &Q::max_angle_deg, 0, 90, kOpt)
+	        .number("sample_step_mm", &Q::sample_step_mm, 0.1, 1e3, kOpt);
+	return b;
+}
+}  // namespace
+
 void QualityOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                         const std::string& section)
 {
-	tol_mm = util::readDouble(cfg, section, "tol_mm", tol_mm);
-	max_angle_deg = util::readDouble(cfg, section, "max_angle_deg", max_angle_deg);
-	sample_step_mm = util::readDouble(cfg, section, "sample_step_mm", sample_step_mm);
-	util::requireInRange(cfg, section, "tol_mm", tol_mm, 1e-3, 1e4);
-	util::requireInRange(cfg, section, "sample_step_mm", sample_step_mm, 0.1, 1e3);
+	qualityOptionsBinder().load(cfg, section, *this);
 }
 
 double median(std::vector<double> v)

@@ -2,7 +2,7 @@
 #include <mrolr/model/TurntableBuilder.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/stereo/StereoCalibration.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <opencv2/imgcodecs.hpp>
@@ -72,35 +72,47 @@ TurntableSet loadTurntableSet(const std::string& dir)
 	return s;
 }
 
+namespace
+{
+using O = TurntableOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [turntable]: every key of config/model.ini
+
+const util::OptionsBinder<O>& turntableOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<O>()
+	        .number("keep_radius_mm", &O::keep_radius_mm, 1, 1e5, kOpt)
+	        .number("min_height_mm", &O::min_height_mm, -1e6, 1e6, kOpt)
+	        .number("max_height_mm", &O::max_height_mm, -1e6, 1e6, kOpt)
+	        // also read by ViewSupportOptions (same key), whose range this is
+	        .integer("min_views", &O::min_views, 1, 1000, kOpt)
+	        .number("merge_max_distance_mm",
+	                [](O& o) -> double& { return o.merge.max_distance_mm; }, 0, 1e6, kOpt)
+	        .number("merge_max_angle_deg", [](O& o) -> double& { return o.merge.max_angle_deg; },
+	                0, 90, kOpt)
+	        .number("merge_max_gap_mm", [](O& o) -> double& { return o.merge.max_gap_mm; }, 0,
+	                1e6, kOpt)
+	        .number("merge_max_centre_mm", [](O& o) -> double& { return o.merge.max_centre_mm; },
+	                0, 1e6, kOpt)
+	        .number("merge_max_radius_diff_mm",
+	                [](O& o) -> double& { return o.merge.max_radius_diff_mm; }, 0, 1e6, kOpt)
+	        .number("rim_image_gradient", [](O& o) -> double& { return o.rim_images.min_gradient; },
+	                0, 1e4, kOpt)
+	        .number("rim_image_min_fraction",
+	                [](O& o) -> double& { return o.rim_images.min_fraction; }, 0, 1, kOpt)
+	        .number("rim_image_max_tilt_deg",
+	                [](O& o) -> double& { return o.rim_images.max_tilt_deg; }, 0, 90, kOpt);
+	return b;
+}
+}  // namespace
+
 void TurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                           const std::string& section)
 {
-	keep_radius_mm = util::readDouble(cfg, section, "keep_radius_mm", keep_radius_mm);
-	min_height_mm = util::readDouble(cfg, section, "min_height_mm", min_height_mm);
-	max_height_mm = util::readDouble(cfg, section, "max_height_mm", max_height_mm);
-	min_views = static_cast<int>(util::readInt(cfg, section, "min_views", min_views));
-	merge.max_distance_mm =
-	    util::readDouble(cfg, section, "merge_max_distance_mm", merge.max_distance_mm);
-	merge.max_angle_deg =
-	    util::readDouble(cfg, section, "merge_max_angle_deg", merge.max_angle_deg);
-	merge.max_gap_mm = util::readDouble(cfg, section, "merge_max_gap_mm", merge.max_gap_mm);
-	merge.max_centre_mm =
-	    util::readDouble(cfg, section, "merge_max_centre_mm", merge.max_centre_mm);
-	merge.max_radius_diff_mm =
-	    util::readDouble(cfg, section, "merge_max_radius_diff_mm", merge.max_radius_diff_mm);
-	util::requireInRange(cfg, section, "keep_radius_mm", keep_radius_mm, 1, 1e5);
+	turntableOptionsBinder().load(cfg, section, *this);
 	support.loadFromConfigFile(cfg, section);
 	rims.max_radius_mm = keep_radius_mm;
 	rims.loadFromConfigFile(cfg, section);
-	rim_images.min_gradient =
-	    util::readDouble(cfg, section, "rim_image_gradient", rim_images.min_gradient);
-	rim_images.min_fraction =
-	    util::readDouble(cfg, section, "rim_image_min_fraction", rim_images.min_fraction);
-	rim_images.max_tilt_deg =
-	    util::readDouble(cfg, section, "rim_image_max_tilt_deg", rim_images.max_tilt_deg);
-	util::requireInRange(cfg, section, "rim_image_gradient", rim_images.min_gradient, 0, 1e4);
-	util::requireInRange(cfg, section, "rim_image_min_fraction", rim_images.min_fraction, 0, 1);
-	util::requireInRange(cfg, section, "rim_image_max_tilt_deg", rim_images.max_tilt_deg, 0, 90);
 	rim_chords.min_radius_mm = rims.min_radius_mm;
 	rim_chords.max_radius_mm = rims.max_radius_mm;
 	rim_chords.loadFromConfigFile(cfg, section);

@@ -1,7 +1,7 @@
 #include <mrolr/model/ArcOfBins.h>
 #include <mrolr/model/TurntableBuilderRims.h>
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <Eigen/SVD>
 
@@ -216,32 +216,36 @@ void removeFeatures(std::vector<WireFrame>& views, const std::set<std::pair<size
 }
 }  // namespace
 
+namespace
+{
+using R = RimOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [turntable]: every key of config/model.ini
+
+const util::OptionsBinder<R>& rimOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<R>()
+	        .flag("rim_fit", &R::enabled, kOpt)
+	        .number("rim_tol_mm", &R::tol_mm, 0.01, 100, kOpt)
+	        .number("rim_max_tangent_deg", &R::max_tangent_deg, 0, 90, kOpt)
+	        .number("rim_min_arc_deg", &R::min_arc_deg, 10, 360, kOpt)
+	        .integer("rim_min_views", &R::min_views, 1, 1000, kOpt)
+	        .number("rim_min_radius_mm", &R::min_radius_mm, 0, 1e6, kOpt)
+	        .number("rim_max_radius_mm", &R::max_radius_mm, 0, 1e6, kOpt)
+	        .number("rim_consume_fraction", &R::consume_fraction, 0, 1, kOpt)
+	        .integer("rim_iterations", &R::iterations, 1, 1000000, kOpt);
+	return b;
+}
+}  // namespace
+
 void RimOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s)
 {
-	enabled = util::readBool(cfg, s, "rim_fit", enabled);
-	tol_mm = util::readDouble(cfg, s, "rim_tol_mm", tol_mm);
-	max_tangent_deg = util::readDouble(cfg, s, "rim_max_tangent_deg", max_tangent_deg);
-	min_arc_deg = util::readDouble(cfg, s, "rim_min_arc_deg", min_arc_deg);
-	min_views = static_cast<int>(util::readInt(cfg, s, "rim_min_views", min_views));
-	min_radius_mm = util::readDouble(cfg, s, "rim_min_radius_mm", min_radius_mm);
-	max_radius_mm = util::readDouble(cfg, s, "rim_max_radius_mm", max_radius_mm);
-	consume_fraction = util::readDouble(cfg, s, "rim_consume_fraction", consume_fraction);
-	iterations = static_cast<int>(util::readInt(cfg, s, "rim_iterations", iterations));
-	util::requireInRange(cfg, s, "rim_tol_mm", tol_mm, 0.01, 100);
-	util::requireInRange(cfg, s, "rim_min_arc_deg", min_arc_deg, 10, 360);
-	util::requireInRange(cfg, s, "rim_min_views", min_views, 1, 1000);
-	util::requireInRange(cfg, s, "rim_consume_fraction", consume_fraction, 0, 1);
-	util::requireInRange(cfg, s, "rim_iterations", iterations, 1, 1e6);
+	rimOptionsBinder().load(cfg, s, *this);
 }
 
 void RimOptions::dump(std::ostream& out) const
 {
-	out << "rim_fit = " << (enabled ? "true" : "false") << "\nrim_tol_mm = " << tol_mm
-	    << "\nrim_max_tangent_deg = " << max_tangent_deg << "\nrim_min_arc_deg = " << min_arc_deg
-	    << "\nrim_min_views = " << min_views << "\nrim_min_radius_mm = " << min_radius_mm
-	    << "\nrim_max_radius_mm = " << max_radius_mm
-	    << "\nrim_consume_fraction = " << consume_fraction << "\nrim_iterations = " << iterations
-	    << "\n";
+	rimOptionsBinder().dump(out, *this);
 }
 
 std::vector<Conic3> fitRimsAcrossViews(std::vector<WireFrame>& views, const RimOptions& o)

@@ -1,6 +1,6 @@
 #include <mrolr/model/TurntableBuilderSupport.h>
 #include <mrolr/model/WireFrameSampling.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -56,32 +56,35 @@ void eraseMarked(std::vector<T>& v, const std::vector<bool>& drop, size_t offset
 }
 }  // namespace
 
+namespace
+{
+using V = ViewSupportOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [turntable]: every key of config/model.ini
+
+const util::OptionsBinder<V>& viewSupportOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<V>()
+	        .number("support_tol_mm", &V::tol_mm, 0.01, 1e3, kOpt)
+	        .number("support_max_tangent_deg", &V::max_tangent_deg, 0, 90, kOpt)
+	        .number("support_max_view_angle_deg", &V::max_view_angle_deg, 0, 180, kOpt)
+	        .number("support_min_fraction", &V::min_fraction, 0, 1, kOpt)
+	        .number("support_steep_max_deg", &V::steep_max_deg, 0, 90, kOpt)
+	        .number("support_image_gradient", &V::image_min_gradient, 0, 1e4, kOpt)
+	        .integer("min_views", &V::min_views, 1, 1000, kOpt);
+	return b;
+}
+}  // namespace
+
 void ViewSupportOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                             const std::string& s)
 {
-	tol_mm = util::readDouble(cfg, s, "support_tol_mm", tol_mm);
-	max_tangent_deg = util::readDouble(cfg, s, "support_max_tangent_deg", max_tangent_deg);
-	max_view_angle_deg = util::readDouble(cfg, s, "support_max_view_angle_deg", max_view_angle_deg);
-	min_fraction = util::readDouble(cfg, s, "support_min_fraction", min_fraction);
-	steep_max_deg = util::readDouble(cfg, s, "support_steep_max_deg", steep_max_deg);
-	image_min_gradient = util::readDouble(cfg, s, "support_image_gradient", image_min_gradient);
-	min_views = static_cast<int>(util::readInt(cfg, s, "min_views", min_views));
-	util::requireInRange(cfg, s, "support_tol_mm", tol_mm, 0.01, 1e3);
-	util::requireInRange(cfg, s, "support_max_tangent_deg", max_tangent_deg, 0, 90);
-	util::requireInRange(cfg, s, "support_max_view_angle_deg", max_view_angle_deg, 0, 180);
-	util::requireInRange(cfg, s, "support_min_fraction", min_fraction, 0, 1);
-	util::requireInRange(cfg, s, "support_steep_max_deg", steep_max_deg, 0, 90);
-	util::requireInRange(cfg, s, "min_views", min_views, 1, 1000);
+	viewSupportOptionsBinder().load(cfg, s, *this);
 }
 
 void ViewSupportOptions::dump(std::ostream& out) const
 {
-	out << "support_tol_mm = " << tol_mm << "\nsupport_max_tangent_deg = " << max_tangent_deg
-	    << "\nsupport_max_view_angle_deg = " << max_view_angle_deg
-	    << "\nsupport_min_fraction = " << min_fraction
-	    << "\nsupport_steep_max_deg = " << steep_max_deg
-	    << "\nsupport_image_gradient = " << image_min_gradient << "\nmin_views = " << min_views
-	    << "\n";
+	viewSupportOptionsBinder().dump(out, *this);
 }
 
 double turntableAngleBetween(double a_deg, double b_deg)

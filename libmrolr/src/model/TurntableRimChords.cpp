@@ -1,5 +1,5 @@
 #include <mrolr/model/TurntableRimChords.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <Eigen/QR>
 
@@ -143,23 +143,30 @@ std::optional<Conic3> rimAt(const std::vector<Chord>& chords, const std::vector<
 }
 }  // namespace
 
+namespace
+{
+using R = RimChordOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [turntable]: every key of config/model.ini
+
+const util::OptionsBinder<R>& rimChordOptionsBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<R>()
+	        .integer("rim_chord_min_views", &R::min_views, 0, 1000, kOpt)
+	        .number("rim_chord_max_slope_deg", &R::max_slope_deg, 0, 45, kOpt)
+	        .number("rim_chord_height_tol_mm", &R::height_tol_mm, 0.01, 100, kOpt)
+	        .number("rim_chord_tol_mm", &R::tol_mm, 0.01, 100, kOpt)
+	        .number("rim_chord_min_image_arc_deg", &R::min_image_arc_deg, 0, 360, kOpt)
+	        .number("rim_chord_max_radius_ratio", &R::max_radius_ratio, 1, 10, kOpt)
+	        .number("rim_chord_span_tol_mm", &R::span_tol_mm, 0.01, 100, kOpt);
+	return b;
+}
+}  // namespace
+
 void RimChordOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                          const std::string& s)
 {
-	min_views = static_cast<int>(util::readInt(cfg, s, "rim_chord_min_views", min_views));
-	max_slope_deg = util::readDouble(cfg, s, "rim_chord_max_slope_deg", max_slope_deg);
-	height_tol_mm = util::readDouble(cfg, s, "rim_chord_height_tol_mm", height_tol_mm);
-	tol_mm = util::readDouble(cfg, s, "rim_chord_tol_mm", tol_mm);
-	min_image_arc_deg = util::readDouble(cfg, s, "rim_chord_min_image_arc_deg", min_image_arc_deg);
-	max_radius_ratio = util::readDouble(cfg, s, "rim_chord_max_radius_ratio", max_radius_ratio);
-	span_tol_mm = util::readDouble(cfg, s, "rim_chord_span_tol_mm", span_tol_mm);
-	util::requireInRange(cfg, s, "rim_chord_span_tol_mm", span_tol_mm, 0.01, 100);
-	util::requireInRange(cfg, s, "rim_chord_max_radius_ratio", max_radius_ratio, 1, 10);
-	util::requireInRange(cfg, s, "rim_chord_min_views", min_views, 0, 1000);
-	util::requireInRange(cfg, s, "rim_chord_max_slope_deg", max_slope_deg, 0, 45);
-	util::requireInRange(cfg, s, "rim_chord_height_tol_mm", height_tol_mm, 0.01, 100);
-	util::requireInRange(cfg, s, "rim_chord_tol_mm", tol_mm, 0.01, 100);
-	util::requireInRange(cfg, s, "rim_chord_min_image_arc_deg", min_image_arc_deg, 0, 360);
+	rimChordOptionsBinder().load(cfg, s, *this);
 }
 
 std::vector<Conic3> rimsFromChords(const std::vector<WireFrame>& views,

@@ -1,5 +1,5 @@
 #include <mrolr/recog/RecognitionOptions.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <functional>
 #include <stdexcept>
@@ -75,6 +75,40 @@ void dumpLevelKey(std::ostream& out, const LevelKey& key, const std::vector<Leve
 	for (auto p : levels) out << " " << key.field(p);
 	out << "\n";
 }
+using R = RecognitionOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+/** The keys besides the level schedule (one value per level, readLevelKey) and the clique-use
+ * choices (readCliqueUse, which ModelTable also checks). */
+const util::OptionsBinder<R>& binder()
+{
+	static const auto b =
+	    util::OptionsBinder<R>()
+	        .choice("pose_method", &R::pose_method,
+	                util::ChoiceNames<PoseMethod>{{"faugeras_hebert", PoseMethod::FaugerasHebert},
+	                                              {"arun", PoseMethod::Arun},
+	                                              {"both", PoseMethod::Both}})
+	        .choice("auto_cliques", &R::auto_cliques,
+	                util::ChoiceNames<std::string>{{"recog", "recog"}, {"model", "model"}})
+	        .integer("auto_clique_count", &R::auto_clique_count, 1, 1000)
+	        .integer("auto_clique_size", &R::auto_clique_size, 2, 50)
+	        .integer("max_search_nodes", &R::max_search_nodes, 10, 10000000)
+	        .integer("refine_iterations", &R::refine_iterations, 0, 20)
+	        .integer("verify_clusters", &R::verify_clusters, 1, 10000)
+	        .integer("confirm_levels", &R::confirm_levels, 0, 100)
+	        .number("verify_position_error_mm", &R::verify_position_error_mm, 0.01, 1000)
+	        .number("verify_rotation_deg", &R::verify_rotation_deg, 0.01, 90)
+	        // later refinements: absent, the measured defaults stand (docs/recog.md)
+	        .flag("skip_hopeless_levels", &R::skip_hopeless_levels, kOpt)
+	        .flag("verify_visible_only", &R::verify_visible_only, kOpt)
+	        .number("visible_min_score_factor", &R::visible_min_score_factor, 0.1, 10, kOpt)
+	        .number("upright_max_tilt_deg", &R::upright_max_tilt_deg, 0, 180, kOpt)
+	        .number("ambiguity_margin", &R::ambiguity_margin, 0, 1, kOpt)
+	        .number("ambiguity_min_turn_deg", &R::ambiguity_min_turn_deg, 0, 180, kOpt)
+	        .number("ambiguity_symmetry_mm", &R::ambiguity_symmetry_mm, 0, 1000, kOpt)
+	        .number("ambiguity_symmetry_share", &R::ambiguity_symmetry_share, 0, 1, kOpt);
+	return b;
+}
 }  // namespace
 
 RecognitionOptions RecognitionOptions::defaults()
@@ -102,51 +136,9 @@ void RecognitionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase&
 	readCliqueSizes(cfg, section, lv);
 	for (const auto& key : levelKeys()) readLevelKey(cfg, section, key, lv);
 	levels = std::move(lv);
-	pose_method = util::readString(cfg, section, "pose_method");
-	if (pose_method != "faugeras_hebert" && pose_method != "arun" && pose_method != "both")
-		throw util::ConfigError(util::describeKey(cfg, section, "pose_method") + ": '" +
-		                        pose_method + "' is not one of faugeras_hebert, arun, both");
-	auto_cliques = util::readString(cfg, section, "auto_cliques");
-	if (auto_cliques != "recog" && auto_cliques != "model")
-		throw util::ConfigError(util::describeKey(cfg, section, "auto_cliques") + ": '" +
-		                        auto_cliques + "' is not one of recog, model");
+	binder().load(cfg, section, *this);
 	readCliqueUse(cfg, section, "file_cliques", file_cliques);
 	readCliqueUse(cfg, section, "file_cliques_with_images", file_cliques_with_images);
-	auto readCount = [&](const char* key, long lo, long hi)
-	{
-		const long v = util::readInt(cfg, section, key);
-		util::requireInRange(cfg, section, key, static_cast<double>(v), lo, hi);
-		return static_cast<int>(v);
-	};
-	auto_clique_count = readCount("auto_clique_count", 1, 1000);
-	auto_clique_size = readCount("auto_clique_size", 2, 50);
-	max_search_nodes = readCount("max_search_nodes", 10, 10000000);
-	refine_iterations = readCount("refine_iterations", 0, 20);
-	verify_clusters = readCount("verify_clusters", 1, 10000);
-	confirm_levels = readCount("confirm_levels", 0, 100);
-	verify_position_error_mm = util::readDouble(cfg, section, "verify_position_error_mm");
-	util::requireInRange(cfg, section, "verify_position_error_mm", verify_position_error_mm, 0.01,
-	                     1000);
-	verify_rotation_deg = util::readDouble(cfg, section, "verify_rotation_deg");
-	util::requireInRange(cfg, section, "verify_rotation_deg", verify_rotation_deg, 0.01, 90);
-	skip_hopeless_levels = util::readBool(cfg, section, "skip_hopeless_levels", true);
-	verify_visible_only = util::readBool(cfg, section, "verify_visible_only", true);
-	visible_min_score_factor = util::readDouble(cfg, section, "visible_min_score_factor", 1.2);
-	util::requireInRange(cfg, section, "visible_min_score_factor", visible_min_score_factor, 0.1,
-	                     10);
-	upright_max_tilt_deg = util::readDouble(cfg, section, "upright_max_tilt_deg", 20.0);
-	util::requireInRange(cfg, section, "upright_max_tilt_deg", upright_max_tilt_deg, 0, 180);
-	ambiguity_margin = util::readDouble(cfg, section, "ambiguity_margin", ambiguity_margin);
-	util::requireInRange(cfg, section, "ambiguity_margin", ambiguity_margin, 0, 1);
-	ambiguity_min_turn_deg =
-	    util::readDouble(cfg, section, "ambiguity_min_turn_deg", ambiguity_min_turn_deg);
-	util::requireInRange(cfg, section, "ambiguity_min_turn_deg", ambiguity_min_turn_deg, 0, 180);
-	ambiguity_symmetry_mm =
-	    util::readDouble(cfg, section, "ambiguity_symmetry_mm", ambiguity_symmetry_mm);
-	util::requireInRange(cfg, section, "ambiguity_symmetry_mm", ambiguity_symmetry_mm, 0, 1000);
-	ambiguity_symmetry_share =
-	    util::readDouble(cfg, section, "ambiguity_symmetry_share", ambiguity_symmetry_share);
-	util::requireInRange(cfg, section, "ambiguity_symmetry_share", ambiguity_symmetry_share, 0, 1);
 }
 
 void RecognitionOptions::dump(std::ostream& out) const
@@ -155,24 +147,9 @@ void RecognitionOptions::dump(std::ostream& out) const
 	for (const auto& p : levels) out << " " << p.clique_size;
 	out << "\n";
 	for (const auto& key : levelKeys()) dumpLevelKey(out, key, levels);
-	out << "pose_method = " << pose_method << "\nauto_cliques = " << auto_cliques
-	    << "\nfile_cliques = " << file_cliques
-	    << "\nfile_cliques_with_images = " << file_cliques_with_images
-	    << "\nauto_clique_count = " << auto_clique_count
-	    << "\nauto_clique_size = " << auto_clique_size
-	    << "\nmax_search_nodes = " << max_search_nodes
-	    << "\nrefine_iterations = " << refine_iterations
-	    << "\nverify_clusters = " << verify_clusters << "\nconfirm_levels = " << confirm_levels
-	    << "\nverify_position_error_mm = " << verify_position_error_mm
-	    << "\nverify_rotation_deg = " << verify_rotation_deg
-	    << "\nskip_hopeless_levels = " << (skip_hopeless_levels ? "true" : "false")
-	    << "\nverify_visible_only = " << (verify_visible_only ? "true" : "false")
-	    << "\nvisible_min_score_factor = " << visible_min_score_factor
-	    << "\nupright_max_tilt_deg = " << upright_max_tilt_deg
-	    << "\nambiguity_margin = " << ambiguity_margin
-	    << "\nambiguity_min_turn_deg = " << ambiguity_min_turn_deg
-	    << "\nambiguity_symmetry_mm = " << ambiguity_symmetry_mm
-	    << "\nambiguity_symmetry_share = " << ambiguity_symmetry_share << "\n";
+	binder().dump(out, *this);
+	out << "file_cliques = " << file_cliques
+	    << "\nfile_cliques_with_images = " << file_cliques_with_images << "\n";
 }
 
 }  // namespace mrolr::recog

@@ -37,9 +37,9 @@ std::vector<Correspondence> correspondencesOf(const ModelTable& model, const Ori
 void addPoses(const std::vector<Correspondence>& cs, const RecognitionOptions& o,
               const LevelParams& p, double weight, std::vector<PoseHypothesis>& out)
 {
-	if (o.pose_method != "arun")
+	if (o.pose_method != PoseMethod::Arun)
 		if (auto T = faugerasHebertPose(cs)) out.push_back({*T, weight});
-	if (o.pose_method != "faugeras_hebert")
+	if (o.pose_method != PoseMethod::FaugerasHebert)
 		if (auto T = arunPose(cs, 2 * p.position_error_mm)) out.push_back({*T, weight});
 }
 

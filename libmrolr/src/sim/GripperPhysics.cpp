@@ -1,6 +1,6 @@
 // The gripper against the world's objects and tables: pushes, falls, a grip that must fit.
 #include <mrolr/sim/GripperPhysics.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,28 +59,33 @@ const char* GripperEvent::name(Kind k)
 	return "?";
 }
 
+namespace
+{
+using O = GripperPhysicsOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& gripperPhysicsOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("compliance_mm", &O::compliance_mm, 0, 20, kOpt)
+	    .number("finger_thickness_mm", &O::finger_thickness_mm, 1, 50, kOpt)
+	    .number("sample_step_mm", &O::sample_step_mm, 0.5, 20, kOpt)
+	    .number("motion_step_mm", &O::motion_step_mm, 0.5, 50, kOpt)
+	    .number("knock_over_height_fraction", &O::knock_over_height_fraction, 0, 1, kOpt)
+	    .number("knock_over_aspect", &O::knock_over_aspect, 0, 10, kOpt);
+	return b;
+}
+}  // namespace
+
 void GripperPhysicsOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                                const std::string& section)
 {
-	const auto read = [&](const char* key, double& v, double lo, double hi)
-	{
-		v = util::readDouble(cfg, section, key, v);
-		util::requireInRange(cfg, section, key, v, lo, hi);
-	};
-	read("compliance_mm", compliance_mm, 0, 20);
-	read("finger_thickness_mm", finger_thickness_mm, 1, 50);
-	read("sample_step_mm", sample_step_mm, 0.5, 20);
-	read("motion_step_mm", motion_step_mm, 0.5, 50);
-	read("knock_over_height_fraction", knock_over_height_fraction, 0, 1);
-	read("knock_over_aspect", knock_over_aspect, 0, 10);
+	gripperPhysicsOptionsBinder().load(cfg, section, *this);
 }
 
 void GripperPhysicsOptions::dump(std::ostream& out) const
 {
-	out << "compliance_mm = " << compliance_mm << "\nfinger_thickness_mm = " << finger_thickness_mm
-	    << "\nsample_step_mm = " << sample_step_mm << "\nmotion_step_mm = " << motion_step_mm
-	    << "\nknock_over_height_fraction = " << knock_over_height_fraction
-	    << "\nknock_over_aspect = " << knock_over_aspect << "\n";
+	gripperPhysicsOptionsBinder().dump(out, *this);
 }
 
 std::vector<Eigen::Vector3d> fingerPoints(const JawGeometry& jaws, double thickness_mm,

@@ -1,5 +1,5 @@
 #include <mrolr/sim/SimBase.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <cmath>
 #include <ostream>
@@ -7,37 +7,40 @@
 
 namespace mrolr::sim
 {
+namespace
+{
+using O = SimBaseOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& simBaseOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("ticks_per_m", &O::ticks_per_m, 1, 1e7, kOpt)
+	    .number("slip_probability", &O::slip_probability, 0, 1, kOpt)
+	    .integer("slip_burst_steps", &O::slip_burst_steps, 1, 1000, kOpt)
+	    .number("slip_fraction", &O::slip_fraction, 0, 1, kOpt)
+	    .integer("seed", &O::seed, 0, 4000000000L, kOpt)
+	    .number("footprint_length_m", [](O& o) -> double& { return o.footprint.length_m; }, 0.05,
+	            5, kOpt)
+	    .number("footprint_width_m", [](O& o) -> double& { return o.footprint.width_m; }, 0.05, 5,
+	            kOpt)
+	    .number("footprint_offset_m", [](O& o) -> double& { return o.footprint.offset_m; }, -2, 2,
+	            kOpt)
+	    .number("kick_after_s", &O::kick_after_s, -1e12, 1e12, kOpt)
+	    .number("kick_deg", &O::kick_deg, -180, 180, kOpt);
+	return b;
+}
+}  // namespace
+
 void SimBaseOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                         const std::string& section)
 {
-	using namespace util;
-	ticks_per_m = readDouble(cfg, section, "ticks_per_m", ticks_per_m);
-	slip_probability = readDouble(cfg, section, "slip_probability", slip_probability);
-	slip_burst_steps = int(readInt(cfg, section, "slip_burst_steps", slip_burst_steps));
-	slip_fraction = readDouble(cfg, section, "slip_fraction", slip_fraction);
-	seed = unsigned(readInt(cfg, section, "seed", long(seed)));
-	footprint.length_m = readDouble(cfg, section, "footprint_length_m", footprint.length_m);
-	footprint.width_m = readDouble(cfg, section, "footprint_width_m", footprint.width_m);
-	footprint.offset_m = readDouble(cfg, section, "footprint_offset_m", footprint.offset_m);
-	kick_after_s = readDouble(cfg, section, "kick_after_s", kick_after_s);
-	kick_deg = readDouble(cfg, section, "kick_deg", kick_deg);
-	requireInRange(cfg, section, "kick_deg", kick_deg, -180, 180);
-	requireInRange(cfg, section, "ticks_per_m", ticks_per_m, 1, 1e7);
-	requireInRange(cfg, section, "slip_probability", slip_probability, 0, 1);
-	requireInRange(cfg, section, "slip_burst_steps", slip_burst_steps, 1, 1000);
-	requireInRange(cfg, section, "slip_fraction", slip_fraction, 0, 1);
-	requireInRange(cfg, section, "footprint_length_m", footprint.length_m, 0.05, 5);
-	requireInRange(cfg, section, "footprint_width_m", footprint.width_m, 0.05, 5);
-	requireInRange(cfg, section, "footprint_offset_m", footprint.offset_m, -2, 2);
+	simBaseOptionsBinder().load(cfg, section, *this);
 }
 
 void SimBaseOptions::dump(std::ostream& out) const
 {
-	out << "ticks_per_m = " << ticks_per_m << "\nslip_probability = " << slip_probability
-	    << "\nslip_burst_steps = " << slip_burst_steps << "\nslip_fraction = " << slip_fraction
-	    << "\nseed = " << seed << "\nfootprint_length_m = " << footprint.length_m
-	    << "\nfootprint_width_m = " << footprint.width_m
-	    << "\nfootprint_offset_m = " << footprint.offset_m << "\n";
+	simBaseOptionsBinder().dump(out, *this);
 }
 
 SimBase::SimBase(const base::LabmateModel& model, const SimBaseOptions& options,

@@ -1,5 +1,5 @@
 #include <mrolr/sim/SimHead.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,24 +7,31 @@
 
 namespace mrolr::sim
 {
+namespace
+{
+using O = SimHeadOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& simHeadOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("pan_speed_dps", &O::pan_speed_dps, 1e-3, 1e4, kOpt)
+	    .number("tilt_speed_dps", &O::tilt_speed_dps, 1e-3, 1e4, kOpt)
+	    .number("vergence_speed_dps", &O::vergence_speed_dps, 1e-3, 1e4, kOpt)
+	    .number("settle_s", &O::settle_s, 0, 10, kOpt);
+	return b;
+}
+}  // namespace
+
 void SimHeadOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                         const std::string& section)
 {
-	using namespace util;
-	pan_speed_dps = readDouble(cfg, section, "pan_speed_dps", pan_speed_dps);
-	tilt_speed_dps = readDouble(cfg, section, "tilt_speed_dps", tilt_speed_dps);
-	vergence_speed_dps = readDouble(cfg, section, "vergence_speed_dps", vergence_speed_dps);
-	settle_s = readDouble(cfg, section, "settle_s", settle_s);
-	requireInRange(cfg, section, "pan_speed_dps", pan_speed_dps, 1e-3, 1e4);
-	requireInRange(cfg, section, "tilt_speed_dps", tilt_speed_dps, 1e-3, 1e4);
-	requireInRange(cfg, section, "vergence_speed_dps", vergence_speed_dps, 1e-3, 1e4);
-	requireInRange(cfg, section, "settle_s", settle_s, 0, 10);
+	simHeadOptionsBinder().load(cfg, section, *this);
 }
 
 void SimHeadOptions::dump(std::ostream& out) const
 {
-	out << "pan_speed_dps = " << pan_speed_dps << "\ntilt_speed_dps = " << tilt_speed_dps
-	    << "\nvergence_speed_dps = " << vergence_speed_dps << "\nsettle_s = " << settle_s << "\n";
+	simHeadOptionsBinder().dump(out, *this);
 }
 
 SimHead::SimHead(StereoRenderer& renderer, const mrpt::opengl::COpenGLScene& scene,

@@ -1,7 +1,7 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/sim/ObjectVisual.h>
 #include <mrolr/sim/SimTurntable.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <mrpt/opengl/CBox.h>
 #include <mrpt/opengl/CCylinder.h>
@@ -10,31 +10,34 @@
 
 namespace mrolr::sim
 {
+namespace
+{
+using O = SimTurntableOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& simTurntableOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("step_deg", &O::step_deg, 1, 180, kOpt)
+	    .number("axis_distance_m", &O::axis_distance_m, 0.2, 5, kOpt)
+	    .number("top_below_c0_m", &O::top_below_c0_m, -10, 10, kOpt)
+	    .number("disc_radius_m", &O::disc_radius_m, 0.01, 1, kOpt)
+	    .number("disc_grey", &O::disc_grey, 0, 1, kOpt)
+	    .number("backdrop_grey", &O::backdrop_grey, 0, 1, kOpt)
+	    .number("backdrop_behind_m", &O::backdrop_behind_m, 0.05, 10, kOpt);
+	return b;
+}
+}  // namespace
+
 void SimTurntableOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                              const std::string& section)
 {
-	using namespace util;
-	step_deg = readDouble(cfg, section, "step_deg", step_deg);
-	axis_distance_m = readDouble(cfg, section, "axis_distance_m", axis_distance_m);
-	top_below_c0_m = readDouble(cfg, section, "top_below_c0_m", top_below_c0_m);
-	disc_radius_m = readDouble(cfg, section, "disc_radius_m", disc_radius_m);
-	disc_grey = readDouble(cfg, section, "disc_grey", disc_grey);
-	backdrop_grey = readDouble(cfg, section, "backdrop_grey", backdrop_grey);
-	backdrop_behind_m = readDouble(cfg, section, "backdrop_behind_m", backdrop_behind_m);
-	requireInRange(cfg, section, "disc_grey", disc_grey, 0, 1);
-	requireInRange(cfg, section, "backdrop_grey", backdrop_grey, 0, 1);
-	requireInRange(cfg, section, "backdrop_behind_m", backdrop_behind_m, 0.05, 10);
-	requireInRange(cfg, section, "step_deg", step_deg, 1, 180);
-	requireInRange(cfg, section, "axis_distance_m", axis_distance_m, 0.2, 5);
-	requireInRange(cfg, section, "disc_radius_m", disc_radius_m, 0.01, 1);
+	simTurntableOptionsBinder().load(cfg, section, *this);
 }
 
 void SimTurntableOptions::dump(std::ostream& out) const
 {
-	out << "step_deg = " << step_deg << "\naxis_distance_m = " << axis_distance_m
-	    << "\ntop_below_c0_m = " << top_below_c0_m << "\ndisc_radius_m = " << disc_radius_m
-	    << "\ndisc_grey = " << disc_grey << "\nbackdrop_grey = " << backdrop_grey
-	    << "\nbackdrop_behind_m = " << backdrop_behind_m << "\n";
+	simTurntableOptionsBinder().dump(out, *this);
 }
 
 SimTurntable::SimTurntable(StereoRenderer& renderer, const world::ObjectShape& shape,

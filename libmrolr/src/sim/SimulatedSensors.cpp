@@ -1,10 +1,10 @@
 // The simulator's shortcut sensors: ideal landmark angles and exact scene wire-frames.
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/geometry/IdealHead.h>
-#include <mrolr/sim/SyntheticScene.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SimulatedSensors.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/sim/SyntheticScene.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -120,30 +120,45 @@ model::WireFrame ExactScenes::scene(const geometry::HeadAngles& angles)
 }
 }  // namespace
 
+namespace
+{
+constexpr auto kOpt = util::Presence::Optional;  // test sensors: every key has a default
+
+const util::OptionsBinder<IdealLandmarkOptions>& idealBinder()
+{
+	using I = IdealLandmarkOptions;
+	static const auto b = util::OptionsBinder<I>()
+	                          .number("std_pan_rad", &I::std_pan_rad, 0, 1, kOpt)
+	                          .number("std_elevation_rad", &I::std_elevation_rad, 0, 1, kOpt)
+	                          .number("std_vergence_rad", &I::std_vergence_rad, 0, 1, kOpt)
+	                          .number("max_range_m", &I::max_range_m, 0.1, 100, kOpt);
+	return b;
+}
+
+const util::OptionsBinder<ExactSceneOptions>& exactBinder()
+{
+	using E = ExactSceneOptions;
+	static const auto b =
+	    util::OptionsBinder<E>()
+	        .number("endpoint_sigma_mm", &E::endpoint_sigma_mm, 0, 100, kOpt)
+	        .number("missing_fraction", &E::missing_fraction, 0, 0.9, kOpt)
+	        .number("fragment_probability", &E::fragment_probability, 0, 1, kOpt)
+	        .flag("hide_back_side", &E::hide_back_side, kOpt)
+	        .number("max_object_range_m", &E::max_object_range_m, 0, 1e6, kOpt);
+	return b;
+}
+}  // namespace
+
 void IdealLandmarkOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                               const std::string& s)
 {
-	auto read = [&](const char* key, double& v, double lo, double hi)
-	{
-		v = util::readDouble(c, s, key, v);
-		util::requireInRange(c, s, key, v, lo, hi);
-	};
-	read("std_pan_rad", std_pan_rad, 0, 1);
-	read("std_elevation_rad", std_elevation_rad, 0, 1);
-	read("std_vergence_rad", std_vergence_rad, 0, 1);
-	read("max_range_m", max_range_m, 0.1, 100);
+	idealBinder().load(c, s, *this);
 }
 
 void ExactSceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c,
                                            const std::string& s)
 {
-	endpoint_sigma_mm = util::readDouble(c, s, "endpoint_sigma_mm", endpoint_sigma_mm);
-	missing_fraction = util::readDouble(c, s, "missing_fraction", missing_fraction);
-	fragment_probability = util::readDouble(c, s, "fragment_probability", fragment_probability);
-	hide_back_side = util::readBool(c, s, "hide_back_side", hide_back_side);
-	max_object_range_m = util::readDouble(c, s, "max_object_range_m", max_object_range_m);
-	util::requireInRange(c, s, "missing_fraction", missing_fraction, 0, 0.9);
-	util::requireInRange(c, s, "endpoint_sigma_mm", endpoint_sigma_mm, 0, 100);
+	exactBinder().load(c, s, *this);
 }
 
 std::unique_ptr<hw::LandmarkSensor> makeLandmarkSensor(const std::string& name, const Lab& lab,

@@ -1,6 +1,6 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/sim/StereoRenderer.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <mrpt/opengl/CFBORender.h>
 
@@ -11,30 +11,35 @@
 
 namespace mrolr::sim
 {
+namespace
+{
+using O = RenderOptions;
+constexpr auto kOpt = util::Presence::Optional;
+
+const util::OptionsBinder<O>& renderOptionsBinder()
+{
+	static const auto b = util::OptionsBinder<O>()
+	    .number("noise_sigma_grey", &O::noise_sigma_grey, 0, 100, kOpt)
+	    .number("blur_sigma_px", &O::blur_sigma_px, 0, 20, kOpt)
+	    .integer("seed", &O::seed, 0, 4000000000L, kOpt)
+	    .number("clip_near_m", &O::clip_near_m, 1e-3, 1e6, kOpt)
+	    .number("clip_far_m", &O::clip_far_m, 1e-3, 1e6, kOpt)
+	    .number("light_ambient", &O::light_ambient, 0, 1, kOpt)
+	    .number("light_diffuse", &O::light_diffuse, 0, 1, kOpt);
+	return b;
+}
+}  // namespace
+
 void RenderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	using namespace util;
-	noise_sigma_grey = readDouble(cfg, section, "noise_sigma_grey", noise_sigma_grey);
-	blur_sigma_px = readDouble(cfg, section, "blur_sigma_px", blur_sigma_px);
-	seed = unsigned(readInt(cfg, section, "seed", long(seed)));
-	clip_near_m = readDouble(cfg, section, "clip_near_m", clip_near_m);
-	clip_far_m = readDouble(cfg, section, "clip_far_m", clip_far_m);
-	light_ambient = readDouble(cfg, section, "light_ambient", light_ambient);
-	light_diffuse = readDouble(cfg, section, "light_diffuse", light_diffuse);
-	requireInRange(cfg, section, "noise_sigma_grey", noise_sigma_grey, 0, 100);
-	requireInRange(cfg, section, "blur_sigma_px", blur_sigma_px, 0, 20);
-	requireInRange(cfg, section, "clip_near_m", clip_near_m, 1e-3, clip_far_m);
-	requireInRange(cfg, section, "light_ambient", light_ambient, 0, 1);
-	requireInRange(cfg, section, "light_diffuse", light_diffuse, 0, 1);
+	renderOptionsBinder().load(cfg, section, *this);
+	util::requireInRange(cfg, section, "clip_near_m", clip_near_m, 1e-3, clip_far_m);
 }
 
 void RenderOptions::dump(std::ostream& out) const
 {
-	out << "noise_sigma_grey = " << noise_sigma_grey << "\nblur_sigma_px = " << blur_sigma_px
-	    << "\nseed = " << seed << "\nclip_near_m = " << clip_near_m
-	    << "\nclip_far_m = " << clip_far_m << "\nlight_ambient = " << light_ambient
-	    << "\nlight_diffuse = " << light_diffuse << "\n";
+	renderOptionsBinder().dump(out, *this);
 }
 
 StereoRenderer::StereoRenderer(const geometry::BiSightHead& head, const RenderOptions& options)

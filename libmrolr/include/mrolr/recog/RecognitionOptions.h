@@ -26,13 +26,20 @@ struct LevelParams
 	double verify_min_score = 0.3;  ///< supported fraction of the model needed to accept, [0,1]
 };
 
+/** The pose estimator of clique hypotheses (key pose_method). */
+enum class PoseMethod
+{
+	FaugerasHebert,  ///< faugeras_hebert: the thesis's estimator (PoseEstimation.h)
+	Arun,            ///< arun: OpenGV's point-based estimator
+	Both             ///< both: one hypothesis from each
+};
+
 /** Options of the Recognizer (section [recognition] of config/recognition.ini). */
 struct RecognitionOptions
 {
 	/** The levels, finest first; the search stops at the first level that recognises. */
 	std::vector<LevelParams> levels;
-	/** Pose estimator for clique hypotheses: "faugeras_hebert", "arun" (OpenGV) or "both". */
-	std::string pose_method = "faugeras_hebert";
+	PoseMethod pose_method = PoseMethod::FaugerasHebert;
 	/** Automatic cliques for models without any: "recog" (nearest features of the longest ones)
 	 * or "model" (model::addAutomaticCliques, viewing-direction coverage). */
 	std::string auto_cliques = "recog";

@@ -1,6 +1,6 @@
 #include <mrolr/apps/RecognitionAlignment.h>
 #include <mrolr/util/Cli.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <mrpt/config/CConfigFile.h>
 
@@ -8,37 +8,36 @@ namespace mrolr::apps
 {
 namespace
 {
-std::string readStringOr(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                         const std::string& key, const std::string& fallback)
+using A = AlignOptions;
+constexpr auto kOpt = util::Presence::Optional;  // [align]: every key of config/model.ini
+
+const util::OptionsBinder<A>& alignOptionsBinder()
 {
-	return util::hasKey(cfg, section, key) ? util::readString(cfg, section, key) : fallback;
+	static const auto b =
+	    util::OptionsBinder<A>()
+	        .text("recognition_config", &A::recognition_config, kOpt)
+	        .text("recognition_section", &A::recognition_section, kOpt)
+	        .text("image_section", &A::image_section, kOpt)
+	        .flag("upright_prior", &A::upright_prior, kOpt)
+	        .integer("passes", &A::passes, 1, 100, kOpt)
+	        .integer("seed_view", &A::seed_view, 0, 999, kOpt)
+	        .text("match", &A::match, kOpt);  // images | shorter, checked after loading
+	return b;
 }
 }  // namespace
 
 void AlignOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                       const std::string& section)
 {
-	recognition_config = readStringOr(cfg, section, "recognition_config", recognition_config);
-	recognition_section = readStringOr(cfg, section, "recognition_section", recognition_section);
-	image_section = readStringOr(cfg, section, "image_section", image_section);
-	upright_prior = util::readBool(cfg, section, "upright_prior", upright_prior);
-	passes = static_cast<int>(util::readInt(cfg, section, "passes", passes));
-	seed_view = static_cast<int>(util::readInt(cfg, section, "seed_view", seed_view));
-	match = readStringOr(cfg, section, "match", match);
+	alignOptionsBinder().load(cfg, section, *this);
 	if (match != "images" && match != "shorter")
 		throw util::ConfigError(util::describeKey(cfg, section, "match") + ": '" + match +
 		                        "' is not images or shorter");
-	util::requireInRange(cfg, section, "passes", passes, 1, 100);
-	util::requireInRange(cfg, section, "seed_view", seed_view, 0, 999);
 }
 
 void AlignOptions::dump(std::ostream& out) const
 {
-	out << "recognition_config = " << recognition_config
-	    << "\nrecognition_section = " << recognition_section
-	    << "\nimage_section = " << image_section
-	    << "\nupright_prior = " << (upright_prior ? "true" : "false") << "\npasses = " << passes
-	    << "\nseed_view = " << seed_view << "\nmatch = " << match << "\n";
+	alignOptionsBinder().dump(out, *this);
 }
 
 recog::RecognitionOptions alignmentRecognitionOptions(const AlignOptions& o)
