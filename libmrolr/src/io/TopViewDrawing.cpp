@@ -125,7 +125,7 @@ void drawItem(cv::Mat& img, const PlotFrame& f, const TopViewPlot::Item& it)
 			if (p.allFinite()) px.push_back(pt(f.toPixel(p)));
 		if (it.kind == Kind::Path && px.size() > 1)
 			cv::polylines(img, px, false, it.style.bgr, it.style.thickness_px, cv::LINE_AA);
-		if (it.kind == Kind::Polygons && px.size() > 2) cv::fillPoly(img, std::vector{px}, it.style.bgr);
+		if (it.kind == Kind::Polygons && px.size() > 2) cv::fillPoly(img, std::vector<std::vector<cv::Point>>{px}, it.style.bgr);
 		if (it.kind == Kind::Points)
 			for (const auto& p : px) drawMarker(img, p, it.marker, it.style, it.size_px);
 		if (it.kind == Kind::Ellipses)

@@ -19,7 +19,7 @@ const util::OptionsBinder<O>& simBaseOptionsBinder()
 	    .number("slip_probability", &O::slip_probability, 0, 1, kOpt)
 	    .integer("slip_burst_steps", &O::slip_burst_steps, 1, 1000, kOpt)
 	    .number("slip_fraction", &O::slip_fraction, 0, 1, kOpt)
-	    .integer("seed", &O::seed, 0, 4000000000L, kOpt)
+	    .integer("seed", &O::seed, 0, 4294967295L, kOpt)
 	    .number("footprint_length_m", [](O& o) -> double& { return o.footprint.length_m; }, 0.05,
 	            5, kOpt)
 	    .number("footprint_width_m", [](O& o) -> double& { return o.footprint.width_m; }, 0.05, 5,

@@ -20,7 +20,8 @@ struct StampedVehicle
 	Eigen::Vector3d xv_zxphi = Eigen::Vector3d::Zero();
 };
 
-/** One TUM line: `t x y z qx qy qz qw` with nine significant digits for time and position. */
+/** One TUM line: `t x y z qx qy qz qw`, the time to the nanosecond, the rest to 12 significant
+ * digits. */
 std::string tumLine(const StampedVehicle& s);
 
 /** Writes @p poses to @p path. Throws std::invalid_argument naming the row of a non-finite value
