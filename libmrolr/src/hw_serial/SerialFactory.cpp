@@ -1,33 +1,41 @@
 #include <mrolr/hw_serial/SerialFactory.h>
 #include <mrolr/hw_serial/SerialPortTransport.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <ostream>
 
 namespace mrolr::hw_serial
 {
+namespace
+{
+using L = SerialLinkConfig;
+constexpr auto kOpt = util::Presence::Optional;  // the link's timing: measured defaults
+
+const util::OptionsBinder<L>& linkBinder()
+{
+	static const auto b =
+	    util::OptionsBinder<L>()
+	        .text("port", &L::port)
+	        .integer("baud", &L::baud, 50, 4000000)
+	        .integer("timeout_ms", [](L& o) -> int& { return o.link.timeout_ms; }, 1, 60000, kOpt)
+	        .integer("motion_timeout_ms", [](L& o) -> int& { return o.link.motion_timeout_ms; }, 1,
+	                 600000, kOpt)
+	        .integer("retries", [](L& o) -> int& { return o.link.retries; }, 0, 100, kOpt);
+	return b;
+}
+}  // namespace
+
 void SerialLinkConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                           const std::string& section)
 {
-	port = util::readString(cfg, section, "port");
+	linkBinder().load(cfg, section, *this);
 	if (port.empty()) throw util::ConfigError(util::describeKey(cfg, section, "port") + ": empty");
-	baud = int(util::readInt(cfg, section, "baud"));
-	util::requireInRange(cfg, section, "baud", baud, 50, 4000000);
 	link.device = section;
-	link.timeout_ms = int(util::readInt(cfg, section, "timeout_ms", link.timeout_ms));
-	util::requireInRange(cfg, section, "timeout_ms", link.timeout_ms, 1, 60000);
-	link.motion_timeout_ms =
-	    int(util::readInt(cfg, section, "motion_timeout_ms", link.motion_timeout_ms));
-	util::requireInRange(cfg, section, "motion_timeout_ms", link.motion_timeout_ms, 1, 600000);
-	link.retries = int(util::readInt(cfg, section, "retries", link.retries));
-	util::requireInRange(cfg, section, "retries", link.retries, 0, 100);
 }
 
 void SerialLinkConfig::dump(std::ostream& out) const
 {
-	out << "port = " << port << "\nbaud = " << baud << "\ntimeout_ms = " << link.timeout_ms
-	    << "\nmotion_timeout_ms = " << link.motion_timeout_ms << "\nretries = " << link.retries
-	    << "\n";
+	linkBinder().dump(out, *this);
 }
 
 std::unique_ptr<SerialClient> openSerialClient(const SerialLinkConfig& config)

@@ -1,28 +1,59 @@
 // The mission's device sections (docs/mission.md "Configuration", docs/serial.md "Config keys").
 #include <mrolr/hw_serial/CameraSocketClient.h>
 #include <mrolr/mission/DeviceOptions.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <ostream>
 
 namespace mrolr::mission
 {
+namespace
+{
+const util::OptionsBinder<DeviceChoice>& deviceBinder()
+{
+	static const auto b = util::OptionsBinder<DeviceChoice>().choice(
+	    "driver", &DeviceChoice::serial, util::ChoiceNames<bool>{{"sim", false}, {"serial", true}});
+	return b;
+}
+
+using C = CameraChoice;
+
+/** [device.camera]: absent, the camera is the simulator's. */
+const util::OptionsBinder<C>& cameraBinder()
+{
+	static const auto b = util::OptionsBinder<C>().choice(
+	    "driver", &C::driver,
+	    util::ChoiceNames<C::Driver>{{"sim", C::Driver::Sim},
+	                                 {"socket", C::Driver::Socket},
+	                                 {"camera_sensor", C::Driver::CameraSensor}},
+	    util::Presence::Optional);
+	return b;
+}
+
+/** driver = socket: where the frame grabber listens, and how long a pair may take. */
+const util::OptionsBinder<C>& socketBinder()
+{
+	static const auto b = util::OptionsBinder<C>()
+	                          .text("address", &C::address)
+	                          .integer("timeout_ms", &C::timeout_ms, 10, 600000,
+	                                   util::Presence::Optional);
+	return b;
+}
+}  // namespace
+
 void DeviceChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                       const std::string& sec)
 {
 	section = sec;
-	const auto driver = util::readString(cfg, section, "driver");
-	if (driver != "sim" && driver != "serial")
-		throw util::ConfigError(util::describeKey(cfg, section, "driver") + ": '" + driver +
-		                        "' is not one of sim, serial");
-	serial = driver == "serial";
+	deviceBinder().load(cfg, section, *this);
 	port_key = util::describeKey(cfg, section, "port");
 	if (serial) link.loadFromConfigFile(cfg, section);
 }
 
 void DeviceChoice::dump(std::ostream& out) const
 {
-	out << "[" << section << "]\ndriver = " << (serial ? "serial" : "sim") << "\n";
+	out << "[" << section << "]\n";
+	deviceBinder().dump(out, *this);
 	if (serial) link.dump(out);
 }
 
@@ -50,19 +81,10 @@ void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 {
 	const std::string s = "device.camera";
 	key = util::describeKey(cfg, s, "driver");
-	if (!util::hasKey(cfg, s, "driver")) return;
-	const auto d = util::readString(cfg, s, "driver");
-	if (d == "sim")
-		driver = Driver::Sim;
-	else if (d == "socket")
-		driver = Driver::Socket;
-	else if (d == "camera_sensor")
-		driver = Driver::CameraSensor;
-	else
-		throw util::ConfigError(key + ": '" + d + "' is not one of sim, socket, camera_sensor");
+	cameraBinder().load(cfg, s, *this);
 	if (driver == Driver::CameraSensor) sensor_sections = sectionsText(cfg, s);
 	if (driver != Driver::Socket) return;
-	address = util::readString(cfg, s, "address");
+	socketBinder().load(cfg, s, *this);
 	try
 	{
 		hw_serial::parseCameraAddress(address, s);
@@ -71,16 +93,13 @@ void CameraChoice::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)
 	{
 		throw util::ConfigError(util::describeKey(cfg, s, "address") + ": " + e.what());
 	}
-	timeout_ms = static_cast<int>(util::readInt(cfg, s, "timeout_ms", timeout_ms));
-	util::requireInRange(cfg, s, "timeout_ms", timeout_ms, 10, 600000);
 }
 
 void CameraChoice::dump(std::ostream& out) const
 {
-	const char* names[] = {"sim", "socket", "camera_sensor"};
-	out << "[device.camera]\ndriver = " << names[static_cast<int>(driver)] << "\n";
-	if (driver == Driver::Socket)
-		out << "address = " << address << "\ntimeout_ms = " << timeout_ms << "\n";
+	out << "[device.camera]\n";
+	cameraBinder().dump(out, *this);
+	if (driver == Driver::Socket) socketBinder().dump(out, *this);
 }
 
 void DeviceOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg)

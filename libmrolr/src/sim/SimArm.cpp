@@ -1,6 +1,6 @@
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/sim/SimArm.h>
-#include <mrolr/util/Config.h>
+#include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,43 +14,45 @@ namespace
 const char* kJointNames[7] = {"d1_mm", "q1_deg", "q2_deg", "q3_deg", "q4_deg", "q5_deg", "q6_deg"};
 }
 
+namespace
+{
+using A = SimArmOptions;
+constexpr auto kOpt = util::Presence::Optional;  // the simulator's defaults: the thesis's arm
+
+const util::OptionsBinder<A>& simArmBinder()
+{
+	static const auto b = util::OptionsBinder<A>()
+	                          .numbers("joint_min", &A::min, 7, -1e6, 1e6, kOpt)
+	                          .numbers("joint_max", &A::max, 7, -1e6, 1e6, kOpt)
+	                          .number("open_width_mm", &A::open_width_mm, 1, 1000, kOpt)
+	                          .number("mount_error_mm", &A::mount_error_mm, 0, 200, kOpt)
+	                          .number("mount_error_deg", &A::mount_error_deg, 0, 20, kOpt)
+	                          .flag("draw_arm", &A::drawn, kOpt);
+	return b;
+}
+}  // namespace
+
 void SimArmOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
                                        const std::string& section)
 {
-	const bool given = util::hasKey(cfg, section, "joint_min") || util::hasKey(cfg, section, "joint_max");
-	const auto lo = given ? util::readDoubles(cfg, section, "joint_min", 7)
-	                      : std::vector<double>(min.begin(), min.end());
-	const auto hi = given ? util::readDoubles(cfg, section, "joint_max", 7)
-	                      : std::vector<double>(max.begin(), max.end());
-	for (int i = 0; i < 7; ++i)
-	{
-		min[i] = lo[i], max[i] = hi[i];
-		if (lo[i] >= hi[i])
-			throw util::ConfigError(util::describeKey(cfg, section, "joint_max") + ": " +
-			                        kJointNames[i] + " maximum must exceed its minimum");
-	}
 	if (util::hasKey(cfg, section, "grasp_radius_m"))
 		throw util::ConfigError(util::describeKey(cfg, section, "grasp_radius_m") +
 		                        ": removed; the gripper now holds only what its jaws straddle and "
 		                        "fit ([sim_gripper], docs/sim.md)");
-	open_width_mm = util::readDouble(cfg, section, "open_width_mm", open_width_mm);
-	util::requireInRange(cfg, section, "open_width_mm", open_width_mm, 1, 1000);
-	mount_error_mm = util::readDouble(cfg, section, "mount_error_mm", mount_error_mm);
-	util::requireInRange(cfg, section, "mount_error_mm", mount_error_mm, 0, 200);
-	mount_error_deg = util::readDouble(cfg, section, "mount_error_deg", mount_error_deg);
-	util::requireInRange(cfg, section, "mount_error_deg", mount_error_deg, 0, 20);
-	drawn = util::readBool(cfg, section, "draw_arm", drawn);
+	for (const auto& [key, other] : {std::pair{"joint_min", "joint_max"}, {"joint_max", "joint_min"}})
+		if (util::hasKey(cfg, section, key) && !util::hasKey(cfg, section, other))
+			throw util::ConfigError(util::describeKey(cfg, section, other) + ": missing (" +
+			                        key + " and " + other + " come together)");
+	simArmBinder().load(cfg, section, *this);
+	for (int i = 0; i < 7; ++i)
+		if (min[i] >= max[i])
+			throw util::ConfigError(util::describeKey(cfg, section, "joint_max") + ": " +
+			                        kJointNames[i] + " maximum must exceed its minimum");
 }
 
 void SimArmOptions::dump(std::ostream& out) const
 {
-	out << "joint_min =";
-	for (double v : min) out << " " << v;
-	out << "\njoint_max =";
-	for (double v : max) out << " " << v;
-	out << "\nopen_width_mm = " << open_width_mm << "\nmount_error_mm = " << mount_error_mm
-	    << "\nmount_error_deg = " << mount_error_deg << "\ndraw_arm = " << (drawn ? "true" : "false")
-	    << "\n";
+	simArmBinder().dump(out, *this);
 }
 
 SimArm::SimArm(std::function<Eigen::Isometry3d(const hw::ArmJoints&)> T_GinW,

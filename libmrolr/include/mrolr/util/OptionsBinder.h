@@ -28,6 +28,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <ostream>
 #include <stdexcept>
@@ -153,7 +154,8 @@ class OptionsBinder
 		    });
 	}
 
-	/** Exactly @p count numbers, each in [lo, hi]. */
+	/** Exactly @p count numbers, each in [lo, hi], into a std::vector<double> or a fixed-size
+	 * array of @p count (std::array<double, N>). */
 	template <class M>
 	OptionsBinder& numbers(const std::string& key, M member, size_t count, double lo, double hi,
 	                       Presence presence = Presence::Required)
@@ -163,7 +165,11 @@ class OptionsBinder
 		           {
 			           auto v = readDoubles(cfg, s, key, count);
 			           for (const double x : v) requireInRange(cfg, s, key, x, lo, hi);
-			           field(o, member) = std::move(v);
+			           auto& f = field(o, member);
+			           if constexpr (std::is_same_v<std::decay_t<decltype(f)>, std::vector<double>>)
+				           f = std::move(v);
+			           else
+				           std::copy(v.begin(), v.end(), f.begin());
 		           },
 		           [=](std::ostream& out, const Options& o)
 		           {
