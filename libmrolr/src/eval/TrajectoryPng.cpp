@@ -88,13 +88,10 @@ void addEstimate(io::TopViewPlot& plot, const mission::MissionResult& r)
 {
 	plot.addPath("dead reckoning", pathOf(r.path, &PathSample::odometry), {{0, 0, 220}, 2});
 	plot.addPath("estimate", pathOf(r.path, &PathSample::estimate), {{200, 0, 0}, 2});
-	std::vector<V2> centres;
 	std::vector<Eigen::Matrix2d> P;
-	const size_t every = std::max<size_t>(1, r.path.size() / kMaxPathEllipses);
-	for (size_t i = 0; i < r.path.size(); i += every)
-		centres.push_back(zxOf(r.path[i].estimate)),
-		    P.push_back(io::zxBlockOfVehicle(r.path[i].P_vv));
-	plot.addEllipses95("estimate, 95 % ellipse", centres, P, {{200, 0, 0}, 2});
+	for (const auto& s : r.path) P.push_back(io::zxBlockOfVehicle(s.P_vv));
+	plot.addEllipses95("estimate, 95 % ellipse", pathOf(r.path, &PathSample::estimate), P,
+	                   {{200, 0, 0}, 2}, kMaxPathEllipses);
 	std::vector<V2> map;
 	std::vector<Eigen::Matrix2d> P_map;
 	for (const auto& m : r.map)

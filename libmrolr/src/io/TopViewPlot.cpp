@@ -80,19 +80,24 @@ void TopViewPlot::addPoints(const std::string& label, const std::vector<Eigen::V
 
 void TopViewPlot::addEllipses95(const std::string& label,
                                 const std::vector<Eigen::Vector2d>& centres_zx,
-                                const std::vector<Eigen::Matrix2d>& P_zx, const PlotStyle& style)
+                                const std::vector<Eigen::Matrix2d>& P_zx, const PlotStyle& style,
+                                size_t at_most)
 {
 	if (centres_zx.size() != P_zx.size())
 		throw std::invalid_argument("TopViewPlot::addEllipses95 '" + label + "': " +
 		                            std::to_string(centres_zx.size()) + " centres but " +
 		                            std::to_string(P_zx.size()) + " covariances");
-	for (size_t i = 0; i < centres_zx.size(); ++i)
+	const size_t every = at_most > 0 ? std::max<size_t>(1, centres_zx.size() / at_most) : 1;
+	std::vector<Eigen::Vector2d> centres;
+	std::vector<Eigen::Matrix2d> P;
+	for (size_t i = 0; i < centres_zx.size(); i += every)
 	{
 		const double r = ellipse95(P_zx[i]).major_m;
 		grow(centres_zx[i] - Eigen::Vector2d::Constant(r));
 		grow(centres_zx[i] + Eigen::Vector2d::Constant(r));
+		centres.push_back(centres_zx[i]), P.push_back(P_zx[i]);
 	}
-	items_.push_back({Item::Kind::Ellipses, label, style, Marker::Cross, 0, {centres_zx}, P_zx});
+	items_.push_back({Item::Kind::Ellipses, label, style, Marker::Cross, 0, {centres}, P});
 }
 
 void TopViewPlot::addPolygons(const std::string& label,

@@ -23,23 +23,16 @@ const util::ChoiceNames<JacobianPoint>& jacobianNames()
 	return names;
 }
 
-template <class E>
-std::string nameOf(const util::ChoiceNames<E>& names, E value)
-{
-	for (const auto& [n, v] : names)
-		if (v == value) return n;
-	return "?";
-}
 }  // namespace
 
 std::string toString(UpdateMethod m)
 {
-	return nameOf(updateMethodNames(), m);
+	return util::nameOf(updateMethodNames(), m);
 }
 
 std::string toString(JacobianPoint point)
 {
-	return nameOf(jacobianNames(), point);
+	return util::nameOf(jacobianNames(), point);
 }
 
 namespace

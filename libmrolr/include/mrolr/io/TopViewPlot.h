@@ -83,10 +83,12 @@ class TopViewPlot
 	/** Points with a marker of @p size_px. */
 	void addPoints(const std::string& label, const std::vector<Eigen::Vector2d>& zx, Marker marker,
 	               const PlotStyle& style, int size_px = 10);
-	/** A 95 % ellipse around each centre; @p P_zx[i] is centre i's (z, x) covariance (m²).
-	 * Throws std::invalid_argument when the counts differ. */
+	/** A 95 % ellipse around each centre; @p P_zx[i] is centre i's (z, x) covariance (m²). With
+	 * @p at_most > 0 only that many, evenly spaced along the list (a path's ellipses would
+	 * otherwise cover it). Throws std::invalid_argument when the counts differ. */
 	void addEllipses95(const std::string& label, const std::vector<Eigen::Vector2d>& centres_zx,
-	                   const std::vector<Eigen::Matrix2d>& P_zx, const PlotStyle& style);
+	                   const std::vector<Eigen::Matrix2d>& P_zx, const PlotStyle& style,
+	                   size_t at_most = 0);
 	/** Filled polygons (footprints of tables, obstacles). */
 	void addPolygons(const std::string& label,
 	                 const std::vector<std::vector<Eigen::Vector2d>>& polygons_zx,

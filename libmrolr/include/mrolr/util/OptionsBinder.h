@@ -59,6 +59,15 @@ std::string listNames(const ChoiceNames<E>& names)
 	return out;
 }
 
+/** The name of @p value among @p names ("?" when it has none): what a dump writes. */
+template <class E>
+std::string nameOf(const ChoiceNames<E>& names, const E& value)
+{
+	for (const auto& [n, v] : names)
+		if (v == value) return n;
+	return "?";
+}
+
 template <class Options>
 class OptionsBinder
 {
@@ -147,11 +156,7 @@ class OptionsBinder
 			    throw ConfigError(describeKey(cfg, s, key) + ": '" + v + "' is not one of " +
 			                      listNames(names));
 		    },
-		    [=](std::ostream& out, const Options& o)
-		    {
-			    for (const auto& [n, e] : names)
-				    if (e == field(o, member)) out << n;
-		    });
+		    [=](std::ostream& out, const Options& o) { out << nameOf(names, field(o, member)); });
 	}
 
 	/** Exactly @p count numbers, each in [lo, hi], into a std::vector<double> or a fixed-size

@@ -34,13 +34,10 @@ void writePathPlot(const std::string& png, const std::string& title, const world
 	             {{0, 0, 220}, 2});
 	plot.addPath("true path", pathOf(run, &eval::StepRecord::truth), {{0, 160, 0}, 2});
 	plot.addPath("EKF-SLAM estimate", pathOf(run, &eval::StepRecord::estimate), {{200, 0, 0}, 2});
-	std::vector<V2> centres;
 	std::vector<Eigen::Matrix2d> P;
-	const size_t every = std::max<size_t>(1, run.steps.size() / kMaxPathEllipses);
-	for (size_t k = 0; k < run.steps.size(); k += every)
-		centres.push_back(run.steps[k].estimate.head<2>()),
-		    P.push_back(io::zxBlockOfVehicle(run.steps[k].P_vv));
-	plot.addEllipses95("estimate, 95 % ellipse", centres, P, {{200, 0, 0}, 2});
+	for (const auto& s : run.steps) P.push_back(io::zxBlockOfVehicle(s.P_vv));
+	plot.addEllipses95("estimate, 95 % ellipse", pathOf(run, &eval::StepRecord::estimate), P,
+	                   {{200, 0, 0}, 2}, kMaxPathEllipses);
 	std::vector<V2> mapped;
 	std::vector<Eigen::Matrix2d> P_map;
 	for (size_t i = 0; i < run.final_positions.size(); ++i)

@@ -81,13 +81,10 @@ void writePlot(const std::string& dir, const std::string& title,
 	plot.addPath("dead reckoning", pathOf(steps, &SlamStepLog::x_dr), {{0, 0, 220}, 2});
 	plot.addPath("true path", pathOf(steps, &SlamStepLog::x_true), {{0, 160, 0}, 2});
 	plot.addPath("SLAM estimate", pathOf(steps, &SlamStepLog::x_est), {{200, 0, 0}, 2});
-	std::vector<Eigen::Vector2d> centres;
 	std::vector<Eigen::Matrix2d> P;
-	const size_t every = std::max<size_t>(1, steps.size() / kMaxPathEllipses);
-	for (size_t k = 0; k < steps.size(); k += every)
-		centres.push_back(steps[k].x_est.head<2>()),
-		    P.push_back(steps[k].var_est.head<2>().asDiagonal());
-	plot.addEllipses95("estimate, 95 % ellipse (variances)", centres, P, {{200, 0, 0}, 2});
+	for (const auto& s : steps) P.push_back(s.var_est.head<2>().asDiagonal());
+	plot.addEllipses95("estimate, 95 % ellipse (variances)", pathOf(steps, &SlamStepLog::x_est), P,
+	                   {{200, 0, 0}, 2}, kMaxPathEllipses);
 	std::vector<Eigen::Vector2d> mapped;
 	std::vector<Eigen::Matrix2d> P_map;
 	for (const auto& m : map)
