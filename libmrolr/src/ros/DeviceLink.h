@@ -4,6 +4,7 @@
 // a fault. Single-threaded: the replies are delivered on the link's own callback queue, which only
 // call() spins, so a device call is as deterministic as one in process.
 #include <mrolr/hw/Devices.h>
+#include <mrolr/ros/DeviceTopics.h>
 
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
@@ -49,7 +50,7 @@ class DeviceLink
 	template <typename M>
 	::ros::Publisher command(const std::string& topic)
 	{
-		auto p = nh_.advertise<M>(topic, 4);
+		auto p = nh_.advertise<M>(topic, topics::kPublisherQueue);
 		commands_.push_back(p);
 		return p;
 	}
@@ -100,7 +101,8 @@ std::shared_ptr<Latest<M>> DeviceLink::reply(const std::string& topic)
 	    });
 	so.callback_queue = &queue_;
 	so.transport_hints = ::ros::TransportHints().tcpNoDelay();
-	replies_.push_back({nh_.resolveName(topic), nh_.subscribe(so), [latest] { return latest->count; },
+	replies_.push_back({nh_.resolveName(topic), nh_.subscribe(so),
+	                    [latest] { return latest->count; },
 	                    [latest] { return latest->publisher; }});
 	return latest;
 }

@@ -135,17 +135,19 @@ struct DeviceServer::Impl
 			                                   ++commands;
 			                                   fn(*m);
 		                                   }),
-		                               ::ros::VoidConstPtr(), ::ros::TransportHints().tcpNoDelay()));
+		                               ::ros::VoidConstPtr(),
+		                               ::ros::TransportHints().tcpNoDelay()));
 	}
 
 	void serveBase(::ros::NodeHandle& nh)
 	{
-		odom = nh.advertise<nav_msgs::Odometry>(topics::kOdom, 8);
-		base_joints = nh.advertise<sensor_msgs::JointState>(topics::kBaseJoints, 8);
-		bumper = nh.advertise<std_msgs::Bool>(topics::kBumper, 8);
-		base_clock = nh.advertise<std_msgs::Float64>(topics::kBaseClock, 8);
-		base_fault = nh.advertise<std_msgs::String>(topics::kBaseFault, 8);
-		tf = nh.advertise<tf2_msgs::TFMessage>("/tf", 32);
+		odom = nh.advertise<nav_msgs::Odometry>(topics::kOdom, topics::kPublisherQueue);
+		base_joints =
+		    nh.advertise<sensor_msgs::JointState>(topics::kBaseJoints, topics::kPublisherQueue);
+		bumper = nh.advertise<std_msgs::Bool>(topics::kBumper, topics::kPublisherQueue);
+		base_clock = nh.advertise<std_msgs::Float64>(topics::kBaseClock, topics::kPublisherQueue);
+		base_fault = nh.advertise<std_msgs::String>(topics::kBaseFault, topics::kPublisherQueue);
+		tf = nh.advertise<tf2_msgs::TFMessage>("/tf", topics::kPublisherQueue);
 		on<trajectory_msgs::JointTrajectory>(nh, topics::kBaseCommand,
 		                                     [this](const auto& m) { baseCommand(m); });
 	}
@@ -172,7 +174,8 @@ struct DeviceServer::Impl
 			bumper.publish(flag(o.bumper));
 			base_clock.publish(number(o.time_s));
 			tf2_msgs::TFMessage t;
-			t.transforms.push_back(toTransformMsg(planarPose(o.xv_zxphi), "odom", "base_link", o.time_s));
+			t.transforms.push_back(
+			    toTransformMsg(planarPose(o.xv_zxphi), "odom", "base_link", o.time_s));
 			tf.publish(t);
 			if (stepped && *after_step) (*after_step)(o.time_s);
 		}
@@ -181,13 +184,16 @@ struct DeviceServer::Impl
 
 	void serveHead(::ros::NodeHandle& nh)
 	{
-		head_joints = nh.advertise<sensor_msgs::JointState>(topics::kHeadJoints, 8);
-		settle = nh.advertise<std_msgs::Float64>(topics::kHeadSettle, 8);
-		head_fault = nh.advertise<std_msgs::String>(topics::kHeadFault, 8);
-		left = nh.advertise<sensor_msgs::Image>(topics::kLeftImage, 4);
-		right = nh.advertise<sensor_msgs::Image>(topics::kRightImage, 4);
-		stereo_clock = nh.advertise<std_msgs::Float64>(topics::kStereoClock, 8);
-		stereo_fault = nh.advertise<std_msgs::String>(topics::kStereoFault, 8);
+		head_joints =
+		    nh.advertise<sensor_msgs::JointState>(topics::kHeadJoints, topics::kPublisherQueue);
+		settle = nh.advertise<std_msgs::Float64>(topics::kHeadSettle, topics::kPublisherQueue);
+		head_fault = nh.advertise<std_msgs::String>(topics::kHeadFault, topics::kPublisherQueue);
+		left = nh.advertise<sensor_msgs::Image>(topics::kLeftImage, topics::kPublisherQueue);
+		right = nh.advertise<sensor_msgs::Image>(topics::kRightImage, topics::kPublisherQueue);
+		stereo_clock =
+		    nh.advertise<std_msgs::Float64>(topics::kStereoClock, topics::kPublisherQueue);
+		stereo_fault =
+		    nh.advertise<std_msgs::String>(topics::kStereoFault, topics::kPublisherQueue);
 		on<trajectory_msgs::JointTrajectory>(nh, topics::kHeadCommand,
 		                                     [this](const auto& m) { headCommand(m); });
 		on<std_msgs::Empty>(nh, topics::kStereoTrigger, [this](const auto&) { grab(); });
@@ -238,16 +244,19 @@ struct DeviceServer::Impl
 
 	void serveArm(::ros::NodeHandle& nh)
 	{
-		arm_joints = nh.advertise<sensor_msgs::JointState>(topics::kArmJoints, 8);
-		closed = nh.advertise<std_msgs::Bool>(topics::kGripperClosed, 8);
-		docked = nh.advertise<std_msgs::Bool>(topics::kArmDocked, 8);
-		arm_fault = nh.advertise<std_msgs::String>(topics::kArmFault, 8);
+		arm_joints =
+		    nh.advertise<sensor_msgs::JointState>(topics::kArmJoints, topics::kPublisherQueue);
+		closed = nh.advertise<std_msgs::Bool>(topics::kGripperClosed, topics::kPublisherQueue);
+		docked = nh.advertise<std_msgs::Bool>(topics::kArmDocked, topics::kPublisherQueue);
+		arm_fault = nh.advertise<std_msgs::String>(topics::kArmFault, topics::kPublisherQueue);
 		on<trajectory_msgs::JointTrajectory>(nh, topics::kArmCommand,
 		                                     [this](const auto& m) { armCommand(m); });
-		on<std_msgs::Bool>(nh, topics::kGripperCommand, [this](const auto& m)
+		on<std_msgs::Bool>(nh, topics::kGripperCommand,
+		                   [this](const auto& m)
 		                   { armReply(faultOf([&] { d.arm->setGripper(m.data); })); });
 		on<std_msgs::Bool>(nh, topics::kDockCommand,
-		                   [this](const auto& m) { armReply(faultOf([&] { d.arm->dock(m.data); })); });
+		                   [this](const auto& m)
+		                   { armReply(faultOf([&] { d.arm->dock(m.data); })); });
 	}
 
 	void armCommand(const trajectory_msgs::JointTrajectory& m)

@@ -24,6 +24,15 @@
 
 namespace mrolr::ros::topics
 {
+/** Outgoing queue of every topic MROLR's nodes publish, per subscriber. The robot takes each of
+ * the lab's replies before its next command, but a recorder (mrolr-ros-bag) compressing images on a
+ * busy machine can lag behind by dozens of pairs; roscpp drops the oldest message past this depth,
+ * so it is deep enough that a bag never loses one (a full queue of images is about 256 MB, held
+ * only while a recorder lags). */
+inline constexpr unsigned kPublisherQueue = 256;
+/** Incoming queue of each topic a recorder subscribes to, for the same reason. */
+inline constexpr unsigned kRecorderQueue = 1024;
+
 inline const std::string kBaseCommand = "base/command";
 inline const std::string kOdom = "odom";
 inline const std::string kBaseJoints = "base/joint_states";

@@ -69,16 +69,15 @@ class Recorder
 	void record(const std::string& topic)
 	{
 		const std::string name = nh_.resolveName(topic);
-		subs_.push_back(nh_.subscribe<M>(
-		    topic, 64,
-		    boost::function<void(const typename M::ConstPtr&)>(
-		        [this, name](const typename M::ConstPtr& m)
-		        {
-			        ::ros::Time t = stampOf(*m);
-			        if (t.isZero()) t = ::ros::Time::now();
-			        bag_.write(name, t, *m);
-			        ++counts_[name];
-		        })));
+		subs_.push_back(nh_.subscribe<M>(topic, ros::topics::kRecorderQueue,
+		                                 boost::function<void(const typename M::ConstPtr&)>(
+		                                     [this, name](const typename M::ConstPtr& m)
+		                                     {
+			                                     ::ros::Time t = stampOf(*m);
+			                                     if (t.isZero()) t = ::ros::Time::now();
+			                                     bag_.write(name, t, *m);
+			                                     ++counts_[name];
+		                                     })));
 	}
 
  private:
@@ -92,12 +91,13 @@ void recordAll(Recorder& r)
 {
 	namespace t = ros::topics;
 	for (const auto& topic : {t::kLeftImage, t::kRightImage}) r.record<sensor_msgs::Image>(topic);
-	for (const auto& topic : {t::kLeftInfo, t::kRightInfo}) r.record<sensor_msgs::CameraInfo>(topic);
+	for (const auto& topic : {t::kLeftInfo, t::kRightInfo})
+		r.record<sensor_msgs::CameraInfo>(topic);
 	r.record<nav_msgs::Odometry>(t::kOdom);
 	for (const auto& topic : {t::kBaseJoints, t::kHeadJoints, t::kArmJoints})
 		r.record<sensor_msgs::JointState>(topic);
-	for (const auto& topic : {t::kBumper, t::kGripperClosed, t::kArmDocked, t::kGripperCommand,
-	                          t::kDockCommand})
+	for (const auto& topic :
+	     {t::kBumper, t::kGripperClosed, t::kArmDocked, t::kGripperCommand, t::kDockCommand})
 		r.record<std_msgs::Bool>(topic);
 	for (const auto& topic : {t::kBaseCommand, t::kHeadCommand, t::kArmCommand})
 		r.record<trajectory_msgs::JointTrajectory>(topic);

@@ -74,13 +74,16 @@ int RosLabApp::run(std::ostream& out)
 	ros::waitForMaster(master_timeout_ms);
 	::ros::NodeHandle nh;
 	ros::DeviceServer server(nh, {&lab.base(), &lab.head(), &lab.arm()});
-	auto truth = nh.advertise<geometry_msgs::PoseStamped>(ros::topics::kTruthPose, 8, true);
+	auto truth = nh.advertise<geometry_msgs::PoseStamped>(ros::topics::kTruthPose,
+	                                                      ros::topics::kPublisherQueue, true);
 	truth.publish(truthMsg(lab, lab.base().odometry().time_s));
 	server.after_step = [&](double t) { truth.publish(truthMsg(lab, t)); };
 	const auto camera = geometry::BiSightHead(lab.options().bisight).camera().toTCamera();
-	server.after_grab = [&, left = nh.advertise<sensor_msgs::CameraInfo>(ros::topics::kLeftInfo, 8),
-	                     right = nh.advertise<sensor_msgs::CameraInfo>(ros::topics::kRightInfo, 8)](
-	                        double t)
+	server.after_grab = [&,
+	                     left = nh.advertise<sensor_msgs::CameraInfo>(ros::topics::kLeftInfo,
+	                                                                  ros::topics::kPublisherQueue),
+	                     right = nh.advertise<sensor_msgs::CameraInfo>(
+	                         ros::topics::kRightInfo, ros::topics::kPublisherQueue)](double t)
 	{
 		left.publish(ros::toCameraInfo(camera, t, "left_camera"));
 		right.publish(ros::toCameraInfo(camera, t, "right_camera"));

@@ -17,13 +17,14 @@ namespace mrolr::apps
 namespace
 {
 constexpr double kChi2_3dof_95 = 7.815;  ///< the 95 % quantile of χ² with 3 degrees of freedom
-constexpr size_t kPathEverySteps = 10;  ///< mrolr/path is republished after this many estimates
+constexpr size_t kPathEverySteps = 10;   ///< mrolr/path is republished after this many estimates
 
 /** A pose in thesis axes (W) as one in `world`'s REP 103 axes (geometry/Frames.h). */
 Eigen::Isometry3d toRosAxes(const Eigen::Isometry3d& T_thesis)
 {
 	Eigen::Isometry3d T;
-	T.matrix() = geometry::poseToMrpt(T_thesis).getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>()
+	T.matrix() = geometry::poseToMrpt(T_thesis)
+	                 .getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>()
 	                 .asEigen();
 	return T;
 }
@@ -91,13 +92,19 @@ visualization_msgs::MarkerArray mapMarkers(const std::vector<mission::MappedLand
 
 RobotView::RobotView(::ros::NodeHandle& nh, const geometry::BiSightHead& head,
                      const arm::RtxOptions& rtx, const arm::ArmMount& mount)
-    : head_(head), rtx_(rtx), mount_(mount),
-      estimate_(nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(ros::topics::kEstimate, 16)),
-      path_(nh.advertise<nav_msgs::Path>(ros::topics::kPath, 2, true)),
-      tf_(nh.advertise<tf2_msgs::TFMessage>("/tf", 32)),
-      object_(nh.advertise<geometry_msgs::PoseStamped>(ros::topics::kObjectPose, 2, true)),
-      stage_(nh.advertise<std_msgs::String>(ros::topics::kStage, 8, true)),
-      map_(nh.advertise<visualization_msgs::MarkerArray>(ros::topics::kMap, 2, true))
+    : head_(head),
+      rtx_(rtx),
+      mount_(mount),
+      estimate_(nh.advertise<geometry_msgs::PoseWithCovarianceStamped>(
+          ros::topics::kEstimate, ros::topics::kPublisherQueue)),
+      path_(nh.advertise<nav_msgs::Path>(ros::topics::kPath, ros::topics::kPublisherQueue, true)),
+      tf_(nh.advertise<tf2_msgs::TFMessage>("/tf", ros::topics::kPublisherQueue)),
+      object_(nh.advertise<geometry_msgs::PoseStamped>(ros::topics::kObjectPose,
+                                                       ros::topics::kPublisherQueue, true)),
+      stage_(
+          nh.advertise<std_msgs::String>(ros::topics::kStage, ros::topics::kPublisherQueue, true)),
+      map_(nh.advertise<visualization_msgs::MarkerArray>(ros::topics::kMap,
+                                                         ros::topics::kPublisherQueue, true))
 {
 }
 
@@ -118,8 +125,9 @@ void RobotView::estimate(const mission::PathSample& s)
 	// the whole path each time costs its length: every few steps, and at the end, is enough
 	if (path_msg_.poses.size() % kPathEverySteps == 1) path_.publish(path_msg_);
 	// REP 105: world → odom is the estimate's correction of the dead reckoning
-	publishTf(tf_, ros::toTransformMsg(ros::planarPose(s.estimate) * ros::planarPose(s.odometry).inverse(),
-	                                   "world", "odom", s.device_time_s));
+	publishTf(tf_, ros::toTransformMsg(
+	                   ros::planarPose(s.estimate) * ros::planarPose(s.odometry).inverse(), "world",
+	                   "odom", s.device_time_s));
 	if (next) next->estimate(s);
 }
 
@@ -136,8 +144,8 @@ void RobotView::recognised(const mission::SearchResult& r, const Eigen::Vector3d
 	geometry_msgs::PoseStamped p;
 	p.header.stamp = ros::toRosTime(last_time_s_);
 	p.header.frame_id = "world";
-	p.pose = ros::toPoseMsg(
-	    toRosAxes(geometry::T_C0inW(xv, head_.options().head_height_m) * T_OinC0_m));
+	p.pose =
+	    ros::toPoseMsg(toRosAxes(geometry::T_C0inW(xv, head_.options().head_height_m) * T_OinC0_m));
 	object_.publish(p);
 	if (next) next->recognised(r, xv, target);
 }
