@@ -23,7 +23,7 @@ std::string resolve(const std::string& base_dir, const std::string& file)
 }
 
 /** Opens the file a key names, with the key in the error if it cannot be read. */
-mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::string& section,
+util::ConfigFile openNamed(const CConfigFileBase& cfg, const std::string& section,
                                     const std::string& key, const std::string& base_dir)
 {
 	const auto path = resolve(base_dir, util::readString(cfg, section, key));
@@ -155,7 +155,7 @@ MissionOptions MissionOptions::fromConfig(const CConfigFileBase& cfg, const std:
 
 MissionOptions MissionOptions::load(const std::string& path, const PlanChoice& plan)
 {
-	const mrpt::config::CConfigFile cfg = util::openConfigFile(path);
+	const auto cfg = util::openConfigFile(path);
 	auto o = fromConfig(cfg, fs::path(path).parent_path().string(), plan);
 	o.config_path = path;
 	return o;

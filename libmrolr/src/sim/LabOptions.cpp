@@ -20,7 +20,7 @@ std::string resolve(const std::string& base_dir, const std::string& file)
 	return (p.is_absolute() ? p : fs::path(base_dir) / p).lexically_normal().string();
 }
 
-mrpt::config::CConfigFile openNamed(const CConfigFileBase& cfg, const std::string& key,
+util::ConfigFile openNamed(const CConfigFileBase& cfg, const std::string& key,
                                     const std::string& base_dir)
 {
 	const auto path = resolve(base_dir, util::readString(cfg, "files", key));

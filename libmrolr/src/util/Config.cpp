@@ -14,8 +14,10 @@ namespace mrolr::util
 {
 namespace
 {
-std::string fileNameOf(const mrpt::config::CConfigFileBase& cfg)
+std::string fileNameOf(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                       const std::string& key)
 {
+	if (const auto* f = dynamic_cast<const ConfigFile*>(&cfg)) return f->fileOf(section, key);
 	if (const auto* f = dynamic_cast<const mrpt::config::CConfigFile*>(&cfg))
 		return f->getAssociatedFile();
 	return "<memory>";
@@ -37,18 +39,15 @@ std::string trim(const std::string& s)
 }
 }  // namespace
 
-mrpt::config::CConfigFile openConfigFile(const std::string& path, const std::string& named_by)
+ConfigFile openConfigFile(const std::string& path, const std::string& named_by)
 {
-	if (!std::ifstream(path).good())
-		throw ConfigError("cannot open '" + path + "'" +
-		                  (named_by.empty() ? std::string() : " (named by " + named_by + ")"));
-	return mrpt::config::CConfigFile(path);
+	return ConfigFile::load(path, named_by);
 }
 
 std::string describeKey(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key)
 {
-	return fileNameOf(cfg) + " [" + section + "] " + key;
+	return fileNameOf(cfg, section, key) + " [" + section + "] " + key;
 }
 
 bool hasKey(

@@ -43,7 +43,7 @@ KnownFeature parseEntry(const mrpt::config::CConfigFileBase& cfg, const std::str
 
 std::vector<KnownFeature> loadKnownFeatures(const std::string& path)
 {
-	const mrpt::config::CConfigFile cfg = util::openConfigFile(path);
+	const auto cfg = util::openConfigFile(path);
 	std::vector<std::string> keys;
 	cfg.getAllKeys(kSection, keys);
 	std::vector<KnownFeature> out;

@@ -3,6 +3,8 @@
  * so that a missing or malformed key is reported with the file, the section and the key, instead of
  * MRPT's silent default of 0 for unparsable numbers. */
 
+#include <mrolr/util/ConfigFile.h>
+
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -19,12 +21,13 @@ class ConfigError : public std::runtime_error
 	using std::runtime_error::runtime_error;
 };
 
-/** The `.ini` file @p path, which must be readable (MRPT's CConfigFile reads a missing file as an
- * empty one); ConfigError "cannot open 'PATH'", with " (named by WHAT)" when @p named_by says
- * which key or option gave the path. */
-mrpt::config::CConfigFile openConfigFile(const std::string& path, const std::string& named_by = "");
+/** The `.ini` file @p path with its base files (ConfigFile.h), which must be readable (MRPT's
+ * CConfigFile reads a missing file as an empty one); ConfigError "cannot open 'PATH'", with
+ * " (named by WHAT)" when @p named_by says which key or option gave the path. */
+ConfigFile openConfigFile(const std::string& path, const std::string& named_by = "");
 
-/** "FILE [SECTION] KEY" for messages; FILE is "<memory>" for a CConfigFileMemory. */
+/** "FILE [SECTION] KEY" for messages: the file that gave the key (for a ConfigFile, the base that
+ * holds it); "<memory>" for a plain CConfigFileMemory. */
 std::string describeKey(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key);
 

@@ -20,17 +20,16 @@ namespace
 namespace fs = std::filesystem;
 
 /** The mission file with the overrides written in (never saved). */
-mrpt::config::CConfigFile configWith(const std::string& path, const std::vector<std::string>& sets)
+util::ConfigFile configWith(const std::string& path, const std::vector<std::string>& sets)
 {
-	mrpt::config::CConfigFile cfg = util::openConfigFile(path);
+	auto cfg = util::openConfigFile(path);
 	for (const auto& s : sets)
 	{
 		const auto eq = s.find('='), dot = s.rfind('.', eq);
 		if (eq == std::string::npos || dot == std::string::npos || dot == 0)
 			throw util::UsageError("--set '" + s + "': expected SECTION.KEY=VALUE");
-		cfg.write(s.substr(0, dot), s.substr(dot + 1, eq - dot - 1), s.substr(eq + 1));
+		cfg.set(s.substr(0, dot), s.substr(dot + 1, eq - dot - 1), s.substr(eq + 1), "--set");
 	}
-	cfg.discardSavingChanges();
 	return cfg;
 }
 

@@ -148,17 +148,16 @@ void MissionApp::initialize(const std::vector<std::string>& args)
 namespace
 {
 /** The mission file in memory with the non-plan overrides written in. */
-mrpt::config::CConfigFile openWithOverrides(const std::string& path,
+util::ConfigFile openWithOverrides(const std::string& path,
                                             const std::vector<std::string>& overrides)
 {
-	mrpt::config::CConfigFile cfg = util::openConfigFile(path);
+	auto cfg = util::openConfigFile(path);
 	for (const auto& o : overrides)
 		if (!isPlanOverride(o))
 		{
 			const auto [section, key, value] = splitOverride(o);
-			cfg.write(section, key, value);
+			cfg.set(section, key, value, "--set");
 		}
-	cfg.discardSavingChanges();  // never write the overrides back into the file
 	return cfg;
 }
 }  // namespace

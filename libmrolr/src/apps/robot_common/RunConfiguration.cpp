@@ -1,6 +1,8 @@
 // The run's effective configuration kept with its outputs (RunConfiguration.h).
 #include <mrolr/apps/RunConfiguration.h>
 
+#include <mrolr/util/Config.h>
+
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <ctime>
@@ -26,15 +28,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string readText(const fs::path& p)
-{
-	std::ifstream f(p);
-	if (!f) throw std::runtime_error("cannot read '" + p.string() + "' for the run's record");
-	std::stringstream s;
-	s << f.rdbuf();
-	return s.str();
-}
-
 void copyInto(const fs::path& from, const fs::path& to)
 {
 	std::error_code ec;
@@ -85,7 +78,8 @@ std::string writeRunConfiguration(const RunInputs& in, const mission::MissionOpt
 {
 	const fs::path run = fs::path(out_dir) / "run";
 	fs::create_directories(run);
-	mrpt::config::CConfigFileMemory cfg(readText(in.config_path));
+	// the file with its bases laid under it: run/mission.ini stands alone
+	mrpt::config::CConfigFileMemory cfg(util::openConfigFile(in.config_path).getContent());
 	for (const auto& [section, key, value] : in.sets) cfg.write(section, key, value);
 	const fs::path base = fs::path(in.config_path).parent_path();
 	copyNamedFiles(cfg, base, run);

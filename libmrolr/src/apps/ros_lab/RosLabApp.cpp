@@ -68,7 +68,7 @@ int RosLabApp::run(std::ostream& out)
 	if (help_shown) return 0;
 	if (!std::ifstream(config_path))
 		throw util::ConfigError(config_path + ": cannot open the mission configuration");
-	const mrpt::config::CConfigFile cfg(config_path);
+	const auto cfg = util::openConfigFile(config_path);
 	sim::Lab lab(sim::LabOptions::load(
 	    cfg, std::filesystem::path(config_path).parent_path().string(), world_path));
 	ros::waitForMaster(master_timeout_ms);

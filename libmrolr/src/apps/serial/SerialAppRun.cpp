@@ -22,10 +22,9 @@ namespace mrolr::apps
 {
 namespace
 {
-mrpt::config::CConfigFile openConfig(const std::string& file)
+util::ConfigFile openConfig(const std::string& file)
 {
-	if (!std::ifstream(file)) throw util::ConfigError(file + ": cannot open the config file");
-	return mrpt::config::CConfigFile(file);
+	return util::openConfigFile(file);
 }
 
 bool keepRunning(double seconds, std::chrono::steady_clock::time_point start,
