@@ -124,3 +124,37 @@ TEST(OptionsBinder, EveryBadValueIsNamedWithItsKey)
 	EXPECT_THROW(OptionsBinder<Demo>().flag("stage", &Demo::stage).flag("stage", &Demo::stage),
 	             std::logic_error);
 }
+
+TEST(OptionsBinder, AKeyFixedInCodeIsRefusedNamingWhereItLives)
+{
+	struct Tuned
+	{
+		double gain = 2;
+		double margin_mm = 7;  // fixed: not read
+	};
+	const auto b = OptionsBinder<Tuned>()
+	                   .number("gain", &Tuned::gain, 0, 10)
+	                   .fixed({"margin_mm", "retired_flag"}, "demo/Tuned.h");
+	Tuned t;
+	b.load(mrpt::config::CConfigFileMemory("[t]\ngain = 3\n"), "t", t);
+	EXPECT_EQ(t.gain, 3);
+	EXPECT_EQ(t.margin_mm, 7);
+	for (const std::string key : {"margin_mm", "retired_flag"})
+	{
+		try
+		{
+			b.load(mrpt::config::CConfigFileMemory("[t]\ngain = 3\n" + key + " = 9\n"), "t", t);
+			FAIL() << key << " was read";
+		}
+		catch (const ConfigError& e)
+		{
+			const std::string what = e.what();
+			EXPECT_NE(what.find("[t] " + key), std::string::npos) << what;
+			EXPECT_NE(what.find("demo/Tuned.h"), std::string::npos) << what;
+		}
+		EXPECT_EQ(t.margin_mm, 7);
+	}
+	std::ostringstream dumped;  // and it is not dumped: a dump loads back
+	b.dump(dumped, t);
+	EXPECT_EQ(dumped.str(), "gain = 3\n");
+}

@@ -159,6 +159,16 @@ class OptionsBinder
 		    [=](std::ostream& out, const Options& o) { out << nameOf(names, field(o, member)); });
 	}
 
+	/** Keys that were once read here and are now constants of the step (members with their
+	 * value and reason in @p where): a file that still sets one is refused, naming it, so that an
+	 * old file never runs with a value silently ignored. */
+	OptionsBinder& fixed(std::vector<std::string> keys, std::string where)
+	{
+		fixed_ = std::move(keys);
+		fixed_where_ = std::move(where);
+		return *this;
+	}
+
 	/** Exactly @p count numbers, each in [lo, hi], into a std::vector<double> or a fixed-size
 	 * array of @p count (std::array<double, N>). */
 	template <class M>
@@ -209,6 +219,11 @@ class OptionsBinder
 	void load(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
 	          Options& o) const
 	{
+		for (const auto& key : fixed_)
+			if (hasKey(cfg, section, key))
+				throw ConfigError(describeKey(cfg, section, key) + ": no longer a configuration key; " +
+				                  fixed_where_ + " fixes it in code (docs/config.md \"Fixed in code\"): "
+				                  "remove the line");
 		for (const auto& k : keys_)
 		{
 			if (k.presence == Presence::Optional && !hasKey(cfg, section, k.key)) continue;
@@ -239,6 +254,8 @@ class OptionsBinder
 
    private:
 	using Cfg = mrpt::config::CConfigFileBase;
+	std::vector<std::string> fixed_;
+	std::string fixed_where_;
 	struct Key
 	{
 		std::string key;
@@ -264,7 +281,7 @@ class OptionsBinder
 template <class Options>
 Options loadOptionsFile(const std::string& path, const std::string& section)
 {
-	const mrpt::config::CConfigFile cfg = openConfigFile(path);
+	const auto cfg = openConfigFile(path);
 	Options o;
 	o.loadFromConfigFile(cfg, section);
 	return o;
