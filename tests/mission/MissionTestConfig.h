@@ -8,6 +8,7 @@
 #include <mrolr/mission/Mission.h>
 #include <mrolr/mission/MissionDevices.h>
 #include <mrolr/mission/MissionOptions.h>
+#include <mrolr/util/Config.h>
 #include <mrolr/mission/MissionOutputs.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
@@ -26,13 +27,11 @@ inline std::string configDir()
 	return std::string(MROLR_SOURCE_DIR) + "/config";
 }
 
-/** A mission file of config/ in memory (keys can be overridden without touching the file). */
+/** A mission file of config/ in memory, its base files laid in (keys can be overridden without
+ * touching the file). */
 inline mrpt::config::CConfigFileMemory missionConfig(const std::string& file)
 {
-	std::ifstream f(configDir() + "/" + file);
-	std::stringstream s;
-	s << f.rdbuf();
-	return mrpt::config::CConfigFileMemory(s.str());
+	return mrpt::config::CConfigFileMemory(util::openConfigFile(configDir() + "/" + file).getContent());
 }
 
 inline mrpt::config::CConfigFileMemory defaultMissionConfig()

@@ -7,6 +7,7 @@
 #include <mrolr/mission/MissionOptions.h>
 #include <mrolr/sim/Lab.h>
 
+#include <mrolr/util/Config.h>
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -21,10 +22,8 @@ namespace
 {
 mrpt::config::CConfigFileMemory missionFile(unsigned seed)
 {
-	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini");
-	std::stringstream s;
-	s << f.rdbuf();
-	mrpt::config::CConfigFileMemory cfg(s.str());
+	mrpt::config::CConfigFileMemory cfg(
+	    util::openConfigFile(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini").getContent());
 	cfg.write("mission", "seed", std::to_string(seed));
 	return cfg;
 }

@@ -6,6 +6,7 @@
 #include <mrolr/sim/Lab.h>
 #include <mrolr/stereo/ArucoMarker.h>
 
+#include <mrolr/util/Config.h>
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <opencv2/core.hpp>
@@ -21,10 +22,8 @@ namespace
 {
 sim::LabOptions labOptions(bool draw_arm)
 {
-	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini");
-	std::stringstream s;
-	s << f.rdbuf();
-	mrpt::config::CConfigFileMemory cfg(s.str());
+	mrpt::config::CConfigFileMemory cfg(
+	    util::openConfigFile(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini").getContent());
 	cfg.write("sim_arm", "draw_arm", draw_arm ? "true" : "false");
 	return sim::LabOptions::load(cfg, std::string(MROLR_SOURCE_DIR) + "/config");
 }

@@ -5,6 +5,7 @@
 #include <mrolr/sim/Lab.h>
 #include <mrolr/sim/SimulatedSensors.h>
 
+#include <mrolr/util/Config.h>
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -19,10 +20,8 @@ namespace
 {
 mrpt::config::CConfigFileMemory missionFile()
 {
-	std::ifstream f(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini");
-	std::stringstream s;
-	s << f.rdbuf();
-	return mrpt::config::CConfigFileMemory(s.str());
+	return mrpt::config::CConfigFileMemory(
+	    util::openConfigFile(std::string(MROLR_SOURCE_DIR) + "/config/mission_sim.ini").getContent());
 }
 
 sim::LabOptions labOptions(unsigned seed)

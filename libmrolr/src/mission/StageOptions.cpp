@@ -17,23 +17,20 @@ using Se = SearchOptions;
 using R = RetrievalOptions;
 using P = PlaceOptions;
 
-// Keys declared optional keep their defaults when absent: they tune a behaviour added after the
-// mission files were first written (each documented in config/mission_sim.ini).
+// Keys declared optional keep their defaults when absent: the files leave them out
+// (docs/config.md); fixed keys are constants of the step, and a file that sets one is refused.
 const util::OptionsBinder<N>& navigationBinder()
 {
 	static const auto b =
 	    util::OptionsBinder<N>()
-	        .integer("measurements_per_step", &N::measurements_per_step, 0, 20)
-	        .integer("min_mapped_visible", &N::min_mapped_visible, 0, 1000)
 	        .number("measurement_time_s", &N::measurement_time_s, 0, 1e4)
 	        .number("waypoint_tolerance_m", &N::waypoint_tolerance_m, 1e-4, 1)
-	        .integer("max_correction_legs", &N::max_correction_legs, 0, 10)
-	        .number("table_clearance_m", &N::table_clearance_m, 0, 10)
-	        .number("max_rotation_step_deg", &N::max_rotation_step_deg, 0, 360, kOpt)
-	        .number("reverse_max_m", &N::reverse_max_m, 0, 10, kOpt)
 	        .text("landmark_sensor", &N::landmark_sensor, kOpt)
 	        .number("image_nssd_ambiguity_margin", &N::image_nssd_ambiguity_margin, -1, 4, kOpt)
-	        .number("lost_feature_probability", &N::lost_feature_probability, 0, 1, kOpt);
+	        .number("lost_feature_probability", &N::lost_feature_probability, 0, 1, kOpt)
+	        .fixed({"measurements_per_step", "min_mapped_visible", "max_correction_legs",
+	                "table_clearance_m", "max_rotation_step_deg", "reverse_max_m"},
+	               "mission/MissionOptions.h NavigationOptions");
 	return b;
 }
 
@@ -62,10 +59,10 @@ const util::OptionsBinder<R>& retrievalBinder()
 	        .number("lift_mm", &R::lift_mm, 0, 1e4)
 	        .number("arm_move_time_s", &R::arm_move_time_s, 0, 1e4)
 	        .flag("visual_verification", &R::visual_verification, kOpt)
-	        .number("grasp_yaw_search_deg", &R::grasp_yaw_search_deg, 0, 180)
 	        .number("max_grasp_correction_mm", &R::max_grasp_correction_mm, 0, 1000, kOpt)
 	        .number("inject_pose_error_mm", &R::inject_pose_error_mm, -500, 500, kOpt)
-	        .number("min_held_width_mm", &R::min_held_width_mm, 0, 1000, kOpt);
+	        .number("min_held_width_mm", &R::min_held_width_mm, 0, 1000, kOpt)
+	        .fixed({"grasp_yaw_search_deg"}, "mission/MissionOptions.h RetrievalOptions");
 	return b;
 }
 
@@ -133,12 +130,5 @@ void PlaceOptions::dump(std::ostream& out) const
 {
 	placeBinder().dump(out, *this);
 }
-
-
-
-
-
-
-
 
 }  // namespace mrolr::mission

@@ -48,19 +48,25 @@ enum class LandmarkSource
 /** Section [navigation]: where the landmark measurements come from and the waypoint tolerances. */
 struct NavigationOptions
 {
-	int measurements_per_step = 2;  ///< features measured after each motion step
-	int min_mapped_visible = 3;     ///< a new feature is initialised while fewer are visible
 	double measurement_time_s = 1.0;     ///< robot time per measurement (saccade + search)
 	double waypoint_tolerance_m = 0.03;  ///< correction legs until the estimate is this close
-	int max_correction_legs = 3;
-	double table_clearance_m = 0.45;  ///< distance kept from a table edge when going round it
-	/** Optional: rotations in place are split into steps of at most this (deg), with measurements
-	 * after each, so mapped features keep the heading through a turn; 0: the labmate file's
-	 * [trajectory] max_rotation_step_deg. */
-	double max_rotation_step_deg = 0;
-	/** Optional: a goal behind the robot closer than this (m) is reached by driving backwards
-	 * (the head keeps facing the features it mapped) instead of turning round; 0: never. */
-	double reverse_max_m = 0;
+
+	// Fixed in code (docs/config.md "Fixed in code"): each value and why.
+	/** Features measured after each motion step (docs/mission.md "Navigation"): each costs
+	 * measurement_time_s; three is the value every shipped mission was measured with. */
+	int measurements_per_step = 3;
+	int min_mapped_visible = 3;  ///< a new feature is initialised while fewer are visible
+	int max_correction_legs = 3;  ///< correction legs before the robot reports it missed the goal
+	/** Kept from a table edge when going round it: half the base (0.35 m) plus 0.1 m. */
+	double table_clearance_m = 0.45;
+	/** Rotations in place are split into steps of at most this (deg), with measurements after
+	 * each, so mapped features keep the heading through a turn (without: half-turns ended 20–40°
+	 * off, tests/mission/options_test.cpp); 0: the labmate file's [trajectory] value. */
+	double max_rotation_step_deg = 45;
+	/** A goal behind the robot closer than this (m) is reached by driving backwards (the head
+	 * keeps facing the features it mapped) instead of turning round: the lab's last leg (W5 →
+	 * home, 0.5 m) and correction legs; 0: never. */
+	double reverse_max_m = 0.6;
 	/** Optional: `images` (default): the vision area's cycle (vision::VisualSlam) on the head's
 	 * stereo pairs (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's
 	 * filter); any other name is a simulated sensor the app must provide (`ideal_sim`: the
@@ -126,9 +132,10 @@ struct RetrievalOptions
 	double lift_mm = 120;             ///< lift after closing the gripper
 	double arm_move_time_s = 3.0;     ///< simulated time per arm move
 	bool visual_verification = true;  ///< re-observe and correct before closing (beyond 7.2.2)
-	/** 0: only the model's grasp line; > 0: if it is infeasible, also the grasp turned about O's
-	 * vertical axis in steps of this (for objects symmetric about it), smallest turn first. */
-	double grasp_yaw_search_deg = 0;
+	/** Fixed in code: if the model's grasp line is infeasible, also the grasp turned about O's
+	 * vertical axis in steps of this, smallest turn first: 90° lets a box be taken across either
+	 * pair of faces (0: the model's line only). */
+	double grasp_yaw_search_deg = 90;
 	/** Optional: a verification grasp further than this from the first is refused (the first is
 	 * kept and the report says why): a wrong re-recognition must not throw the arm about. */
 	double max_grasp_correction_mm = 40;
