@@ -80,7 +80,9 @@ TEST(RecogOptions, BadValuesNameTheKey)
 	EXPECT_NE(errorFor("length_ratio = 0.7", "length_ratio = 1.7").find("length_ratio"),
 	          std::string::npos);
 	EXPECT_NE(errorFor("levels = 12", "levels = 0").find("levels"), std::string::npos);
+	// an optional key (absent from the shipped file) is still checked when given
 	EXPECT_NE(
-	    errorFor("verify_rotation_deg = 3", "verify_rotation_degs = 3").find("verify_rotation_deg"),
+	    errorFor("verify_rotation_deg = 3", "verify_rotation_deg = three").find("verify_rotation_deg"),
 	    std::string::npos);
+	EXPECT_NE(errorFor("pose_method = faugeras_hebert\n", "").find("pose_method"), std::string::npos);
 }

@@ -250,7 +250,7 @@ TEST(PlaneHypotheses, OptionsRejectBadValues)
 	    {"min_image_score = 0.7", "min_image_score = 1.5"},
 	    {"enable = true", "enable = maybe"},
 	    {"radius_tol_mm = 6", "radius_tol_mm = six"},
-	    {"prerank_spacing_mm = 9\n", ""},
+	    {"enable = true\n", ""},
 	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_vertical_tol_deg = 95\n"},
 	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_hypotheses = often\n"},
 	    {"max_base_offset_mm = 15\n", "max_base_offset_mm = 15\nlimb_min_mm = -2\n"},
@@ -310,8 +310,7 @@ TEST(PlaneHypotheses, OptionsRejectBadValues)
 TEST(PlaneHypotheses, ShippedOptionsAreTheDefaults)
 {
 	const mrpt::config::CConfigFile cfg(mrolr::util::requireProjectFile("config/recognition.ini"));
-	PlaneHypothesisOptions shipped;
-	shipped.min_image_score = -1;  // must be overwritten
+	PlaneHypothesisOptions shipped;  // the file states `enable`; every tolerance is the default
 	shipped.loadFromConfigFile(cfg, "plane_hypotheses");
 	std::ostringstream a, b;
 	shipped.dump(a);

@@ -3,6 +3,7 @@
 // frame L (mm) into an exactly known stereo pair, anti-aliased by 4x supersampling, so that the
 // stereo pipeline can be checked against exact geometry.
 
+#include <mrolr/stereo/SceneReconstruction.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
 #include <Eigen/Geometry>
@@ -96,6 +97,21 @@ inline void renderPair(const std::vector<Face>& faces, const StereoCalibration& 
 	left = renderView(faces, rig.K_left, cv::Matx33d::eye(), cv::Vec3d(0, 0, 0), rig.image_size,
 	                  depth_sort);
 	right = renderView(faces, rig.K_right, rig.R_RfromL, rig.t_LinR_mm, rig.image_size, depth_sort);
+}
+
+/** Every step of the reconstruction at its own default, before the shipped tuning that
+ * SceneOptions() applies (config/model.ini used to carry it): rectification without border, 1 px fit
+ * tolerances, piece stereo's own limits, circles and edge-on rims off. The synthetic tests that
+ * isolate one step start from this, so what they measure is that step. */
+inline SceneOptions stepDefaults()
+{
+	SceneOptions o;
+	o.rectify = RectifyOptions{};
+	o.fit = FitOptions{};
+	o.segments = SegmentStereoOptions{};
+	o.circles = HorizontalCircleOptions{};
+	o.edge_on_rims = EdgeOnRimOptions{};
+	return o;
 }
 
 }  // namespace mrolr::stereo::test

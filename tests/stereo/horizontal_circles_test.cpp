@@ -115,7 +115,7 @@ TEST(HorizontalCircles, RenderedEdgeOnRimNeedsTheUpDirection)
 	                              disc(kCentre, {1, 0, 0}, {0, 0, 1}, kRadius, 200)};
 	cv::Mat l, r;
 	renderPair(faces, rig, l, r);
-	SceneOptions o;
+	SceneOptions o = stepDefaults();
 	o.circles.enabled = true;
 	o.circles.max_residual_px = 0.35;  // config/model.ini's value
 	const auto with = nearest(reconstructScene(l, r, rig, o, kUp));

@@ -44,7 +44,7 @@ std::optional<ConicFit3> rim(const SceneOptions& o)
 
 TEST(PieceStereo, ObliqueRimFromItsTwoImageEllipses)
 {
-	const auto c = rim(SceneOptions{});
+	const auto c = rim(stepDefaults());
 	ASSERT_TRUE(c.has_value());
 	EXPECT_LT((c->centre - kCentre).norm(), 3.0);
 	EXPECT_NEAR(c->a, kRadius, 1.5);
@@ -54,7 +54,7 @@ TEST(PieceStereo, ObliqueRimFromItsTwoImageEllipses)
 	    Eigen::Vector3d(1, 0, 0).cross(Eigen::Vector3d(0, std::sin(tilt), std::cos(tilt)));
 	EXPECT_GT(std::abs(c->normal.dot(n)), std::cos(3 * M_PI / 180));
 	EXPECT_GT(c->t2 - c->t1, 1.9 * M_PI);  // the whole rim, its scanline parts included
-	SceneOptions strings_only;
+	SceneOptions strings_only = stepDefaults();
 	strings_only.segments.enabled = false;
 	const auto c0 = rim(strings_only);  // matched edgels only: the scanline parts are missing
 	EXPECT_TRUE(!c0 || c0->t2 - c0->t1 < 1.5 * M_PI);

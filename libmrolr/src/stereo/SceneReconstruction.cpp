@@ -109,26 +109,57 @@ constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
 
 const util::OptionsBinder<O>& sceneOptionsBinder()
 {
-	static const auto b = util::OptionsBinder<O>()
-	    .number("min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
-	    .number("max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
-	    .number("rectify_alpha", [](O& o) -> double& { return o.rectify.alpha; }, 0, 1, kOpt)
-	    .number("rectify_size_scale", [](O& o) -> double& { return o.rectify.size_scale; }, 0.25,
-	            4, kOpt)
-	    .integer("border_margin_px", &O::border_margin_px, 0, 50, kOpt)
-	    .flag("horizontal_enabled", [](O& o) -> bool& { return o.horizontal.enabled; }, kOpt)
-	    .number("horizontal_max_angle_deg",
+	static const auto b =
+	    util::OptionsBinder<O>()
+	        .number("min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
+	        .number("max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
+	        .number(
+	            "rectify_alpha", [](O& o) -> double& { return o.rectify.alpha; }, 0, 1, kOpt)
+	        .number(
+	            "rectify_size_scale", [](O& o) -> double& { return o.rectify.size_scale; }, 0.25, 4,
+	            kOpt)
+	        .integer("border_margin_px", &O::border_margin_px, 0, 50, kOpt)
+	        .flag(
+	            "horizontal_enabled", [](O& o) -> bool& { return o.horizontal.enabled; }, kOpt)
+	        .number(
+	            "horizontal_max_angle_deg",
 	            [](O& o) -> double& { return o.horizontal.max_angle_deg; }, 0, 90, kOpt)
-	    .number("horizontal_corner_radius_px",
+	        .number(
+	            "horizontal_corner_radius_px",
 	            [](O& o) -> double& { return o.horizontal.corner_radius_px; }, 0, 100, kOpt)
-	    .number("horizontal_min_right_support",
+	        .number(
+	            "horizontal_min_right_support",
 	            [](O& o) -> double& { return o.horizontal.min_right_support; }, 0, 1, kOpt);
 	return b;
 }
 }  // namespace
 
+SceneOptions::SceneOptions()
+{
+	// full-image rectification: pieces near the border stay in view (+2.2 points of visible edge
+	// length over the eight table views, docs/model.md "Table scenes")
+	rectify.alpha = 1;
+	rectify.size_scale = 1.25;
+	// edgels within 1.5 px of a line or an ellipse belong to it (set on the table views)
+	fit.line_tol_px = 1.5;
+	fit.conic_tol_px = 1.5;
+	// piece stereo (docs/model.md: 32.0 → 50.3 % of the visible edge length). A segment turns
+	// between the rectified views by its disparity gradient: the receding top edges of boxes at
+	// 0.8 m by up to 50°, so the angle limit is loose and the disparity gradient decides. Pieces
+	// of 8–9 edgels (letters' strokes) must match in the grey of both sides (a mark on a surface,
+	// not an occluding contour).
+	segments.max_angle_diff_deg = 50;
+	segments.min_line_edgels = 8;
+	segments.both_sides_below_edgels = 10;
+	// rims as horizontal circles and rims seen edge-on, when the up direction is known (+1.5 and
+	// +1.7 points); a circle's arc within 0.35 px RMS of its edgels (set on the table views)
+	circles.enabled = true;
+	circles.max_residual_px = 0.35;
+	edge_on_rims.enabled = true;
+}
+
 void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
-                                     const std::string& section)
+                                      const std::string& section)
 {
 	sceneOptionsBinder().load(cfg, section, *this);
 	util::requireInRange(cfg, section, "max_depth_mm", max_depth_mm, min_depth_mm + 1, 1e7);
@@ -136,7 +167,6 @@ void SceneOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg,
 	match.loadFromConfigFile(cfg, section);
 	fit.loadFromConfigFile(cfg, section);
 	segments.loadFromConfigFile(cfg, section);
-	dense.loadFromConfigFile(cfg, section);
 	circles.loadFromConfigFile(cfg, section);
 	edge_on_rims.loadFromConfigFile(cfg, section);
 }
@@ -148,7 +178,6 @@ void SceneOptions::dump(std::ostream& out) const
 	match.dump(out);
 	fit.dump(out);
 	segments.dump(out);
-	dense.dump(out);
 	circles.dump(out);
 	edge_on_rims.dump(out);
 }
@@ -191,7 +220,6 @@ StereoScene reconstructScene(const cv::Mat& left, const cv::Mat& right,
 	scene.horizontal_lines = h.size();
 	scene.lines.insert(scene.lines.end(), h.begin(), h.end());
 	if (o.segments.enabled) addPieceFeatures(ls, rs, lr, rr, matches, rect, o, scene);
-	if (o.dense.enabled) addDenseFeatures(ls, lr, rr, matches, rect, o, scene);
 	if (o.circles.enabled && up_L) addHorizontalCircles(ls, rs, lr, matches, rect, *up_L, o, scene);
 	if (o.edge_on_rims.enabled && up_L)
 	{
@@ -217,27 +245,13 @@ void addPieceFeatures(const std::vector<EdgeString>& ls, const std::vector<EdgeS
 	scene.piece_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
 }
 
-void addDenseFeatures(const std::vector<EdgeString>& ls, const cv::Mat& lr, const cv::Mat& rr,
-                      const std::vector<EdgeMatch>& matches, const Rectifier& rect,
-                      const SceneOptions& o, StereoScene& scene)
-{
-	const cv::Mat d = denseDisparity(lr, rr, rect.disparityAtDepth(o.dense.max_depth_mm),
-	                                 rect.disparityAtDepth(o.dense.min_depth_mm), o.dense);
-	std::vector<LineFit3> lines;
-	std::vector<ConicFit3> conics;
-	for (const auto& s : denseEdgeStrings(ls, matches, d, rect, o.dense))
-		segmentString(s, rect, o.fit, lines, conics);
-	scene.dense_features = addNewFeatures(scene, lines, conics, o.segments.duplicate_mm);
-}
-
 void addHorizontalCircles(const std::vector<EdgeString>& ls, const std::vector<EdgeString>& rs,
-                          const cv::Mat& lr,
-                          const std::vector<EdgeMatch>& matches, const Rectifier& rect,
-                          const Eigen::Vector3d& up_L, const SceneOptions& o, StereoScene& scene)
+                          const cv::Mat& lr, const std::vector<EdgeMatch>& matches,
+                          const Rectifier& rect, const Eigen::Vector3d& up_L, const SceneOptions& o,
+                          StereoScene& scene)
 {
 	const auto lp = segmentImageStrings(ls, lr, pieceFitOptions(o));
-	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles,
-	                                 &rs);
+	const auto c = horizontalCircles(ls, lp, matches, scene.conics, up_L, rect, o.circles, &rs);
 	scene.circle_features = addNewFeatures(scene, {}, c, o.segments.duplicate_mm);
 }
 

@@ -71,6 +71,10 @@ struct TurntableOptions
 	RimImageOptions rim_images;  ///< horizontal rims' arcs completed from the views' images
 	RimChordOptions rim_chords;  ///< horizontal rims from straight chords across views
 
+	/** The shipped integration: the steps' defaults with the values docs/model.md measured on the
+	 * lab objects (reasons in TurntableBuilder.cpp); [turntable] of a file sets the crop and
+	 * min_views, every other key is optional and overrides one of these. */
+	TurntableOptions();
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 

@@ -3,7 +3,6 @@
  * strings, PMF-style scanline matching, 3D edge strings, and their segmentation into 3D lines and
  * conics. Output in millimetres in the thesis left camera frame L (x left, y up, z forward). */
 
-#include <mrolr/stereo/DenseEdgeStereo.h>
 #include <mrolr/stereo/EdgeMatcher.h>
 #include <mrolr/stereo/EdgeStrings.h>
 #include <mrolr/stereo/Fit3.h>
@@ -35,10 +34,13 @@ struct SceneOptions
 	FitOptions fit;
 	HorizontalOptions horizontal;
 	SegmentStereoOptions segments;  ///< piece stereo (SegmentStereo.h) adds what 3D strings miss
-	DenseEdgeOptions dense;  ///< dense disparities for unmatched edgels (DenseEdgeStereo.h)
 	HorizontalCircleOptions circles;  ///< rims as horizontal circles (needs the up direction)
 	EdgeOnRimOptions edge_on_rims;    ///< rims seen edge-on (needs the up direction)
 
+	/** The shipped reconstruction: the steps' own defaults, with the values docs/model.md measured
+	 * for the scene (each reason beside it in SceneReconstruction.cpp). [scene] of a file sets the
+	 * depth range; every other key is optional and overrides one of these. */
+	SceneOptions();
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };
@@ -51,7 +53,6 @@ struct StereoScene
 	size_t left_strings = 0, right_strings = 0, matches = 0, strings3d = 0;
 	size_t horizontal_lines = 0;  ///< lines recovered from their corners (HorizontalEdges.h)
 	size_t piece_features = 0;    ///< lines and conics added by piece stereo (SegmentStereo.h)
-	size_t dense_features = 0;    ///< lines and conics added by dense edge stereo
 	size_t circle_features = 0;   ///< horizontal circles added (HorizontalCircles.h)
 	size_t edge_on_rims = 0;      ///< rims seen edge-on added (EdgeOnRims.h)
 };
@@ -67,13 +68,6 @@ void addPieceFeatures(const std::vector<EdgeString>& left, const std::vector<Edg
                       const cv::Mat& left_rect, const cv::Mat& right_rect,
                       const std::vector<EdgeMatch>& matches, const Rectifier& rect,
                       const SceneOptions& o, StereoScene& scene);
-
-/** Dense edge stereo (DenseEdgeStereo.h): the unmatched left edgels placed at the SGBM disparity
- * of their nearer side and fitted as lines and conics; adds to @p scene those not already there
- * (within segment_duplicate_mm). */
-void addDenseFeatures(const std::vector<EdgeString>& left, const cv::Mat& left_rect,
-                      const cv::Mat& right_rect, const std::vector<EdgeMatch>& matches,
-                      const Rectifier& rect, const SceneOptions& o, StereoScene& scene);
 
 /** Horizontal circles (HorizontalCircles.h) of the left arcs that no conic of @p scene covers;
  * adds them to @p scene. @p up_L: the up direction in L. */
