@@ -252,7 +252,7 @@ TEST(SerialMission, WithoutTheHardwareTheMissionFailsNamingPortAndKeyBeforeAnyth
 	catch (const util::ConfigError& e)
 	{
 		const std::string msg = e.what();
-		EXPECT_NE(msg.find("mission_hw.ini [device.base] port"), std::string::npos) << msg;
+		EXPECT_NE(msg.find("mission_hw.ini with --set [device.base] port"), std::string::npos) << msg;
 		EXPECT_NE(msg.find("/dev/mrolr-no-such-port"), std::string::npos) << msg;
 	}
 	EXPECT_FALSE(fs::exists(dir));
@@ -272,8 +272,8 @@ TEST(SerialMission, TheAppRunsTheMissionOnEmulatedDevices)
 	ASSERT_EQ(app.result.links.size(), 3u);
 	EXPECT_EQ(app.result.links[0].port.rfind("/dev/pts/", 0), 0u) << app.result.links[0].port;
 	EXPECT_NE(out.str().find("serial device.arm on /dev/pts/"), std::string::npos) << out.str();
-	// --set changes the run, never the file.
-	std::ifstream f(test::configDir() + "/mission_sim.ini");
+	// --set changes the run, never the file (the key is in mission_sim.ini's base).
+	std::ifstream f(test::configDir() + "/mission.ini");
 	EXPECT_NE(std::string(std::istreambuf_iterator<char>(f), {}).find("home_tolerance_m = 0.15"),
 	          std::string::npos);
 }

@@ -28,16 +28,18 @@ util::ConfigFile configWith(const std::string& path, const std::vector<std::stri
 		const auto eq = s.find('='), dot = s.rfind('.', eq);
 		if (eq == std::string::npos || dot == std::string::npos || dot == 0)
 			throw util::UsageError("--set '" + s + "': expected SECTION.KEY=VALUE");
-		cfg.set(s.substr(0, dot), s.substr(dot + 1, eq - dot - 1), s.substr(eq + 1), "--set");
+		cfg.set(s.substr(0, dot), s.substr(dot + 1, eq - dot - 1), s.substr(eq + 1),
+		        path + " with --set");
 	}
 	return cfg;
 }
 
 void printSummary(std::ostream& out, const nlohmann::json& r, const std::string& plan)
 {
-	out << "plan written to " << plan << (r["stopped"].get<bool>() ? " (the drive stopped: " +
-	                                                                    r["failure"].get<std::string>() + ")"
-	                                                              : "")
+	out << "plan written to " << plan
+	    << (r["stopped"].get<bool>()
+	            ? " (the drive stopped: " + r["failure"].get<std::string>() + ")"
+	            : "")
 	    << "\n  known features saved " << r["known_features_saved"] << " of "
 	    << r["features_mapped"] << " mapped; locked on at the start: " << r["locked"].dump()
 	    << "\n  eval: " << r["eval"]["consistent_95"] << " of " << r["eval"]["checked"]
@@ -97,8 +99,8 @@ int MapApp::run(std::ostream& out, std::ostream& progress)
 		builder.on_progress = [&](const std::string& stage, const mission::PathSample& s)
 		{
 			progress << "\r[map] " << std::setw(7) << std::left << stage << " t=" << std::fixed
-			         << std::setprecision(0) << std::setw(5) << s.time_s << " s  features="
-			         << s.features << "   " << std::flush;
+			         << std::setprecision(0) << std::setw(5) << s.time_s
+			         << " s  features=" << s.features << "   " << std::flush;
 		};
 	result = builder.build(eval::surveyTargetsOf(w));
 	if (!quiet) progress << "\n";

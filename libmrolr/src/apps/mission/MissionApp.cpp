@@ -156,7 +156,7 @@ util::ConfigFile openWithOverrides(const std::string& path,
 		if (!isPlanOverride(o))
 		{
 			const auto [section, key, value] = splitOverride(o);
-			cfg.set(section, key, value, "--set");
+			cfg.set(section, key, value, path + " with --set");
 		}
 	return cfg;
 }
