@@ -18,12 +18,14 @@
 
 namespace mrolr::sim
 {
-/** Section [sim_arm] of config/sim.ini: joint limits (d1 in mm, q1..q6 in degrees) and the
- * open jaw distance. */
+/** Section [sim_arm] of a mission file or config/sim.ini: joint limits (d1 in mm, q1..q6 in
+ * degrees) and the open jaw distance. */
 struct SimArmOptions
 {
-	hw::ArmJoints min{0, -180, -90, -160, -110, -90, -180};
-	hw::ArmJoints max{915, 180, 90, 160, 110, 90, 180};
+	/** The RTX's ranges (config/arm_rtx.ini's limits in counts), so that an arm simulated without
+	 * a [sim_arm] section (mission_hw.ini with --serial-emulation) accepts what the robot plans. */
+	hw::ArmJoints min{-30, -180, -91, -181, -111, -181, -181};
+	hw::ArmJoints max{925, 180, 91, 151, 111, 181, 181};
 	double open_width_mm = 90;  ///< jaw distance of the open gripper (the RTX's 90 mm)
 	/** The dock's error: the arm base stands off the nominal [arm_mount] T_C0inA by a rigid offset
 	 * drawn once per run from [mission] seed, each translation within ±mount_error_mm and each
