@@ -86,30 +86,22 @@ const util::OptionsBinder<O>& turntableOptionsBinder()
 	        .number("max_height_mm", &O::max_height_mm, -1e6, 1e6, kOpt)
 	        // also read by ViewSupportOptions (same key), whose range this is
 	        .integer("min_views", &O::min_views, 1, 1000, kOpt)
-	        .number(
-	            "merge_max_distance_mm", [](O& o) -> double& { return o.merge.max_distance_mm; }, 0,
-	            1e6, kOpt)
-	        .number(
-	            "merge_max_angle_deg", [](O& o) -> double& { return o.merge.max_angle_deg; }, 0, 90,
-	            kOpt)
-	        .number(
-	            "merge_max_gap_mm", [](O& o) -> double& { return o.merge.max_gap_mm; }, 0, 1e6,
-	            kOpt)
-	        .number(
-	            "merge_max_centre_mm", [](O& o) -> double& { return o.merge.max_centre_mm; }, 0,
-	            1e6, kOpt)
-	        .number(
-	            "merge_max_radius_diff_mm",
-	            [](O& o) -> double& { return o.merge.max_radius_diff_mm; }, 0, 1e6, kOpt)
-	        .number(
-	            "rim_image_gradient", [](O& o) -> double& { return o.rim_images.min_gradient; }, 0,
-	            1e4, kOpt)
-	        .number(
-	            "rim_image_min_fraction", [](O& o) -> double& { return o.rim_images.min_fraction; },
-	            0, 1, kOpt)
-	        .number(
-	            "rim_image_max_tilt_deg", [](O& o) -> double& { return o.rim_images.max_tilt_deg; },
-	            0, 90, kOpt);
+	        .number("merge_max_distance_mm",
+	                [](O& o) -> double& { return o.merge.max_distance_mm; }, 0, 1e6, kOpt)
+	        .number("merge_max_angle_deg", [](O& o) -> double& { return o.merge.max_angle_deg; },
+	                0, 90, kOpt)
+	        .number("merge_max_gap_mm", [](O& o) -> double& { return o.merge.max_gap_mm; }, 0,
+	                1e6, kOpt)
+	        .number("merge_max_centre_mm", [](O& o) -> double& { return o.merge.max_centre_mm; },
+	                0, 1e6, kOpt)
+	        .number("merge_max_radius_diff_mm",
+	                [](O& o) -> double& { return o.merge.max_radius_diff_mm; }, 0, 1e6, kOpt)
+	        .number("rim_image_gradient", [](O& o) -> double& { return o.rim_images.min_gradient; },
+	                0, 1e4, kOpt)
+	        .number("rim_image_min_fraction",
+	                [](O& o) -> double& { return o.rim_images.min_fraction; }, 0, 1, kOpt)
+	        .number("rim_image_max_tilt_deg",
+	                [](O& o) -> double& { return o.rim_images.max_tilt_deg; }, 0, 90, kOpt);
 	return b;
 }
 }  // namespace

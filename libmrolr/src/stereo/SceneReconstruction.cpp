@@ -109,26 +109,19 @@ constexpr auto kOpt = util::Presence::Optional;  // [scene]: docs/config.md
 
 const util::OptionsBinder<O>& sceneOptionsBinder()
 {
-	static const auto b =
-	    util::OptionsBinder<O>()
-	        .number("min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
-	        .number("max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
-	        .number(
-	            "rectify_alpha", [](O& o) -> double& { return o.rectify.alpha; }, 0, 1, kOpt)
-	        .number(
-	            "rectify_size_scale", [](O& o) -> double& { return o.rectify.size_scale; }, 0.25, 4,
-	            kOpt)
-	        .integer("border_margin_px", &O::border_margin_px, 0, 50, kOpt)
-	        .flag(
-	            "horizontal_enabled", [](O& o) -> bool& { return o.horizontal.enabled; }, kOpt)
-	        .number(
-	            "horizontal_max_angle_deg",
+	static const auto b = util::OptionsBinder<O>()
+	    .number("min_depth_mm", &O::min_depth_mm, 1, 1e6, kOpt)
+	    .number("max_depth_mm", &O::max_depth_mm, 2, 1e7, kOpt)
+	    .number("rectify_alpha", [](O& o) -> double& { return o.rectify.alpha; }, 0, 1, kOpt)
+	    .number("rectify_size_scale", [](O& o) -> double& { return o.rectify.size_scale; }, 0.25,
+	            4, kOpt)
+	    .integer("border_margin_px", &O::border_margin_px, 0, 50, kOpt)
+	    .flag("horizontal_enabled", [](O& o) -> bool& { return o.horizontal.enabled; }, kOpt)
+	    .number("horizontal_max_angle_deg",
 	            [](O& o) -> double& { return o.horizontal.max_angle_deg; }, 0, 90, kOpt)
-	        .number(
-	            "horizontal_corner_radius_px",
+	    .number("horizontal_corner_radius_px",
 	            [](O& o) -> double& { return o.horizontal.corner_radius_px; }, 0, 100, kOpt)
-	        .number(
-	            "horizontal_min_right_support",
+	    .number("horizontal_min_right_support",
 	            [](O& o) -> double& { return o.horizontal.min_right_support; }, 0, 1, kOpt);
 	return b;
 }

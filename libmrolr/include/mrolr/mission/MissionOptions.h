@@ -57,7 +57,7 @@ struct NavigationOptions
 	int measurements_per_step = 3;
 	int min_mapped_visible = 3;  ///< a new feature is initialised while fewer are visible
 	int max_correction_legs = 3;  ///< correction legs before the robot reports it missed the goal
-	/** Kept from a table edge when going round it: half the base (0.35 m) plus 0.1 m. */
+	/** Kept from a table edge when going round it (half the 0.7 m wide base, plus 0.1 m). */
 	double table_clearance_m = 0.45;
 	/** Rotations in place are split into steps of at most this (deg), with measurements after
 	 * each, so mapped features keep the heading through a turn (without: half-turns ended 20–40°
@@ -65,7 +65,7 @@ struct NavigationOptions
 	double max_rotation_step_deg = 45;
 	/** A goal behind the robot closer than this (m) is reached by driving backwards (the head
 	 * keeps facing the features it mapped) instead of turning round: the lab's last leg (W5 →
-	 * home, 0.5 m) and correction legs; 0: never. */
+	 * home) and correction legs; 0: never. */
 	double reverse_max_m = 0.6;
 	/** Optional: `images` (default): the vision area's cycle (vision::VisualSlam) on the head's
 	 * stereo pairs (needs `[files] vision_file`, whose [vision] and [slam] replace the slam_file's

@@ -149,7 +149,7 @@ namespace
 {
 /** The mission file in memory with the non-plan overrides written in. */
 util::ConfigFile openWithOverrides(const std::string& path,
-                                            const std::vector<std::string>& overrides)
+                                   const std::vector<std::string>& overrides)
 {
 	auto cfg = util::openConfigFile(path);
 	for (const auto& o : overrides)
