@@ -4,9 +4,10 @@
 
 #include <mrpt/config/CConfigFile.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <set>
 
 namespace mrolr::util
 {
@@ -15,27 +16,31 @@ namespace
 /** Longest chain of bases: deeper means a file names itself through others. */
 constexpr size_t kMaxBaseDepth = 8;
 
-/** Every file of the chain, the opened one first. */
-std::vector<std::string> chainOf(const std::string& path, const std::string& named_by)
+/** One file of the chain, read once. */
+struct Link
 {
-	std::vector<std::string> chain;
+	std::string path;
+	std::unique_ptr<mrpt::config::CConfigFile> file;
+};
+
+/** Every file of the chain, the opened one first. */
+std::vector<Link> chainOf(const std::string& path, const std::string& named_by)
+{
+	std::vector<Link> chain;
+	std::set<std::string> seen;  // canonical paths
 	std::string next = path, by = named_by;
 	while (!next.empty())
 	{
 		if (!std::ifstream(next).good())
 			throw ConfigError("cannot open '" + next + "'" +
 			                  (by.empty() ? std::string() : " (named by " + by + ")"));
-		const auto canonical = std::filesystem::weakly_canonical(next).string();
-		for (const auto& seen : chain)
-			if (std::filesystem::weakly_canonical(seen).string() == canonical)
-				throw ConfigError(
-				    describeKey(mrpt::config::CConfigFile(chain.back()), "base", "file") +
-				    ": the bases loop back to '" + next + "'");
+		if (!seen.insert(std::filesystem::weakly_canonical(next).string()).second)
+			throw ConfigError(by + ": the bases loop back to '" + next + "'");
 		if (chain.size() == kMaxBaseDepth)
 			throw ConfigError("'" + path + "': more than " + std::to_string(kMaxBaseDepth) +
 			                  " base files");
-		chain.push_back(next);
-		const mrpt::config::CConfigFile cfg(next);
+		chain.push_back({next, std::make_unique<mrpt::config::CConfigFile>(next)});
+		const auto& cfg = *chain.back().file;
 		if (!hasKey(cfg, "base", "file")) break;
 		const std::string base = readString(cfg, "base", "file");
 		if (base.empty()) throw ConfigError(describeKey(cfg, "base", "file") + ": empty");
@@ -53,21 +58,21 @@ ConfigFile ConfigFile::load(const std::string& path, const std::string& named_by
 {
 	ConfigFile out;
 	out.path_ = path;
-	out.chain_ = chainOf(path, named_by);
-	for (auto it = out.chain_.rbegin(); it != out.chain_.rend(); ++it)  // the deepest base first
+	const auto chain = chainOf(path, named_by);
+	for (const auto& link : chain) out.chain_.push_back(link.path);
+	for (auto it = chain.rbegin(); it != chain.rend(); ++it)  // the deepest base first
 	{
-		const mrpt::config::CConfigFile file(*it);
 		std::vector<std::string> sections;
-		file.getAllSections(sections);
+		it->file->getAllSections(sections);
 		for (const auto& section : sections)
 		{
 			if (section == "base") continue;
 			std::vector<std::string> keys;
-			file.getAllKeys(section, keys);
+			it->file->getAllKeys(section, keys);
 			for (const auto& key : keys)
 			{
-				out.write(section, key, file.read_string(section, key, ""));
-				out.origin_[{section, key}] = *it;
+				out.write(section, key, it->file->read_string(section, key, ""));
+				out.origin_[{section, key}] = it->path;
 			}
 		}
 	}

@@ -22,10 +22,6 @@ namespace mrolr::apps
 {
 namespace
 {
-util::ConfigFile openConfig(const std::string& file)
-{
-	return util::openConfigFile(file);
-}
 
 bool keepRunning(double seconds, std::chrono::steady_clock::time_point start,
                  const StopSignals& signals, StopSignals& flag)
@@ -54,7 +50,7 @@ int SerialApp::run()
 
 int SerialApp::runEmulate()
 {
-	const auto cfg = openConfig(sim_file);
+	const auto cfg = util::openConfigFile(sim_file);
 	const auto dir = std::filesystem::path(sim_file).parent_path().string();
 	sim::Lab lab(sim::LabOptions::load(cfg, dir, world_file));
 	SerialEmulation emulation(lab, faults);
