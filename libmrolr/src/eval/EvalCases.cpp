@@ -72,6 +72,7 @@ EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOption
 	for (const auto& c : cases)
 	{
 		ms.push_back(c.ms);
+		s.mean_times += c.result.times;
 		s.max_ms = std::max(s.max_ms, c.ms);
 		if (!c.present)
 		{
@@ -89,6 +90,7 @@ EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOption
 	s.rate = s.rate_cases ? static_cast<double>(s.recognised) / s.rate_cases : 0;
 	s.median_rot_err_deg = median(rot), s.median_trans_err_mm = median(trans);
 	s.median_ms = median(ms), s.median_absent_ms = median(absent_ms);
+	if (!cases.empty()) s.mean_times = s.mean_times.scaled(1.0 / static_cast<double>(cases.size()));
 	return s;
 }
 

@@ -134,11 +134,28 @@ PairRelation relateModel(const Feature& a, const Feature& b)
 	return relate(a, b, parallel);
 }
 
+namespace
+{
+/** consistentLineLine for two skew lines, computing the scene pair's h first and the rest only
+ * when h agrees (the same values as relateGeometry: most pairs fail on h). */
+bool consistentSkew(const PairRelation& m, const Feature& sa, const Feature& sb,
+                    const Tolerance& t)
+{
+	const double tanT = t.tan_theta, b2 = 2 * t.beta_mm;
+	PairRelation s;
+	s.h = (sb.m - sa.m).dot(sa.u.cross(sb.u).normalized());
+	if (!within(s.h, m.h, b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT)) return false;
+	lineLineSkew(sa, sb, s);
+	return consistentLineLine(m, s, t);
+}
+}  // namespace
+
 bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
                 const Feature& sb, const Tolerance& tol)
 {
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
 	if (!angleWithin(sa.u.dot(sb.u), m, tol)) return false;
+	if (ma.isLine() && mb.isLine() && !m.parallel) return consistentSkew(m, sa, sb, tol);
 	PairRelation s;  // the angle was checked above: no trigonometry in the matcher's inner loop
 	relateGeometry(sa, sb, m.parallel, s);
 	if (ma.isLine() && mb.isLine()) return consistentLineLine(m, s, tol);

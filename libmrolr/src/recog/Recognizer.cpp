@@ -17,6 +17,7 @@
 namespace mrolr::recog
 {
 using detail::rankOf;
+using detail::StageTimer;
 using detail::verifyAndRefine;
 using detail::verifyBeta_mm;
 using detail::verifyTheta_rad;
@@ -106,6 +107,25 @@ double minVisibleShare(const std::vector<Feature>& fs, const SelfOcclusion& occ,
 
 }  // namespace
 
+RecognitionTimes& RecognitionTimes::operator+=(const RecognitionTimes& o)
+{
+	cliques_ms += o.cliques_ms, verify_3d_ms += o.verify_3d_ms;
+	image_score_ms += o.image_score_ms, image_refine_ms += o.image_refine_ms;
+	plane_ms += o.plane_ms;
+	return *this;
+}
+
+RecognitionTimes RecognitionTimes::scaled(double f) const
+{
+	return {f * cliques_ms, f * verify_3d_ms, f * image_score_ms, f * image_refine_ms,
+	        f * plane_ms};
+}
+
+double RecognitionTimes::total_ms() const
+{
+	return cliques_ms + verify_3d_ms + image_score_ms + image_refine_ms + plane_ms;
+}
+
 double cliqueConfidence(double score, int level, size_t levels)
 {
 	const double f = levels > 1 ? static_cast<double>(level - 1) / (levels - 1) : 0.0;
@@ -151,6 +171,7 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	centroid_O_ /= static_cast<double>(table_.features().size());
 	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
 	samples_ = newSampleCache();
+	levels_cache_ = newLevelCache();
 	plane_gen_ = std::make_shared<PlaneHypothesisGenerator>(table_.features(),
 	                                                        modelBaseZ_mm(model), opts_.plane);
 	if (!opts_.verify_visible_only) return;
@@ -201,20 +222,8 @@ RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t 
 	best.model = table_.name();
 	if (images) best.image_score = 0.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-	const auto hyps = hypothesesAt(tableFor(images != nullptr), os, opts_, p,
-	                               focusFilter(scene, os, level, bounds, up_S, images));
-	const auto clusters =
-	    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
-	std::vector<VerifiedPose> verified;
-	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
-	{
-		if (!upright(clusters[k].mean, up_S)) continue;
-		auto [T, v] =
-		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
-		if (!upright(T, up_S) || (images && v.score < minScore(level, up_S, images))) continue;
-		verified.push_back({T, std::move(v), std::nullopt, k});
-	}
-	if (images) judgeInImages(verified, *images, os.features, p, up_S);
+	auto [clusters, verified] = levelHypotheses(scene, os, level, bounds, up_S, images, best.times);
+	if (images) judgeInImages(verified, *images, os.features, p, up_S, best.times);
 	double best_rank = 0;
 	for (const auto& h : verified)
 	{
@@ -240,6 +249,32 @@ RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t 
 	return best;
 }
 
+Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
+    const std::vector<Feature>& scene, const OrientedScene& os, size_t level, FocusBounds& bounds,
+    const Eigen::Vector3d* up_S, const ImageVerifier* images, RecognitionTimes& times) const
+{
+	const LevelParams& p = opts_.levels.at(level);
+	LevelHypotheses out;
+	{
+		const StageTimer timer(times.cliques_ms);
+		const auto hyps = hypothesesAt(tableFor(images != nullptr), os, opts_, p,
+		                               focusFilter(scene, os, level, bounds, up_S, images));
+		out.clusters =
+		    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
+	}
+	const StageTimer timer(times.verify_3d_ms);
+	const auto& clusters = out.clusters;
+	for (size_t k = 0; k < clusters.size() && static_cast<int>(k) < opts_.verify_clusters; ++k)
+	{
+		if (!upright(clusters[k].mean, up_S)) continue;
+		auto [T, v] =
+		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
+		if (!upright(T, up_S) || (images && v.score < minScore(level, up_S, images))) continue;
+		out.verified.push_back({T, std::move(v), std::nullopt, k});
+	}
+	return out;
+}
+
 RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
                                         const SceneContext& context) const
 {
@@ -251,6 +286,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	best.model = table_.name();
 	size_t last = opts_.levels.size();
 	int skipped = 0;
+	RecognitionTimes times;
 	FocusBounds bounds;  // shared by the levels: computed for the coarsest tolerances
 	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
@@ -261,6 +297,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 			continue;
 		}
 		RecognitionResult r = atLevel(scene, l, bounds, up_S, images);
+		times += r.times;
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
 		if ((r.found && !best.found) || rankOf(r) > rankOf(best)) best = r;
@@ -269,6 +306,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	    (!best.found || opts_.plane.run_when == PlaneRunWhen::Always))
 	{
 		RecognitionResult r = recognizeOnPlane(scene, *context.plane, *images);
+		times += r.times;
 		const bool better_candidate =
 		    !best.image_score || r.image_score.value_or(0) > *best.image_score;
 		if (r.found ? !best.found || rankOf(r) > rankOf(best) : !best.found && better_candidate)
@@ -276,6 +314,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
 	best.levels_skipped = skipped;
+	best.times = times;
 	best.ms =
 	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 	return best;

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -29,6 +30,25 @@ inline double verifyTheta_rad(const LevelParams& p, const RecognitionOptions& o)
 std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
     const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
     const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ);
+
+/** Adds the wall time of its scope (ms) to a stage of RecognitionTimes. */
+class StageTimer
+{
+ public:
+	explicit StageTimer(double& total_ms) : total_ms_(total_ms) {}
+	StageTimer(const StageTimer&) = delete;
+	StageTimer& operator=(const StageTimer&) = delete;
+	~StageTimer()
+	{
+		total_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+		                                                       start_)
+		                 .count();
+	}
+
+ private:
+	double& total_ms_;
+	std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
 
 /** Ranking of a verified pose: by its image score when there is one (3D score as tie-break). */
 inline double rankOf(const VerificationResult& v, const std::optional<double>& image_score)

@@ -168,6 +168,7 @@ struct EvalSummary
 	double median_rot_err_deg = -1, median_trans_err_mm = -1;  ///< over correct rate cases
 	double median_ms = 0, max_ms = 0;                          ///< per model and scene, all cases
 	double median_absent_ms = 0;                               ///< absent cases
+	recog::RecognitionTimes mean_times;  ///< per model and scene, each stage's mean over all cases
 };
 
 EvalSummary summarize(const std::vector<EvalCase>& cases, const EvaluationOptions& opts);

@@ -10,6 +10,7 @@
 #include <mrolr/recog/RecognitionOptions.h>
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/recog/SupportBound.h>
+#include <mrolr/recog/TransformCluster.h>
 #include <mrolr/recog/Verification.h>
 #include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/plane/PlaneHypotheses.h>
@@ -52,6 +53,21 @@ double cliqueConfidence(double score, int level, size_t levels);
  * hypothesis, where a clique answer rests on several that agree. */
 double planeConfidence(double image_score);
 
+/** Where one recognition spent its time: wall ms of each stage, summed over the levels and the
+ * support-plane search (RecognitionResult::ms also holds what is in none of them). */
+struct RecognitionTimes
+{
+	double cliques_ms = 0;       ///< clique matching, poses and their clustering (thesis 6.3)
+	double verify_3d_ms = 0;     ///< verification in the scene wire-frame (thesis 6.4)
+	double image_score_ms = 0;   ///< image scores of the verified poses (ImageVerifier::score)
+	double image_refine_ms = 0;  ///< refinement in the images and the scores after it
+	double plane_ms = 0;         ///< support-plane hypotheses and their quick image pre-rank
+
+	RecognitionTimes& operator+=(const RecognitionTimes& o);
+	RecognitionTimes scaled(double f) const;  ///< every stage times f
+	double total_ms() const;
+};
+
 struct RecognitionResult
 {
 	std::string model;
@@ -70,6 +86,7 @@ struct RecognitionResult
 	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
 	std::optional<int> scene_index;  ///< which scene of a sweep held it (searchSweep, found)
 	double ms = 0;               ///< wall time of the search (ms)
+	RecognitionTimes times;      ///< where ms went
 	int levels_skipped = 0;      ///< levels skipped: SupportBound says they cannot verify
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
 	 * model edge samples on image edges), which decided acceptance; empty without images. */
@@ -211,7 +228,7 @@ class Recognizer
 	 * (ImageVerifier::refine) and re-verifies them in 3D against @p scene at level @p p. */
 	void judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,
 	                   const std::vector<Feature>& scene, const LevelParams& p,
-	                   const Eigen::Vector3d* up_S) const;
+	                   const Eigen::Vector3d* up_S, RecognitionTimes& times) const;
 
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels). */
@@ -244,6 +261,29 @@ class Recognizer
 	struct SampleCache;
 	static std::shared_ptr<SampleCache> newSampleCache();
 	std::shared_ptr<SampleCache> samples_;  ///< sightedSamples() per spacing
+
+	/** What a level made of a scene before the images judged it: the clusters of clique poses
+	 * and the poses verified in 3D. */
+	struct LevelHypotheses
+	{
+		std::vector<PoseCluster> clusters;
+		std::vector<VerifiedPose> verified;
+	};
+	/** The clusters and verified poses of @p level on @p scene, computed or, when the last
+	 * scene searched had the same features, up direction and image use, as computed then. The
+	 * images change neither (only whether the 3D pre-filter applies): a second search of the
+	 * same scene with other occluders (MutualOcclusion.h) repeats none of it. */
+	LevelHypotheses levelHypotheses(const std::vector<Feature>& scene, const OrientedScene& os,
+	                                size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
+	                                const ImageVerifier* images, RecognitionTimes& times) const;
+	LevelHypotheses computeLevelHypotheses(const std::vector<Feature>& scene,
+	                                       const OrientedScene& os, size_t level,
+	                                       FocusBounds& bounds, const Eigen::Vector3d* up_S,
+	                                       const ImageVerifier* images,
+	                                       RecognitionTimes& times) const;
+	struct LevelCache;
+	static std::shared_ptr<LevelCache> newLevelCache();
+	std::shared_ptr<LevelCache> levels_cache_;  ///< the last scene's LevelHypotheses
 };
 
 }  // namespace mrolr::recog

@@ -53,7 +53,8 @@ nlohmann::json caseJson(const eval::EvalCase& c)
 	        {"ambiguous", c.result.ambiguous},
 	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
-	        {"ms", c.ms}};
+	        {"ms", c.ms},
+	        {"times_ms", timesJson(c.result.times)}};
 }
 
 nlohmann::json objectJson(const eval::EvalObject& o)
@@ -99,7 +100,8 @@ nlohmann::json summaryJson(const eval::EvalSummary& s)
 	        {"median_trans_err_mm", s.median_trans_err_mm},
 	        {"median_ms", s.median_ms},
 	        {"max_ms", s.max_ms},
-	        {"median_absent_ms", s.median_absent_ms}};
+	        {"median_absent_ms", s.median_absent_ms},
+	        {"mean_times_ms", timesJson(s.mean_times)}};
 }
 }  // namespace
 
@@ -168,6 +170,10 @@ void RecognizeApp::writeEvaluation(std::ostream& out) const
 	    << s.wrong_poses << "; median errors " << s.median_rot_err_deg << " deg, "
 	    << s.median_trans_err_mm << " mm; per model median " << s.median_ms << " ms (absent "
 	    << s.median_absent_ms << " ms, max " << s.max_ms << " ms)\n";
+	const auto& t = s.mean_times;
+	out << "mean time per model and scene: cliques " << t.cliques_ms << " ms, 3D verification "
+	    << t.verify_3d_ms << " ms, image scores " << t.image_score_ms << " ms, image refinement "
+	    << t.image_refine_ms << " ms, plane hypotheses " << t.plane_ms << " ms\n";
 }
 
 }  // namespace mrolr::apps

@@ -66,6 +66,15 @@ Eigen::Vector3d rollPitchYawDeg(const Eigen::Matrix3d& R)
 	        std::atan2(R(1, 0), R(0, 0)) * r2d};
 }
 
+nlohmann::json timesJson(const recog::RecognitionTimes& t)
+{
+	return {{"cliques", t.cliques_ms},
+	        {"verify_3d", t.verify_3d_ms},
+	        {"image_score", t.image_score_ms},
+	        {"image_refine", t.image_refine_ms},
+	        {"plane", t.plane_ms}};
+}
+
 nlohmann::json resultJson(const recog::RecognitionResult& r)
 {
 	const auto matrix44 = [](const Eigen::Isometry3d& M)
@@ -86,6 +95,7 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"matched", r.matched},
 	        {"level", r.level},
 	        {"ms", r.ms},
+	        {"times_ms", timesJson(r.times)},
 	        {"confidence", r.confidence},
 	        {"scene", r.scene_index},
 	        {"rpy_deg", {rpy.x(), rpy.y(), rpy.z()}},

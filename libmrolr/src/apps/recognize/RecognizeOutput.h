@@ -16,7 +16,10 @@ namespace mrolr::apps
 /** Roll, pitch, yaw (deg) of R = Rz(yaw) Ry(pitch) Rx(roll). */
 Eigen::Vector3d rollPitchYawDeg(const Eigen::Matrix3d& R);
 
-/** {"model", "found", "T", "score", "matched", "level", "ms", "confidence", "scene",
+/** {"cliques", "verify_3d", "image_score", "image_refine", "plane"}: ms of each stage. */
+nlohmann::json timesJson(const recog::RecognitionTimes& t);
+
+/** {"model", "found", "T", "score", "matched", "level", "ms", "times_ms", "confidence", "scene",
  * "rpy_deg", "t_mm", "agreeing_cliques", "spread_rot_deg", "spread_trans_mm", "image_score",
  * "origin", "occluders", "ambiguous", "poses"}; level, scene and image_score null when absent. */
 nlohmann::json resultJson(const recog::RecognitionResult& r);

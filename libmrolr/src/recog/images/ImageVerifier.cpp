@@ -142,10 +142,16 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 		}
 }
 
+EdgeImage::Pixel EdgeImage::pixelOf(const cv::Point2d& px)
+{
+	// px is inside the image (x, y >= 0): rounding half up is std::lround there
+	return {static_cast<int>(px.x + 0.5), static_cast<int>(px.y + 0.5)};
+}
+
 bool EdgeImage::supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const
 {
-	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
-	return dist_.at<float>(y, x) <= dist_px_ && oriented(px, tangent_px);
+	const Pixel at = pixelOf(px);
+	return dist_.ptr<float>(at.y)[at.x] <= dist_px_ && oriented(at, tangent_px);
 }
 
 double EdgeImage::distanceAt(const cv::Point2d& px) const
@@ -153,27 +159,27 @@ double EdgeImage::distanceAt(const cv::Point2d& px) const
 	const int x0 = std::min(static_cast<int>(px.x), dist_.cols - 2);
 	const int y0 = std::min(static_cast<int>(px.y), dist_.rows - 2);
 	const double fx = px.x - x0, fy = px.y - y0;
-	const auto d = [this](int y, int x) { return static_cast<double>(dist_.at<float>(y, x)); };
-	return (1 - fy) * ((1 - fx) * d(y0, x0) + fx * d(y0, x0 + 1)) +
-	       fy * ((1 - fx) * d(y0 + 1, x0) + fx * d(y0 + 1, x0 + 1));
+	const float* r0 = dist_.ptr<float>(y0);
+	const float* r1 = dist_.ptr<float>(y0 + 1);
+	const auto d = [](const float* row, int x) { return static_cast<double>(row[x]); };
+	return (1 - fy) * ((1 - fx) * d(r0, x0) + fx * d(r0, x0 + 1)) +
+	       fy * ((1 - fx) * d(r1, x0) + fx * d(r1, x0 + 1));
 }
 
-bool EdgeImage::oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const
+bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) const
 {
-	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
-	const size_t label = static_cast<size_t>(labels_.at<int>(y, x));
+	const size_t label = static_cast<size_t>(labels_.ptr<int>(at.y)[at.x]);
 	if (label >= normal_.size()) return false;
-	const double len = std::hypot(tangent_px.x, tangent_px.y);
+	const double len = std::sqrt(tangent_px.x * tangent_px.x + tangent_px.y * tangent_px.y);
 	if (len <= 0) return false;  // an edge seen end-on has no direction to compare
 	const cv::Point2f& n = normal_[label];
 	return std::abs(n.x * tangent_px.x + n.y * tangent_px.y) <= sin_tol_ * len;
 }
 
-bool EdgeImage::occludedAt(const cv::Point2d& px, double depth_mm) const
+bool EdgeImage::occludedAt(const Pixel& at, double depth_mm) const
 {
 	if (occluder_z_.empty()) return false;
-	const int x = static_cast<int>(std::lround(px.x)), y = static_cast<int>(std::lround(px.y));
-	return depth_mm > occluder_z_.at<float>(y, x) + occluder_margin_mm_;
+	return depth_mm > occluder_z_.ptr<float>(at.y)[at.x] + occluder_margin_mm_;
 }
 
 SightedSamples::SightedSamples(std::vector<EdgeSample> samples, const SelfOcclusion* occlusion)
@@ -237,16 +243,17 @@ ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_
 	    s, T_OinL,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool, double depth_mm)
 	    {
-		    if (occludedAt(px, depth_mm))
+		    const Pixel at = pixelOf(px);
+		    if (occludedAt(at, depth_mm))
 		    {
 			    ++c.occluded;
 			    return;
 		    }
 		    ++c.considered;
-		    c.supported += supports(px, tangent) ? 1 : 0;
+		    const bool aligned = oriented(at, tangent);
+		    c.supported += aligned && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
 		    if (truncate_px <= 0) return;
-		    const double d =
-		        oriented(px, tangent) ? std::min(truncate_px, distanceAt(px)) : truncate_px;
+		    const double d = aligned ? std::min(truncate_px, distanceAt(px)) : truncate_px;
 		    c.cost_px2 += d * d;
 	    },
 	    &c.outside);
@@ -262,7 +269,7 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
 	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
 	                           bool limb, double depth_mm)
 	                       {
-		                       hidden = hidden || occludedAt(px, depth_mm);
+		                       hidden = hidden || occludedAt(pixelOf(px), depth_mm);
 		                       out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
 	                       });
 	return out;

@@ -55,9 +55,11 @@ std::vector<RecognitionResult> searchBehindFound(const std::vector<const Recogni
 		if (occluders.empty()) continue;
 		RecognitionResult r = search(i, images.withOccluders(occluders));
 		r.ms += first[i].ms;
+		r.times += first[i].times;
 		if (!r.found || interpenetrates(*recs[i], r.T_OinS, occluders))
 		{
 			out[i].ms = r.ms;  // the second search's time counts
+			out[i].times = r.times;
 			continue;
 		}
 		r.occluders = static_cast<int>(occluders.size());

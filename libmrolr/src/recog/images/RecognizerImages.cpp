@@ -10,15 +10,19 @@ namespace mrolr::recog
 {
 void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,
                                const std::vector<Feature>& scene, const LevelParams& p,
-                               const Eigen::Vector3d* up_S) const
+                               const Eigen::Vector3d* up_S, RecognitionTimes& times) const
 {
 	const auto& o = images.options();
 	const SightedSamples& samples = sightedSamples(o.sample_spacing_mm);
-	for (auto& h : poses) h.image = images.score(samples, h.T).score;
+	{
+		const detail::StageTimer timer(times.image_score_ms);
+		for (auto& h : poses) h.image = images.score(samples, h.T).score;
+	}
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });
 	const std::vector<Eigen::Vector3d> axes_O = upAxisPoints(table_.features());
 	const double beta = detail::verifyBeta_mm(p, opts_), theta = detail::verifyTheta_rad(p, opts_);
+	const detail::StageTimer timer(times.image_refine_ms);
 	for (size_t k = 0; k < poses.size() && static_cast<int>(k) < o.refine_candidates; ++k)
 	{
 		auto& h = poses[k];

@@ -50,26 +50,32 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 	RecognitionResult best;
 	best.model = table_.name();
 	best.image_score = 0;
-	const std::vector<PlaneHypothesis> hyps = plane_gen_->generate(scene, plane);
-	const SightedSamples& coarse = sightedSamples(po.prerank_spacing_mm);
-	std::vector<double> quick(hyps.size());
-	for (size_t k = 0; k < hyps.size(); ++k)
-		quick[k] = images.score(coarse, hyps[k].T_OinS).score;
+	std::vector<PlaneHypothesis> hyps;
+	std::vector<double> quick;
+	{
+		const detail::StageTimer timer(best.times.plane_ms);
+		hyps = plane_gen_->generate(scene, plane);
+		const SightedSamples& coarse = sightedSamples(po.prerank_spacing_mm);
+		for (const auto& h : hyps) quick.push_back(images.score(coarse, h.T_OinS).score);
+	}
 	const Eigen::Vector3d* up_S = &plane.n_S;
 	const LevelParams& p = opts_.levels.back();
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	const double beta = detail::verifyBeta_mm(p, opts_), theta = detail::verifyTheta_rad(p, opts_);
 	std::vector<VerifiedPose> poses;
-	for (const size_t k :
-	     bestDistinct(hyps, quick, centroid_O_, static_cast<size_t>(po.max_hypotheses)))
 	{
-		const Eigen::Isometry3d& T = hyps[k].T_OinS;
-		poses.push_back({T,
-		                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
-		                            occlusionFor(up_S)),
-		                 std::nullopt, k});
+		const detail::StageTimer timer(best.times.verify_3d_ms);
+		for (const size_t k :
+		     bestDistinct(hyps, quick, centroid_O_, static_cast<size_t>(po.max_hypotheses)))
+		{
+			const Eigen::Isometry3d& T = hyps[k].T_OinS;
+			poses.push_back({T,
+			                 verifyPose(table_, os.features, T, beta, theta,
+			                            p.length_threshold_mm, occlusionFor(up_S)),
+			                 std::nullopt, k});
+		}
 	}
-	judgeInImages(poses, images, os.features, p, up_S);
+	judgeInImages(poses, images, os.features, p, up_S, best.times);
 	double best_rank = -1;
 	std::vector<VerifiedPose> eligible;  // the poses that could be the answer
 	for (const auto& h : poses)

@@ -182,9 +182,16 @@ class EdgeImage
 	template <bool kHiddenToo, class Fn>
 	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL, Fn fn,
 	                            int* outside = nullptr) const;
-	bool occludedAt(const cv::Point2d& px, double depth_mm) const;
+	struct Pixel
+	{
+		int x, y;
+	};
+	/** The pixel @p px (inside the image) falls on. */
+	static Pixel pixelOf(const cv::Point2d& px);
+	bool occludedAt(const Pixel& at, double depth_mm) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
-	bool oriented(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
+	/** The nearest edge at @p at runs within orientation_tol_deg of @p tangent_px. */
+	bool oriented(const Pixel& at, const cv::Point2d& tangent_px) const;
 	double distanceAt(const cv::Point2d& px) const;  ///< bilinear (px)
 
 	cv::Matx33d K_;
