@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
 using namespace mrolr::recog;
 using namespace mrolr::sim;
@@ -141,4 +142,69 @@ TEST(RecognizerMisc, MalformedWireFrames)
 	{
 		EXPECT_NE(std::string(e.what()).find("conic"), std::string::npos) << e.what();
 	}
+}
+
+namespace
+{
+void expectSameAnswer(const RecognitionResult& a, const RecognitionResult& b, const char* what)
+{
+	EXPECT_EQ(a.found, b.found) << what;
+	EXPECT_EQ(a.T_OinS.matrix(), b.T_OinS.matrix()) << what;
+	EXPECT_EQ(a.score, b.score) << what;
+	EXPECT_EQ(a.level, b.level) << what;
+	EXPECT_EQ(a.agreeing_cliques, b.agreeing_cliques) << what;
+}
+}  // namespace
+
+// A Recognizer remembers the last scene's clusters and verified poses: the same scene searched
+// again gives the same answer without matching cliques, and any other scene (one segment moved by
+// 2 mm, another up direction, the object taken away) gives what a fresh Recognizer gives.
+TEST(RecognizerMisc, SearchingTheSameSceneAgainReusesItsHypothesesAndNothingElse)
+{
+	const auto objects = makeLabObjects();
+	const size_t k = 1;
+	const auto opts = RecognitionOptions::defaults();
+	const auto ts = makeTableScene(objects, static_cast<int>(k), 2, noisy(), 4242);
+	mrolr::model::WireFrame moved = ts.scene;
+	ASSERT_FALSE(moved.lines.empty());
+	moved.lines.front().p1 += Eigen::Vector3d(2, 0, 0);
+	std::vector<mrolr::model::WireFrame> others = objects;
+	others.erase(others.begin() + static_cast<std::ptrdiff_t>(k));
+	const auto without = makeTableScene(others, -1, 2, noisy(), 4242).scene;
+	const SceneContext up{Eigen::Vector3d(0, 1, 0), std::nullopt, std::nullopt};
+
+	const Recognizer rec(objects[k], opts);
+	const auto first = rec.recognize(ts.scene);
+	ASSERT_TRUE(first.found);
+	EXPECT_GT(first.times.cliques_ms, 0.0);
+	const auto again = rec.recognize(ts.scene);
+	expectSameAnswer(again, first, "same scene again");
+	EXPECT_EQ(again.times.cliques_ms, 0.0) << "the second search matched the cliques again";
+
+	for (const auto& [scene, context, what] :
+	     {std::make_tuple(moved, SceneContext{}, "one segment moved"),
+	      std::make_tuple(ts.scene, up, "an up direction given"),
+	      std::make_tuple(without, SceneContext{}, "the object taken away")})
+	{
+		const auto r = rec.recognize(scene, context);
+		EXPECT_GT(r.times.cliques_ms, 0.0) << what;
+		expectSameAnswer(r, Recognizer(objects[k], opts).recognize(scene, context), what);
+	}
+	EXPECT_FALSE(rec.recognize(without).found);
+	expectSameAnswer(rec.recognize(ts.scene), first, "the first scene once more");
+}
+
+// The stage times are the parts of the search's time: none negative, together no more than ms.
+TEST(RecognizerMisc, StageTimesArePartsOfTheSearchTime)
+{
+	const auto objects = makeLabObjects();
+	const auto ts = makeTableScene(objects, 3, 2, noisy(), 4343);
+	const auto r = Recognizer(objects[3], RecognitionOptions::defaults()).recognize(ts.scene);
+	const auto& t = r.times;
+	for (const double ms : {t.cliques_ms, t.verify_3d_ms, t.image_score_ms, t.image_refine_ms,
+	                        t.plane_ms})
+		EXPECT_GE(ms, 0.0);
+	EXPECT_GT(t.cliques_ms, 0.0);
+	EXPECT_EQ(t.image_score_ms + t.image_refine_ms + t.plane_ms, 0.0) << "no images were given";
+	EXPECT_LE(t.total_ms(), r.ms);
 }
