@@ -38,10 +38,13 @@ class ConsistentSetSearch
 	}
 
  private:
+	/** Whether @p c, a candidate of the focus match (memberCandidates: consistent with it),
+	 * is consistent with the other chosen matches too. */
 	bool fits(const FeatureMatch& c) const
 	{
-		for (const auto& x : chosen_)
+		for (size_t k = 1; k < chosen_.size(); ++k)
 		{
+			const FeatureMatch& x = chosen_[k];
 			if (x.scene() == c.scene()) return false;
 			const auto& rel = model_.relation(x.model, c.model);
 			const auto& mf = model_.features();
@@ -115,6 +118,39 @@ std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
 	return out;
 }
 
+/** The same, seeking them among the scene features @p members lists for the focus match
+ * (@p kept_index: each scene feature's index among the level's kept ones, -1 if not kept). */
+std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
+                                           const FeatureMatch& focus, const OrientedScene& scene,
+                                           const LevelParams& p, const Tolerance& tol,
+                                           MemberCandidates& members,
+                                           const std::vector<int>& kept_index)
+{
+	const auto& mf = model.features();
+	const auto& rel = model.relation(focus.model, j);
+	std::vector<FeatureMatch> out;
+	const size_t src = scene.source[focus.scene()];
+	for (const std::uint32_t code : members.of(focus.model, j, src, focus.oriented % 2 == 1))
+	{
+		const int k = kept_index[code / 2];
+		if (k < 0) continue;
+		const size_t o = 2 * static_cast<size_t>(k) + code % 2;
+		if (o / 2 != focus.scene() && passesUnaryGate(mf[j], scene.oriented[o], p, false) &&
+		    consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented],
+		               scene.oriented[o], tol))
+			out.push_back({j, o});
+	}
+	return out;
+}
+
+/** Each of the @p n scene features' index among @p scene's kept ones (-1 when not kept). */
+std::vector<int> keptIndex(const OrientedScene& scene, size_t n)
+{
+	std::vector<int> out(n, -1);
+	for (size_t k = 0; k < scene.source.size(); ++k) out[scene.source[k]] = static_cast<int>(k);
+	return out;
+}
+
 double strengthOf(const ModelTable& model, const std::vector<FeatureMatch>& ms)
 {
 	double s = 0;
@@ -151,13 +187,19 @@ bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, b
 
 std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
                                      const OrientedScene& scene, const LevelParams& p,
-                                     int max_nodes, const FocusFilter& focus_ok)
+                                     int max_nodes, const FocusFilter& focus_ok,
+                                     MemberCandidates* members)
 {
 	const auto& clique = model.cliques().at(clique_index);
 	const Tolerance tol = toleranceOf(p);
 	const Feature& mfocus = model.features()[clique.focus];
 	std::vector<std::vector<size_t>> gated;
-	for (size_t j : clique.members) gated.push_back(gatedFor(model.features()[j], scene, p, false));
+	std::vector<int> kept_index;
+	if (members)
+		kept_index = keptIndex(scene, members->sceneSize());
+	else
+		for (size_t j : clique.members)
+			gated.push_back(gatedFor(model.features()[j], scene, p, false));
 	std::vector<CliqueMatch> out;
 	for (size_t o : gatedFor(mfocus, scene, p, true))
 	{
@@ -165,8 +207,10 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
 		for (size_t k = 0; k < clique.members.size(); ++k)
-			cands.push_back(
-			    memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
+			cands.push_back(members ? memberCandidates(model, clique.members[k], focus, scene, p,
+			                                           tol, *members, kept_index)
+			                        : memberCandidates(model, clique.members[k], gated[k], focus,
+			                                           scene, tol));
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
 		for (auto& ms : search.run(focus, cands))
 			if (static_cast<int>(ms.size()) >= p.clique_size)

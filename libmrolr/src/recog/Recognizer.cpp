@@ -46,12 +46,13 @@ void addPoses(const std::vector<Correspondence>& cs, const RecognitionOptions& o
 
 std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const OrientedScene& scene,
                                          const RecognitionOptions& o, const LevelParams& p,
-                                         const FocusFilter& focus_ok)
+                                         const FocusFilter& focus_ok, MemberCandidates& members)
 {
 	std::vector<PoseHypothesis> hyps;
 	for (size_t c = 0; c < model.cliques().size(); ++c)
 	{
-		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes, focus_ok);
+		const auto matches =
+		    matchClique(model, c, scene, p, o.max_search_nodes, focus_ok, &members);
 		for (size_t k = 0; k < matches.size() && k < kMatchesPerClique; ++k)
 			addPoses(correspondencesOf(model, scene, matches[k]), o, p,
 			         static_cast<double>(matches[k].matches.size()), hyps);
@@ -257,8 +258,13 @@ Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
 	LevelHypotheses out;
 	{
 		const StageTimer timer(times.cliques_ms);
-		const auto hyps = hypothesesAt(tableFor(images != nullptr), os, opts_, p,
-		                               focusFilter(scene, os, level, bounds, up_S, images));
+		const ModelTable& table = tableFor(images != nullptr);
+		if (!bounds.members || &bounds.members->table() != &table)
+			bounds.members =
+			    std::make_shared<MemberCandidates>(table, scene, loosestTolerance(opts_.levels));
+		const auto hyps = hypothesesAt(table, os, opts_, p,
+		                               focusFilter(scene, os, level, bounds, up_S, images),
+		                               *bounds.members);
 		out.clusters =
 		    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	}

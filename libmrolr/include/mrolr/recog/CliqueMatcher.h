@@ -4,6 +4,7 @@
  * scene matches for the other clique members that are pairwise consistent with each other and
  * with the focus match, no model or scene feature used twice. */
 
+#include <mrolr/recog/MemberCandidates.h>
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
 
@@ -55,9 +56,12 @@ using FocusFilter = std::function<bool(size_t model_focus, size_t scene_feature)
 
 /** All matches of clique @p clique_index with at least p.clique_size features, largest and
  * strongest first. @p max_nodes bounds the search per focus candidate; focus candidates that
- * @p focus_ok rejects are not searched. */
+ * @p focus_ok rejects are not searched. With @p members (built on @p model and the scene
+ * @p scene was oriented from, for tolerances at least as loose as @p p's) each member's
+ * candidates are sought among those it lists instead of the whole scene: the same matches. */
 std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
                                      const OrientedScene& scene, const LevelParams& p,
-                                     int max_nodes, const FocusFilter& focus_ok = {});
+                                     int max_nodes, const FocusFilter& focus_ok = {},
+                                     MemberCandidates* members = nullptr);
 
 }  // namespace mrolr::recog

@@ -149,13 +149,16 @@ class Recognizer
 	                                   const ImageVerifier& images) const;
 	const PlaneHypothesisGenerator& planeGenerator() const { return *plane_gen_; }
 
-	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), computed for the
-	 * coarsest tolerances of all levels so that every level can use them. */
+	/** Focus-match bounds (mm) of one scene, by (model focus, scene feature), and the clique
+	 * members' candidates (MemberCandidates), computed for the coarsest tolerances of all levels
+	 * so that every level can use them. */
 	struct FocusBounds
 	{
 		std::shared_ptr<SupportBound> bound;
 		double match_beta_mm = 0;
 		std::map<std::pair<size_t, size_t>, double> mm;
+		/** The clique members' candidates under the loosest tolerance of the levels. */
+		std::shared_ptr<MemberCandidates> members;
 	};
 
 	/** One level (0-based) on one scene; found when the best verified cluster reaches the level's

@@ -1,0 +1,45 @@
+#include <mrolr/recog/MemberCandidates.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace mrolr::recog
+{
+MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Feature>& scene,
+                                   const Tolerance& loosest)
+    : model_(model), loosest_(loosest)
+{
+	if (scene.size() >= (std::uint32_t{1} << 30))
+		throw std::invalid_argument("MemberCandidates: too many scene features");
+	oriented_.reserve(2 * scene.size());
+	for (const auto& f : scene) oriented_.push_back(f), oriented_.push_back(f.flipped());
+}
+
+const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t member,
+                                                       size_t focus_scene, bool focus_flipped)
+{
+	const size_t n = model_.features().size();
+	const std::uint64_t o_focus = 2 * focus_scene + (focus_flipped ? 1 : 0);
+	const std::uint64_t key = (focus * n + member) * oriented_.size() + o_focus;
+	const auto [it, fresh] = lists_.try_emplace(key);
+	if (!fresh) return it->second;
+	const auto& mf = model_.features();
+	const auto& rel = model_.relation(focus, member);
+	const Feature& sa = oriented_[o_focus];
+	for (std::uint32_t o = 0; o < oriented_.size(); ++o)
+		if (consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
+			it->second.push_back(o);
+	return it->second;
+}
+
+Tolerance loosestTolerance(const std::vector<LevelParams>& levels)
+{
+	double beta_mm = 0, theta_deg = 0;
+	for (const auto& p : levels)
+		beta_mm = std::max(beta_mm, p.position_error_mm),
+		theta_deg = std::max(theta_deg, p.rotation_deg);
+	return Tolerance(beta_mm + 1e-6, theta_deg * M_PI / 180.0 + 1e-6);
+}
+
+}  // namespace mrolr::recog
