@@ -1,0 +1,71 @@
+// MemberCandidates: the clique members' candidates found once under the loosest tolerance give
+// every level exactly the matches it finds alone.
+#include <mrolr/recog/CliqueMatcher.h>
+#include <mrolr/recog/MemberCandidates.h>
+#include <mrolr/sim/SyntheticObjects.h>
+#include <mrolr/sim/SyntheticScene.h>
+
+#include <gtest/gtest.h>
+
+using namespace mrolr::recog;
+using namespace mrolr::sim;
+
+namespace
+{
+bool sameMatches(const std::vector<CliqueMatch>& a, const std::vector<CliqueMatch>& b)
+{
+	if (a.size() != b.size()) return false;
+	for (size_t k = 0; k < a.size(); ++k)
+		if (a[k].clique != b[k].clique || a[k].matches != b[k].matches ||
+		    a[k].strength_mm != b[k].strength_mm)
+			return false;
+	return true;
+}
+}  // namespace
+
+// Noisy, fragmented table scenes of the lab objects, every clique of three models at every level:
+// the same matches with and without the shared candidates, and some matches at all.
+TEST(MemberCandidates, EveryLevelFindsTheMatchesItFindsAlone)
+{
+	const auto objects = makeLabObjects();
+	const auto opts = RecognitionOptions::defaults();
+	SceneNoise noise;
+	noise.endpoint_sigma_mm = 0.7, noise.fragment_probability = 0.4, noise.missing_fraction = 0.1;
+	size_t matches = 0;
+	for (const size_t k : {0u, 1u, 5u})
+	{
+		const ModelTable table(objects[k], opts.auto_clique_count, opts.auto_clique_size,
+		                       opts.auto_cliques, opts.file_cliques);
+		const auto scene =
+		    featuresOf(makeTableScene(objects, static_cast<int>(k), 3, noise, 600 + k).scene);
+		MemberCandidates members(table, scene, loosestTolerance(opts.levels));
+		for (const auto& p : opts.levels)
+		{
+			const OrientedScene os = orientScene(scene, p.length_threshold_mm);
+			for (size_t c = 0; c < table.cliques().size(); ++c)
+			{
+				const auto alone = matchClique(table, c, os, p, opts.max_search_nodes);
+				const auto shared =
+				    matchClique(table, c, os, p, opts.max_search_nodes, {}, &members);
+				EXPECT_TRUE(sameMatches(alone, shared))
+				    << objects[k].name << " clique " << c << " beta " << p.position_error_mm;
+				matches += alone.size();
+			}
+		}
+	}
+	EXPECT_GT(matches, 100u);
+}
+
+// The loosest tolerance is at least every level's, with the margin that keeps rounding out.
+TEST(MemberCandidates, LoosestToleranceCoversEveryLevel)
+{
+	const auto opts = RecognitionOptions::defaults();
+	const Tolerance t = loosestTolerance(opts.levels);
+	for (const auto& p : opts.levels)
+	{
+		EXPECT_GT(t.beta_mm, p.position_error_mm);
+		EXPECT_GT(t.theta_rad, p.rotation_deg * M_PI / 180);
+	}
+	EXPECT_NEAR(t.beta_mm, 15, 1e-5);
+	EXPECT_NEAR(t.theta_rad, 10 * M_PI / 180, 1e-5);
+}
