@@ -330,3 +330,39 @@ TEST(ImageVerifier, APoseMostlyOutsideTheImagesScoresZero)
 	// at the drawn pose in view nothing is outside
 	EXPECT_EQ(p.images.score(p.box, boxPose(), &p.occ).outside, 0);
 }
+
+// scoreIfCheaper is score() when the cost is below the cap and empty when it is not, whatever the
+// pose (on the box, moved off it, mostly out of view) and the cap (between the costs seen).
+TEST(ImageVerifier, AScoreAskedBelowACostIsTheScoreOrNothing)
+{
+	const Pair p;
+	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
+	std::vector<Eigen::Isometry3d> poses;
+	for (int k = 0; k < 40; ++k)
+		poses.push_back(Eigen::Translation3d(0.7 * k - 8, 0.3 * k, 0) * boxPose() *
+		                Eigen::AngleAxisd(0.02 * k, Eigen::Vector3d::UnitZ()));
+	poses.push_back(Eigen::Translation3d(400, 0, 0) * boxPose());  // out of view: cost 1e300
+	std::vector<double> caps = {0.0, 0.5, 1e300};
+	for (const auto& T : poses) caps.push_back(p.images.score(samples, T).cost);
+	int below = 0, above = 0;
+	for (const auto& T : poses)
+	{
+		const ImageScore full = p.images.score(samples, T);
+		for (const double cap : caps)
+		{
+			const auto capped = p.images.scoreIfCheaper(samples, T, cap);
+			ASSERT_EQ(capped.has_value(), full.cost < cap) << "cap " << cap << " cost " << full.cost;
+			if (!capped) ++above;
+			if (!capped) continue;
+			++below;
+			EXPECT_EQ(capped->cost, full.cost);
+			EXPECT_EQ(capped->score, full.score);
+			EXPECT_EQ(capped->supported, full.supported);
+			EXPECT_EQ(capped->considered, full.considered);
+			EXPECT_EQ(capped->outside, full.outside);
+			EXPECT_EQ(capped->per_image, full.per_image);
+		}
+	}
+	EXPECT_GT(below, 100);
+	EXPECT_GT(above, 100);
+}

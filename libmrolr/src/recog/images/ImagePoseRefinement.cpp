@@ -54,10 +54,10 @@ std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::patternSearch(
 			{
 				const Eigen::Isometry3d T =
 				    moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
-				const ImageScore s = score(samples, T);
+				const auto s = scoreIfCheaper(samples, T, best_s.cost);
 				++evals;
-				if (s.cost >= best_s.cost) continue;
-				best = T, best_s = s, improved = true;
+				if (!s) continue;
+				best = T, best_s = *s, improved = true;
 				break;
 			}
 		if (!improved) step_mm /= 2, step_rad /= 2;

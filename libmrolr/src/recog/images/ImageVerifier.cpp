@@ -190,57 +190,88 @@ SightedSamples::SightedSamples(std::vector<EdgeSample> samples, const SelfOcclus
 	for (const auto& s : samples_O) sights.push_back(occ->pointSight(s.p_O));
 }
 
-template <bool kHiddenToo, class Fn>
+std::vector<EdgeSample> EdgeImage::limbsSeen(const SightedSamples& ss,
+                                             const Eigen::Isometry3d& T_OinL) const
+{
+	std::vector<EdgeSample> limbs;
+	if (!limbs_ || !ss.occ) return limbs;
+	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
+	for (const auto& body : ss.occ->revolutionBodies())
+	{
+		const auto l = limbSamples(body, c_O, limb_spacing_mm_);
+		limbs.insert(limbs.end(), l.begin(), l.end());
+	}
+	return limbs;
+}
+
+template <bool kHiddenToo, class Fn, class Stop>
 void EdgeImage::forEachInViewWithDepth(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
-                                       Fn fn, int* outside) const
+                                       const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
+                                       int* outside) const
 {
 	const SelfOcclusion* occ = ss.occ;
 	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
-	std::vector<EdgeSample> limbs;
-	if (limbs_ && occ)
-		for (const auto& body : occ->revolutionBodies())
-		{
-			const auto l = limbSamples(body, c_O, limb_spacing_mm_);
-			limbs.insert(limbs.end(), l.begin(), l.end());
-		}
 	const SelfOcclusion::View view = occ ? occ->viewFrom(c_O) : SelfOcclusion::View();
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
-	const std::vector<EdgeSample>* sets[] = {&ss.samples_O, &limbs};
-	for (const auto* set : sets)
-		for (size_t k = 0; k < set->size(); ++k)
+	const auto visit = [&](const EdgeSample& s, const SelfOcclusion::PointSight* sight)
+	{
+		const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
+		const bool in_view = inView(p) && inView(q);
+		if (!in_view && !outside) return;
+		// a limb is on the outline by construction: only the model's parts off its bodies (a
+		// handle) can hide it (SelfOcclusion::hiddenLimb)
+		const bool limb = sight == nullptr;
+		const bool hidden = occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
+		                            : revolution_visibility_ ? occ->hiddenOnBodies(view, *sight, s.p_O)
+		                                                     : occ->hidden(view, *sight, s.p_O));
+		if (!in_view)
 		{
-			const EdgeSample& s = (*set)[k];
-			const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
-			const bool in_view = inView(p) && inView(q);
-			if (!in_view && !outside) continue;
-			// a limb is on the outline by construction: only the model's parts off its bodies
-			// (a handle) can hide it (SelfOcclusion::hiddenLimb)
-			const bool limb = set == &limbs;
-			const bool hidden =
-			    occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
-			            : revolution_visibility_ ? occ->hiddenOnBodies(view, ss.sights[k], s.p_O)
-			                                     : occ->hidden(view, ss.sights[k], s.p_O));
-			if (!in_view)
-			{
-				*outside += hidden ? 0 : 1;
-				continue;
-			}
-			if (hidden && !kHiddenToo) continue;
-			const cv::Point2d px = projected(K_, D_, p);
-			if (inside.contains(px))
-				fn(px, projected(K_, D_, q) - px, hidden, limb, p.z());
-			else if (outside && !hidden)
-				++*outside;
+			*outside += hidden ? 0 : 1;
+			return;
 		}
+		if (hidden && !kHiddenToo) return;
+		const cv::Point2d px = projected(K_, D_, p);
+		if (inside.contains(px))
+			fn(px, projected(K_, D_, q) - px, hidden, limb, p.z());
+		else if (outside && !hidden)
+			++*outside;
+	};
+	static const SelfOcclusion::PointSight kNoSight;
+	for (size_t k = 0; k < ss.samples_O.size(); ++k)
+	{
+		visit(ss.samples_O[k], occ ? &ss.sights[k] : &kNoSight);
+		if (stop()) return;
+	}
+	for (const auto& s : limbs)
+	{
+		visit(s, nullptr);
+		if (stop()) return;
+	}
 }
 
 ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
                             double truncate_px) const
 {
+	return *count(s, T_OinL, limbsSeen(s, T_OinL), truncate_px, nullptr);
+}
+
+std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
+                                           const Eigen::Isometry3d& T_OinL,
+                                           const std::vector<EdgeSample>& limbs,
+                                           double truncate_px, CostCap* cap) const
+{
 	ImageCount c;
+	bool exceeded = false;
+	const auto stop = [&]
+	{
+		if (!cap) return false;
+		--cap->unvisited;
+		exceeded = exceeded || cap->exceeded();
+		return exceeded;
+	};
 	forEachInViewWithDepth<false>(
-	    s, T_OinL,
+	    s, T_OinL, limbs,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool, double depth_mm)
 	    {
 		    const Pixel at = pixelOf(px);
@@ -255,8 +286,10 @@ ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_
 		    if (truncate_px <= 0) return;
 		    const double d = aligned ? std::min(truncate_px, distanceAt(px)) : truncate_px;
 		    c.cost_px2 += d * d;
+		    if (cap) cap->sum_px2 += d * d, ++cap->considered;
 	    },
-	    &c.outside);
+	    stop, &c.outside);
+	if (exceeded) return std::nullopt;
 	return c;
 }
 
@@ -265,13 +298,15 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
                                                 const SelfOcclusion* occ) const
 {
 	std::vector<Judged> out;
-	forEachInViewWithDepth<true>(SightedSamples(s_O, occ), T_OinL,
+	const SightedSamples sighted(s_O, occ);
+	forEachInViewWithDepth<true>(sighted, T_OinL, limbsSeen(sighted, T_OinL),
 	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
 	                           bool limb, double depth_mm)
 	                       {
 		                       hidden = hidden || occludedAt(pixelOf(px), depth_mm);
 		                       out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
-	                       });
+	                       },
+	                       [] { return false; }, nullptr);
 	return out;
 }
 
@@ -302,10 +337,42 @@ ImageScore ImageVerifier::score(const std::vector<EdgeSample>& samples_O,
 ImageScore ImageVerifier::score(const SightedSamples& samples,
                                 const Eigen::Isometry3d& T_OinL) const
 {
-	ImageScore s;
+	std::array<ImageCount, 2> counts;
+	for (size_t i = 0; i < images_.size(); ++i)
+		counts[i] = images_[i].count(samples, T_OinL, opts_.truncate_px);
+	return combined(counts);
+}
+
+std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& samples,
+                                                        const Eigen::Isometry3d& T_OinL,
+                                                        double max_cost_px2) const
+{
+	std::array<std::vector<EdgeSample>, 2> limbs;
+	CostCap cap;
+	cap.max_mean_px2 = max_cost_px2;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		const ImageCount c = images_[i].count(samples, T_OinL, opts_.truncate_px);
+		limbs[i] = images_[i].limbsSeen(samples, T_OinL);
+		cap.unvisited += static_cast<int>(samples.samples_O.size() + limbs[i].size());
+	}
+	std::array<ImageCount, 2> counts;
+	for (size_t i = 0; i < images_.size(); ++i)
+	{
+		const auto c = images_[i].count(samples, T_OinL, limbs[i], opts_.truncate_px, &cap);
+		if (!c) return std::nullopt;
+		counts[i] = *c;
+	}
+	const ImageScore s = combined(counts);
+	if (s.cost >= max_cost_px2) return std::nullopt;
+	return s;
+}
+
+ImageScore ImageVerifier::combined(const std::array<ImageCount, 2>& counts) const
+{
+	ImageScore s;
+	for (size_t i = 0; i < counts.size(); ++i)
+	{
+		const ImageCount& c = counts[i];
 		s.per_image[i] = c.considered ? static_cast<double>(c.supported) / c.considered : 0.0;
 		s.considered += c.considered, s.supported += c.supported, s.occluded += c.occluded;
 		s.outside += c.outside, s.cost += c.cost_px2;

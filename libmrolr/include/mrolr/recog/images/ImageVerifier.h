@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -122,6 +123,23 @@ struct ImageCount
 	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
 };
 
+/** What lets a count give up early: the mean squared distance of the considered samples of every
+ * image is wanted only when below max_mean_px2. Holds the sum and the number of the samples
+ * considered so far and the number not visited yet (of every image); once even the most
+ * favourable rest (each unvisited sample considered, at distance 0) leaves the mean at or above
+ * max_mean_px2 (with a relative margin of 1e-12 for rounding), the count is exceeded. */
+struct CostCap
+{
+	double max_mean_px2 = 0;
+	double sum_px2 = 0;
+	int considered = 0;
+	int unvisited = 0;
+	bool exceeded() const
+	{
+		return sum_px2 >= max_mean_px2 * (considered + unvisited) * (1 + 1e-12);
+	}
+};
+
 /** An object recognised in the same stereo pair, which may hide parts of another: its edge
  * samples (model frame, mm), its solid (SelfOcclusion, for interpenetrates(); may be null) and
  * its pose in L. */
@@ -150,6 +168,15 @@ class EdgeImage
 	 * direction disagrees). */
 	ImageCount count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                 double truncate_px = 0) const;
+	/** count() with the limbs given (limbsSeen()): the counts, or empty as soon as @p cap (may be
+	 * null: never) is exceeded, the samples counted having been added to it. */
+	std::optional<ImageCount> count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	                                const std::vector<EdgeSample>& limbs, double truncate_px,
+	                                CostCap* cap) const;
+	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
+	 * @p T_OinL (empty without limbs or s.occ). */
+	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
+	                                  const Eigen::Isometry3d& T_OinL) const;
 
 	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
 	 * without distortion (those outside the image too; the hull of a cylinder's rims is its
@@ -175,13 +202,14 @@ class EdgeImage
 	const cv::Mat& distance() const { return dist_; }
 
  private:
-	/** Projects the samples of @p s_O (and the limbs seen from this camera when enabled) at
-	 * @p T_OinL; calls @p fn(pixel, tangent pixel, hidden, limb, depth in this camera mm) for
-	 * those in the image (the hidden ones only when @p kHiddenToo); @p outside (may be null)
-	 * counts those not hidden by @p occ outside it. */
-	template <bool kHiddenToo, class Fn>
-	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL, Fn fn,
-	                            int* outside = nullptr) const;
+	/** Projects the samples of @p s (then @p limbs) at @p T_OinL; calls @p fn(pixel, tangent
+	 * pixel, hidden, limb, depth in this camera mm) for those in the image (the hidden ones only
+	 * when @p kHiddenToo); @p outside (may be null) counts those not hidden by s.occ outside it.
+	 * After each sample, stops when @p stop() says so. */
+	template <bool kHiddenToo, class Fn, class Stop>
+	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	                            const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
+	                            int* outside) const;
 	struct Pixel
 	{
 		int x, y;
@@ -229,6 +257,11 @@ class ImageVerifier
 	                 const SelfOcclusion* occ) const;
 	/** The same on samples whose sight is known (what the Recognizer scores with). */
 	ImageScore score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL) const;
+	/** score() when its cost is below @p max_cost_px2, else empty: gives up as soon as the
+	 * samples counted prove that it is not (CostCap). What the pattern search asks of a move. */
+	std::optional<ImageScore> scoreIfCheaper(const SightedSamples& samples,
+	                                         const Eigen::Isometry3d& T_OinL,
+	                                         double max_cost_px2) const;
 
 	/** Refines @p T_OinL in the images: an options().yaw_step_deg sweep about the model's z axis
 	 * through each of @p axes_O, then the pattern search from the yaw with the most supported
@@ -254,6 +287,8 @@ class ImageVerifier
 	                                                       const Eigen::Isometry3d& start,
 	                                                       const ImageScore& start_s,
 	                                                       const Eigen::Vector3d& axis_O) const;
+	/** The ImageScore of both images' counts (score()'s acceptance rules). */
+	ImageScore combined(const std::array<ImageCount, 2>& counts) const;
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right
 };
