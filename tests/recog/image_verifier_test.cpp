@@ -366,3 +366,38 @@ TEST(ImageVerifier, AScoreAskedBelowACostIsTheScoreOrNothing)
 	EXPECT_GT(below, 100);
 	EXPECT_GT(above, 100);
 }
+
+// scoreIfMore is score() or, only when the pose has neither more supported samples nor a higher
+// score than asked, nothing; on poses moved off the box it gives up on most.
+TEST(ImageVerifier, AScoreAskedToBeatABestIsTheScoreOrNothing)
+{
+	const Pair p;
+	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
+	const ImageScore best = p.images.score(samples, boxPose());
+	int empty = 0, asked = 0;
+	for (int k = 0; k < 60; ++k)
+	{
+		const Eigen::Isometry3d T = Eigen::Translation3d(0.5 * k - 15, 0.2 * k, 0) * boxPose() *
+		                            Eigen::AngleAxisd(0.1 * k, Eigen::Vector3d::UnitZ());
+		const ImageScore full = p.images.score(samples, T);
+		for (const auto& [min_supported, max_score] :
+		     {std::pair{best.supported, best.score}, std::pair{full.supported, full.score},
+		      std::pair{full.supported + 1, full.score}, std::pair{0, 0.0}})
+		{
+			++asked;
+			const auto s = p.images.scoreIfMore(samples, T, min_supported, max_score);
+			if (!s)
+			{
+				++empty;
+				EXPECT_LT(full.supported, min_supported) << k;
+				EXPECT_LE(full.score, max_score) << k;
+				continue;
+			}
+			EXPECT_EQ(s->cost, full.cost);
+			EXPECT_EQ(s->score, full.score);
+			EXPECT_EQ(s->supported, full.supported);
+			EXPECT_EQ(s->considered, full.considered);
+		}
+	}
+	EXPECT_GT(empty, asked / 8);
+}

@@ -92,9 +92,12 @@ Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,
 		for (double yaw = yaw_step; yaw_step > 0 && yaw < 2 * M_PI - 1e-9; yaw += yaw_step)
 		{
 			const Eigen::Isometry3d T = T_OinL * aboutAxis(a_O, yaw);
-			const ImageScore s = score(samples, T);
-			if (better(s, by_count.s)) by_count = {T, s, a_O};
-			if (s.score > by_fraction.s.score) by_fraction = {T, s, a_O};
+			// only a yaw that may beat one of them is counted to the end (scoreIfMore)
+			const auto s =
+			    scoreIfMore(samples, T, by_count.s.supported, by_fraction.s.score);
+			if (!s) continue;
+			if (better(*s, by_count.s)) by_count = {T, *s, a_O};
+			if (s->score > by_fraction.s.score) by_fraction = {T, *s, a_O};
 		}
 	auto [best, best_s] = patternSearch(samples, by_count.T, by_count.s, by_count.axis_O);
 	std::vector<const Seed*> others;  // each distinct seed refined once

@@ -259,7 +259,7 @@ ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_
 std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
                                            const Eigen::Isometry3d& T_OinL,
                                            const std::vector<EdgeSample>& limbs,
-                                           double truncate_px, CostCap* cap) const
+                                           double truncate_px, ScoreCap* cap) const
 {
 	ImageCount c;
 	bool exceeded = false;
@@ -282,11 +282,13 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
 		    }
 		    ++c.considered;
 		    const bool aligned = oriented(at, tangent);
-		    c.supported += aligned && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
+		    const int supported = aligned && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
+		    c.supported += supported;
+		    if (cap) ++cap->considered, cap->supported += supported;
 		    if (truncate_px <= 0) return;
 		    const double d = aligned ? std::min(truncate_px, distanceAt(px)) : truncate_px;
 		    c.cost_px2 += d * d;
-		    if (cap) cap->sum_px2 += d * d, ++cap->considered;
+		    if (cap) cap->sum_px2 += d * d;
 	    },
 	    stop, &c.outside);
 	if (exceeded) return std::nullopt;
@@ -347,9 +349,27 @@ std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& sa
                                                         const Eigen::Isometry3d& T_OinL,
                                                         double max_cost_px2) const
 {
-	std::array<std::vector<EdgeSample>, 2> limbs;
-	CostCap cap;
+	ScoreCap cap;
 	cap.max_mean_px2 = max_cost_px2;
+	const auto s = scoreUnlessExceeded(samples, T_OinL, cap);
+	if (!s || s->cost >= max_cost_px2) return std::nullopt;
+	return s;
+}
+
+std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
+                                                     const Eigen::Isometry3d& T_OinL,
+                                                     int min_supported, double max_score) const
+{
+	ScoreCap cap;
+	cap.min_supported = min_supported, cap.max_fraction = max_score;
+	return scoreUnlessExceeded(samples, T_OinL, cap);
+}
+
+std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSamples& samples,
+                                                             const Eigen::Isometry3d& T_OinL,
+                                                             ScoreCap cap) const
+{
+	std::array<std::vector<EdgeSample>, 2> limbs;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
 		limbs[i] = images_[i].limbsSeen(samples, T_OinL);
@@ -362,9 +382,7 @@ std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& sa
 		if (!c) return std::nullopt;
 		counts[i] = *c;
 	}
-	const ImageScore s = combined(counts);
-	if (s.cost >= max_cost_px2) return std::nullopt;
-	return s;
+	return combined(counts);
 }
 
 ImageScore ImageVerifier::combined(const std::array<ImageCount, 2>& counts) const

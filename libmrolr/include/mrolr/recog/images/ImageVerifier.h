@@ -123,20 +123,25 @@ struct ImageCount
 	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
 };
 
-/** What lets a count give up early: the mean squared distance of the considered samples of every
- * image is wanted only when below max_mean_px2. Holds the sum and the number of the samples
- * considered so far and the number not visited yet (of every image); once even the most
- * favourable rest (each unvisited sample considered, at distance 0) leaves the mean at or above
- * max_mean_px2 (with a relative margin of 1e-12 for rounding), the count is exceeded. */
-struct CostCap
+/** What lets a count give up early: the score of a pose is wanted only if it can beat a best one
+ * (the mean squared distance of the considered samples below max_mean_px2, or more than
+ * min_supported samples supported, or a supported fraction above max_fraction; a criterion left
+ * at its default never asks for the score). Holds the sums of the samples visited so far (of
+ * every image) and the number not visited yet; exceeded() once even the most favourable rest
+ * (each unvisited sample considered, supported, at distance 0) can meet none of the criteria, with
+ * a relative margin of 1e-12 against rounding. */
+struct ScoreCap
 {
 	double max_mean_px2 = 0;
+	int min_supported = INT_MAX;
+	double max_fraction = 2;
 	double sum_px2 = 0;
-	int considered = 0;
-	int unvisited = 0;
+	int considered = 0, supported = 0, unvisited = 0;
 	bool exceeded() const
 	{
-		return sum_px2 >= max_mean_px2 * (considered + unvisited) * (1 + 1e-12);
+		const double reach = considered + unvisited, best_supported = supported + unvisited;
+		return sum_px2 >= max_mean_px2 * reach * (1 + 1e-12) && best_supported < min_supported &&
+		       best_supported <= max_fraction * reach * (1 - 1e-12);
 	}
 };
 
@@ -172,7 +177,7 @@ class EdgeImage
 	 * null: never) is exceeded, the samples counted having been added to it. */
 	std::optional<ImageCount> count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                                const std::vector<EdgeSample>& limbs, double truncate_px,
-	                                CostCap* cap) const;
+	                                ScoreCap* cap) const;
 	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
@@ -258,10 +263,16 @@ class ImageVerifier
 	/** The same on samples whose sight is known (what the Recognizer scores with). */
 	ImageScore score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL) const;
 	/** score() when its cost is below @p max_cost_px2, else empty: gives up as soon as the
-	 * samples counted prove that it is not (CostCap). What the pattern search asks of a move. */
+	 * samples counted prove that it is not (ScoreCap). What the pattern search asks of a move. */
 	std::optional<ImageScore> scoreIfCheaper(const SightedSamples& samples,
 	                                         const Eigen::Isometry3d& T_OinL,
 	                                         double max_cost_px2) const;
+	/** score(), or empty when the samples counted prove it has neither more than
+	 * @p min_supported supported samples nor a score above @p max_score (ScoreCap). What the yaw
+	 * sweep asks of a yaw. */
+	std::optional<ImageScore> scoreIfMore(const SightedSamples& samples,
+	                                      const Eigen::Isometry3d& T_OinL, int min_supported,
+	                                      double max_score) const;
 
 	/** Refines @p T_OinL in the images: an options().yaw_step_deg sweep about the model's z axis
 	 * through each of @p axes_O, then the pattern search from the yaw with the most supported
@@ -289,6 +300,10 @@ class ImageVerifier
 	                                                       const Eigen::Vector3d& axis_O) const;
 	/** The ImageScore of both images' counts (score()'s acceptance rules). */
 	ImageScore combined(const std::array<ImageCount, 2>& counts) const;
+	/** score(), or empty as soon as @p cap is exceeded. */
+	std::optional<ImageScore> scoreUnlessExceeded(const SightedSamples& samples,
+	                                              const Eigen::Isometry3d& T_OinL,
+	                                              ScoreCap cap) const;
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right
 };
