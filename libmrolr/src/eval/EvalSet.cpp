@@ -58,7 +58,7 @@ void searchBehindFound(const Searchers& sr, const EvalScene& s, const recog::Ima
 	auto search = [&](size_t i, const recog::ImageVerifier& behind)
 	{
 		second[i] = evaluateCase(sr.recs[i], s, sr.symmetries[i], opts,
-		                         {std::nullopt, std::cref(behind), s.plane_L});
+		                         {std::nullopt, std::cref(behind), s.plane_L, true});
 		return second[i].result;
 	};
 	const auto after = recog::searchBehindFound(ptrs, found, images,

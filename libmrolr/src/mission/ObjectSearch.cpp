@@ -76,6 +76,7 @@ recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
 		if (i != 0) return recog::RecognitionResult{};  // only the target is sought behind them
 		recog::SceneContext behind_them = context;
 		behind_them.images = std::cref(behind);
+		behind_them.repeat = true;  // the target's first search was of this scene
 		return recognizer_.recognize(view.scene, behind_them);
 	};
 	return recog::searchBehindFound(recs, first, *view.images,

@@ -211,19 +211,20 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
 {
 	const auto up = context.up();
 	return atLevel(scene, level, bounds, up ? &*up : nullptr,
-	               context.images ? &context.images->get() : nullptr);
+	               context.images ? &context.images->get() : nullptr, context.repeat);
 }
 
 RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t level,
                                       FocusBounds& bounds, const Eigen::Vector3d* up_S,
-                                      const ImageVerifier* images) const
+                                      const ImageVerifier* images, bool repeat) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
 	best.model = table_.name();
 	if (images) best.image_score = 0.0;
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-	auto [clusters, verified] = levelHypotheses(scene, os, level, bounds, up_S, images, best.times);
+	auto [clusters, verified] =
+	    levelHypotheses(scene, os, level, bounds, up_S, images, repeat, best.times);
 	if (images) judgeInImages(verified, *images, os.features, p, up_S, best.times);
 	double best_rank = 0;
 	for (const auto& h : verified)
@@ -302,7 +303,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = atLevel(scene, l, bounds, up_S, images);
+		RecognitionResult r = atLevel(scene, l, bounds, up_S, images, context.repeat);
 		times += r.times;
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;

@@ -1,7 +1,8 @@
 // Recognizer's memory of the last scene it searched: the clusters and 3D-verified poses of each
 // level, which depend on the scene, its up direction and whether images judge them, not on the
 // images themselves. A second search of the same scene behind the objects found in it
-// (MutualOcclusion.h) takes them from here instead of matching the cliques again.
+// (MutualOcclusion.h; SceneContext::repeat) takes them from here instead of matching the cliques
+// again.
 #include <mrolr/recog/Recognizer.h>
 
 #include <algorithm>
@@ -32,7 +33,8 @@ struct Recognizer::LevelCache
 	bool images = false;
 	std::map<size_t, LevelHypotheses> by_level;
 
-	/** True when the cache holds @p scene seen as given; otherwise it is emptied for it. */
+	/** True when the cache holds @p scene seen as given; otherwise it is emptied for it (and
+	 * false). */
 	bool holds(const std::vector<Feature>& s, const Eigen::Vector3d* up, bool with_images)
 	{
 		const bool same_up = up ? up_S && *up_S == *up : !up_S;
@@ -53,8 +55,9 @@ Recognizer::LevelHypotheses Recognizer::levelHypotheses(const std::vector<Featur
                                                         FocusBounds& bounds,
                                                         const Eigen::Vector3d* up_S,
                                                         const ImageVerifier* images,
-                                                        RecognitionTimes& times) const
+                                                        bool repeat, RecognitionTimes& times) const
 {
+	if (repeat)
 	{
 		std::lock_guard<std::mutex> lock(levels_cache_->mutex);
 		if (levels_cache_->holds(scene, up_S, images != nullptr))
@@ -65,8 +68,8 @@ Recognizer::LevelHypotheses Recognizer::levelHypotheses(const std::vector<Featur
 	}
 	LevelHypotheses h = computeLevelHypotheses(scene, os, level, bounds, up_S, images, times);
 	std::lock_guard<std::mutex> lock(levels_cache_->mutex);
-	if (levels_cache_->holds(scene, up_S, images != nullptr))
-		levels_cache_->by_level.emplace(level, h);
+	levels_cache_->holds(scene, up_S, images != nullptr);  // emptied unless it holds this scene
+	levels_cache_->by_level[level] = h;
 	return h;
 }
 

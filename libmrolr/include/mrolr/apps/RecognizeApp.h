@@ -90,9 +90,11 @@ class RecognizeApp
 	void loadScenes();
 	/** options from [recognition] and [plane_hypotheses] of config_path (and plane_hypotheses). */
 	void loadRecognitionOptions();
-	/** The single stereo scene searched with verification in @p images. */
+	/** The single stereo scene searched with verification in @p images; @p repeat: @p rec
+	 * searched it last (recog::SceneContext::repeat). */
 	recog::RecognitionResult recognizeInImages(const recog::Recognizer& rec,
-	                                           const recog::ImageVerifier& images) const;
+	                                           const recog::ImageVerifier& images,
+	                                           bool repeat = false) const;
 	int runEvaluation(std::ostream& out);
 	/** Mutual occlusion for mrolr-recognize --left/--right: each model of @p recs (same order as
 	 * results) not found is searched again with the found ones as occluders. */

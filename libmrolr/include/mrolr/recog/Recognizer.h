@@ -111,12 +111,17 @@ struct RecognitionResult
  *   still generate the hypotheses.
  * - plane: the support plane the objects stand on (scene frame). With images and
  *   RecognitionOptions::plane.enable, single scene features on it make further hypotheses
- *   (Recognizer::recognizeOnPlane) after the levels, the better-ranked answer kept. */
+ *   (Recognizer::recognizeOnPlane) after the levels, the better-ranked answer kept.
+ * - repeat: the scene is the one this Recognizer searched last, with the same up direction, now
+ *   with other images (the second search of mutual occlusion, MutualOcclusion.h): each level's
+ *   clusters and 3D-verified poses are taken from that search instead of being computed again.
+ *   The images change neither. If the scene or the up direction differs, nothing is reused. */
 struct SceneContext
 {
 	std::optional<Eigen::Vector3d> up_S;
 	std::optional<std::reference_wrapper<const ImageVerifier>> images;
 	std::optional<SupportPlane> plane;
+	bool repeat = false;
 
 	/** The up direction in force: up_S, else the plane's normal, else none. */
 	std::optional<Eigen::Vector3d> up() const;
@@ -222,7 +227,8 @@ class Recognizer
 	// Internally an absent up direction or image pair is a null pointer.
 	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;
 	RecognitionResult atLevel(const std::vector<Feature>& scene, size_t level, FocusBounds& bounds,
-	                          const Eigen::Vector3d* up_S, const ImageVerifier* images) const;
+	                          const Eigen::Vector3d* up_S, const ImageVerifier* images,
+	                          bool repeat) const;
 	/** Marks @p best ambiguous when another of @p poses is a near-equal rival (not a symmetry). */
 	void markAmbiguity(RecognitionResult& best, const std::vector<VerifiedPose>& poses) const;
 	/** True when the model's edges under @p a and @p b coincide within ambiguity_symmetry_mm. */
@@ -272,13 +278,14 @@ class Recognizer
 		std::vector<PoseCluster> clusters;
 		std::vector<VerifiedPose> verified;
 	};
-	/** The clusters and verified poses of @p level on @p scene, computed or, when the last
-	 * scene searched had the same features, up direction and image use, as computed then. The
-	 * images change neither (only whether the 3D pre-filter applies): a second search of the
-	 * same scene with other occluders (MutualOcclusion.h) repeats none of it. */
+	/** The clusters and verified poses of @p level on @p scene, computed (and kept) or, with
+	 * @p repeat (SceneContext::repeat) and when the last scene searched had the same features,
+	 * up direction and image use, as computed then. The images change neither (only whether the
+	 * 3D pre-filter applies). */
 	LevelHypotheses levelHypotheses(const std::vector<Feature>& scene, const OrientedScene& os,
 	                                size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
-	                                const ImageVerifier* images, RecognitionTimes& times) const;
+	                                const ImageVerifier* images, bool repeat,
+	                                RecognitionTimes& times) const;
 	LevelHypotheses computeLevelHypotheses(const std::vector<Feature>& scene,
 	                                       const OrientedScene& os, size_t level,
 	                                       FocusBounds& bounds, const Eigen::Vector3d* up_S,

@@ -111,10 +111,12 @@ int RecognizeApp::run(std::ostream& out)
 }
 
 recog::RecognitionResult RecognizeApp::recognizeInImages(const recog::Recognizer& rec,
-                                                         const recog::ImageVerifier& images) const
+                                                         const recog::ImageVerifier& images,
+                                                         bool repeat) const
 {
 	recog::SceneContext context;  // the plane's normal is the up direction
 	context.images = std::cref(images);
+	context.repeat = repeat;
 	context.plane = support_plane;
 	recog::RecognitionResult r = rec.recognize(scenes.front(), context);
 	if (r.found) r.scene_index = 0;
@@ -128,7 +130,8 @@ void RecognizeApp::searchBehindFound(const std::vector<recog::Recognizer>& recs,
 	for (const auto& r : recs) ptrs.push_back(&r);
 	results = recog::searchBehindFound(
 	    ptrs, results, images, image_options.sample_spacing_mm,
-	    [&](size_t i, const recog::ImageVerifier& behind) { return recognizeInImages(recs[i], behind); });
+	    [&](size_t i, const recog::ImageVerifier& behind)
+	    { return recognizeInImages(recs[i], behind, true); });
 }
 
 void RecognizeApp::writeJudgements(const std::vector<recog::Recognizer>& recs,
