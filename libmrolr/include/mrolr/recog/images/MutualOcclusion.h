@@ -38,8 +38,9 @@ using SearchBehind = std::function<RecognitionResult(size_t i, const ImageVerifi
  * searched again by @p search with the others found in @p first as occluders
  * (ImageVerifier::withOccluders of @p images). A find that interpenetrates none of them
  * replaces its result, its `occluders` the number it was found behind; either way the second
- * search's time is added to the model's `ms` and `times`. Edge samples every @p spacing_mm. Returns the
- * results after the second search, same order as @p recs. */
+ * search's time is added to the model's `ms` and `times`. @p search should say
+ * SceneContext::repeat: the scene is the one each Recognizer searched first. Edge samples every
+ * @p spacing_mm. Returns the results after the second search, same order as @p recs. */
 std::vector<RecognitionResult> searchBehindFound(const std::vector<const Recognizer*>& recs,
                                                  const std::vector<RecognitionResult>& first,
                                                  const ImageVerifier& images, double spacing_mm,
