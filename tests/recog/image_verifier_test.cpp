@@ -2,6 +2,7 @@
 // scores high at its pose and low when shifted, turned or replaced by another object; the
 // refinement moves a perturbed pose towards the drawn one; bad input is reported.
 #include "recog_test_util.h"
+#include "drawn_box_pair.h"
 #include "synthetic_rig.h"
 
 #include <mrolr/recog/images/ImageVerifier.h>
@@ -22,74 +23,12 @@ using namespace mrolr::sim;
 
 namespace
 {
+using test::boxPose;
 using test::calibration;
+using test::draw;
+using test::fillPolygon;
 using test::kBaseline_mm;
-using test::pixel;
-
-void fillPolygon(cv::Mat& img, const std::vector<Eigen::Vector3d>& p_L, double cam_x_cv_mm,
-                 int grey)
-{
-	std::vector<cv::Point> px;
-	for (const auto& p : p_L)
-	{
-		const cv::Point2d q = pixel(p, cam_x_cv_mm) * 16.0;  // 4 bits of sub-pixel precision
-		px.emplace_back(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
-	}
-	cv::fillConvexPoly(img, px, cv::Scalar(grey), cv::LINE_AA, 4);
-}
-
-/** The stapler box of makeStaplerBox() rendered by one camera: its visible faces filled in
- * different greys (step edges, as a renderer gives), the slot and the round button on top. */
-cv::Mat draw(const Eigen::Isometry3d& T_OinL, double cam_x_cv_mm)
-{
-	cv::Mat img(480, 640, CV_8U, cv::Scalar(20));
-	const auto corner = [&](int i)
-	{ return T_OinL * Eigen::Vector3d(i & 1 ? 80 : -80, i & 2 ? 22.5 : -22.5, i & 4 ? 55 : 0); };
-	const int faces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
-	                         {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
-	const Eigen::Vector3d camera_L(cam_x_cv_mm, 0, 0);  // L's x is the OpenCV x negated
-	bool top = false;
-	for (int f = 0; f < 6; ++f)
-	{
-		std::vector<Eigen::Vector3d> q;
-		Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-		for (int i : faces[f]) q.push_back(corner(i)), centre += corner(i) / 4;
-		const Eigen::Vector3d n =
-		    T_OinL.linear() * (0.5 * (-Eigen::Vector3d::Unit(f / 2)) * (f % 2 ? -2.0 : 2.0));
-		if (n.dot(camera_L - centre) <= 0) continue;
-		fillPolygon(img, q, cam_x_cv_mm, 70 + 30 * f);
-		top = top || f == 5;
-	}
-	if (!top) return img;
-	std::vector<Eigen::Vector3d> slot, button;
-	for (const auto& p :
-	     std::vector<Eigen::Vector3d>{{-50, -5, 55}, {30, -5, 55}, {30, 5, 55}, {-50, 5, 55}})
-		slot.push_back(T_OinL * p);
-	for (int i = 0; i < 72; ++i)
-		button.push_back(T_OinL * Eigen::Vector3d(55 + 10 * std::cos(i * M_PI / 36),
-		                                          10 * std::sin(i * M_PI / 36), 55));
-	fillPolygon(img, slot, cam_x_cv_mm, 30);
-	fillPolygon(img, button, cam_x_cv_mm, 240);
-	return img;
-}
-
-Eigen::Isometry3d boxPose()
-{
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = (Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitX()) *
-	              Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()))
-	                 .toRotationMatrix();
-	T.translation() = Eigen::Vector3d(10, -30, 650);
-	return T;
-}
-
-struct Pair
-{
-	std::vector<Feature> box = featuresOf(makeStaplerBox());
-	SelfOcclusion occ{box};
-	ImageVerifier images{draw(boxPose(), 0), draw(boxPose(), -kBaseline_mm), calibration(),
-	                     ImageVerificationOptions()};
-};
+using test::Pair;
 }  // namespace
 
 TEST(ImageVerifier, TruePoseScoresHighInBothImages)
@@ -329,75 +268,4 @@ TEST(ImageVerifier, APoseMostlyOutsideTheImagesScoresZero)
 	EXPECT_GT(ImageVerifier(l, r, calibration(), lenient).score(p.box, aside, &p.occ).score, 0.8);
 	// at the drawn pose in view nothing is outside
 	EXPECT_EQ(p.images.score(p.box, boxPose(), &p.occ).outside, 0);
-}
-
-// scoreIfCheaper is score() when the cost is below the cap and empty when it is not, whatever the
-// pose (on the box, moved off it, mostly out of view) and the cap (between the costs seen).
-TEST(ImageVerifier, AScoreAskedBelowACostIsTheScoreOrNothing)
-{
-	const Pair p;
-	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
-	std::vector<Eigen::Isometry3d> poses;
-	for (int k = 0; k < 40; ++k)
-		poses.push_back(Eigen::Translation3d(0.7 * k - 8, 0.3 * k, 0) * boxPose() *
-		                Eigen::AngleAxisd(0.02 * k, Eigen::Vector3d::UnitZ()));
-	poses.push_back(Eigen::Translation3d(400, 0, 0) * boxPose());  // out of view: cost 1e300
-	std::vector<double> caps = {0.0, 0.5, 1e300};
-	for (const auto& T : poses) caps.push_back(p.images.score(samples, T).cost);
-	int below = 0, above = 0;
-	for (const auto& T : poses)
-	{
-		const ImageScore full = p.images.score(samples, T);
-		for (const double cap : caps)
-		{
-			const auto capped = p.images.scoreIfCheaper(samples, T, cap);
-			ASSERT_EQ(capped.has_value(), full.cost < cap) << "cap " << cap << " cost " << full.cost;
-			if (!capped) ++above;
-			if (!capped) continue;
-			++below;
-			EXPECT_EQ(capped->cost, full.cost);
-			EXPECT_EQ(capped->score, full.score);
-			EXPECT_EQ(capped->supported, full.supported);
-			EXPECT_EQ(capped->considered, full.considered);
-			EXPECT_EQ(capped->outside, full.outside);
-			EXPECT_EQ(capped->per_image, full.per_image);
-		}
-	}
-	EXPECT_GT(below, 100);
-	EXPECT_GT(above, 100);
-}
-
-// scoreIfMore is score() or, only when the pose has neither more supported samples nor a higher
-// score than asked, nothing; on poses moved off the box it gives up on most.
-TEST(ImageVerifier, AScoreAskedToBeatABestIsTheScoreOrNothing)
-{
-	const Pair p;
-	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
-	const ImageScore best = p.images.score(samples, boxPose());
-	int empty = 0, asked = 0;
-	for (int k = 0; k < 60; ++k)
-	{
-		const Eigen::Isometry3d T = Eigen::Translation3d(0.5 * k - 15, 0.2 * k, 0) * boxPose() *
-		                            Eigen::AngleAxisd(0.1 * k, Eigen::Vector3d::UnitZ());
-		const ImageScore full = p.images.score(samples, T);
-		for (const auto& [min_supported, max_score] :
-		     {std::pair{best.supported, best.score}, std::pair{full.supported, full.score},
-		      std::pair{full.supported + 1, full.score}, std::pair{0, 0.0}})
-		{
-			++asked;
-			const auto s = p.images.scoreIfMore(samples, T, min_supported, max_score);
-			if (!s)
-			{
-				++empty;
-				EXPECT_LT(full.supported, min_supported) << k;
-				EXPECT_LE(full.score, max_score) << k;
-				continue;
-			}
-			EXPECT_EQ(s->cost, full.cost);
-			EXPECT_EQ(s->score, full.score);
-			EXPECT_EQ(s->supported, full.supported);
-			EXPECT_EQ(s->considered, full.considered);
-		}
-	}
-	EXPECT_GT(empty, asked / 8);
 }

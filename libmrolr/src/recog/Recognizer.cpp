@@ -108,25 +108,6 @@ double minVisibleShare(const std::vector<Feature>& fs, const SelfOcclusion& occ,
 
 }  // namespace
 
-RecognitionTimes& RecognitionTimes::operator+=(const RecognitionTimes& o)
-{
-	cliques_ms += o.cliques_ms, verify_3d_ms += o.verify_3d_ms;
-	image_score_ms += o.image_score_ms, image_refine_ms += o.image_refine_ms;
-	plane_ms += o.plane_ms;
-	return *this;
-}
-
-RecognitionTimes RecognitionTimes::scaled(double f) const
-{
-	return {f * cliques_ms, f * verify_3d_ms, f * image_score_ms, f * image_refine_ms,
-	        f * plane_ms};
-}
-
-double RecognitionTimes::total_ms() const
-{
-	return cliques_ms + verify_3d_ms + image_score_ms + image_refine_ms + plane_ms;
-}
-
 double cliqueConfidence(double score, int level, size_t levels)
 {
 	const double f = levels > 1 ? static_cast<double>(level - 1) / (levels - 1) : 0.0;

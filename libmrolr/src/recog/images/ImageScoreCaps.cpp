@@ -1,0 +1,48 @@
+// Scores that give up early (ScoreCap): the refinement's pattern search and yaw sweep want a
+// pose's score only when the pose can beat the best one; the count stops as soon as the samples
+// counted prove that it cannot, and the answer is otherwise score() itself.
+#include <mrolr/recog/images/ImageVerifier.h>
+
+namespace mrolr::recog
+{
+std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& samples,
+                                                        const Eigen::Isometry3d& T_OinL,
+                                                        double max_cost_px2) const
+{
+	ScoreCap cap;
+	cap.max_mean_px2 = max_cost_px2;
+	const auto s = scoreUnlessExceeded(samples, T_OinL, cap);
+	if (!s || s->cost >= max_cost_px2) return std::nullopt;
+	return s;
+}
+
+std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
+                                                     const Eigen::Isometry3d& T_OinL,
+                                                     int min_supported, double max_score) const
+{
+	ScoreCap cap;
+	cap.min_supported = min_supported, cap.max_fraction = max_score;
+	return scoreUnlessExceeded(samples, T_OinL, cap);
+}
+
+std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSamples& samples,
+                                                             const Eigen::Isometry3d& T_OinL,
+                                                             ScoreCap cap) const
+{
+	std::array<std::vector<EdgeSample>, 2> limbs;
+	for (size_t i = 0; i < images_.size(); ++i)
+	{
+		limbs[i] = images_[i].limbsSeen(samples, T_OinL);
+		cap.unvisited += static_cast<int>(samples.samples_O.size() + limbs[i].size());
+	}
+	std::array<ImageCount, 2> counts;
+	for (size_t i = 0; i < images_.size(); ++i)
+	{
+		const auto c = images_[i].count(samples, T_OinL, limbs[i], opts_.truncate_px, &cap);
+		if (!c) return std::nullopt;
+		counts[i] = *c;
+	}
+	return combined(counts);
+}
+
+}  // namespace mrolr::recog
