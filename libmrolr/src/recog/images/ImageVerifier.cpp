@@ -1,8 +1,11 @@
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/images/ImageVerifier.h>
 
+#include "EdgeImageVisit.h"
+
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,25 +40,25 @@ Eigen::Isometry3d cameraInL(const cv::Matx33d& R_CfromLcv, const cv::Vec3d& t_Lc
 	return T_LcvInL * T_LcvInC.inverse();
 }
 
-bool inView(const Eigen::Vector3d& p_C)
+/** The edge through the Canny pixel (@p x, @p y) to a tenth of a pixel: the peak of the gradient
+ * magnitude along its direction, a parabola through the pixel and its two neighbours that way
+ * (Devernay 1995). A step between two pixels has its edge half-way; the pixel Canny keeps is on
+ * one side of it, always the same side for one direction. */
+cv::Point2f subpixelEdge(const cv::Mat& gx, const cv::Mat& gy, int x, int y)
 {
-	// points far outside the view are dropped: the distortion polynomial folds them back in
-	return p_C.z() > 1 && std::abs(p_C.x()) < p_C.z() && std::abs(p_C.y()) < p_C.z();
-}
-
-/** cv::projectPoints of one point already in the camera frame (no rotation, no translation) with
- * the 5 coefficients k1 k2 p1 p2 k3, written out in OpenCV's order of operations (it gives the
- * same pixels, and takes a fifth of the time of the call per point). */
-cv::Point2d projected(const cv::Matx33d& K, const cv::Vec<double, 5>& D, const Eigen::Vector3d& p)
-{
-	const double iz = p.z() != 0 ? 1. / p.z() : 1;
-	const double x = p.x() * iz, y = p.y() * iz;
-	const double r2 = x * x + y * y, r4 = r2 * r2, r6 = r4 * r2;
-	const double a1 = 2 * x * y, a2 = r2 + 2 * x * x, a3 = r2 + 2 * y * y;
-	const double cdist = 1 + D[0] * r2 + D[1] * r4 + D[4] * r6;
-	const double xd = x * cdist + D[2] * a1 + D[3] * a2;
-	const double yd = y * cdist + D[2] * a3 + D[3] * a1;
-	return {xd * K(0, 0) + K(0, 2), yd * K(1, 1) + K(1, 2)};
+	const auto magnitude = [&](int u, int v)
+	{ return std::hypot(double(gx.at<short>(v, u)), double(gy.at<short>(v, u))); };
+	const double m0 = magnitude(x, y);
+	const cv::Point2f at(static_cast<float>(x), static_cast<float>(y));
+	if (m0 <= 0) return at;
+	const int sx = static_cast<int>(std::lround(gx.at<short>(y, x) / m0));
+	const int sy = static_cast<int>(std::lround(gy.at<short>(y, x) / m0));
+	if (x - sx < 0 || y - sy < 0 || x + sx >= gx.cols || y + sy >= gx.rows) return at;
+	const double before = magnitude(x - sx, y - sy), after = magnitude(x + sx, y + sy);
+	const double curvature = before - 2 * m0 + after;
+	if (curvature >= 0) return at;  // not a peak
+	const double t = std::clamp(0.5 * (before - after) / curvature, -0.5, 0.5);
+	return at + cv::Point2f(static_cast<float>(t * sx), static_cast<float>(t * sy));
 }
 }  // namespace
 
@@ -135,7 +138,9 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 		{
 			if (!edges_.at<uchar>(y, x)) continue;
 			const size_t label = static_cast<size_t>(labels_.at<int>(y, x));
-			if (label >= normal_.size()) normal_.resize(label + 1, cv::Point2f(0, 0));
+			if (label >= normal_.size())
+				normal_.resize(label + 1, cv::Point2f(0, 0)), edge_px_.resize(label + 1);
+			edge_px_[label] = subpixelEdge(gx, gy, x, y);
 			const cv::Point2f g(gx.at<short>(y, x), gy.at<short>(y, x));
 			const double n = std::hypot(g.x, g.y);
 			normal_[label] = n > 0 ? g / static_cast<float>(n) : cv::Point2f(0, 0);
@@ -204,52 +209,6 @@ std::vector<EdgeSample> EdgeImage::limbsSeen(const SightedSamples& ss,
 	return limbs;
 }
 
-template <bool kHiddenToo, class Fn, class Stop>
-void EdgeImage::forEachInViewWithDepth(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
-                                       const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
-                                       int* outside) const
-{
-	const SelfOcclusion* occ = ss.occ;
-	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
-	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
-	const SelfOcclusion::View view = occ ? occ->viewFrom(c_O) : SelfOcclusion::View();
-	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
-	const auto visit = [&](const EdgeSample& s, const SelfOcclusion::PointSight* sight)
-	{
-		const Eigen::Vector3d p = T_OinC * s.p_O, q = p + T_OinC.linear() * s.t_O;
-		const bool in_view = inView(p) && inView(q);
-		if (!in_view && !outside) return;
-		// a limb is on the outline by construction: only the model's parts off its bodies (a
-		// handle) can hide it (SelfOcclusion::hiddenLimb)
-		const bool limb = sight == nullptr;
-		const bool hidden = occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
-		                            : revolution_visibility_ ? occ->hiddenOnBodies(view, *sight, s.p_O)
-		                                                     : occ->hidden(view, *sight, s.p_O));
-		if (!in_view)
-		{
-			*outside += hidden ? 0 : 1;
-			return;
-		}
-		if (hidden && !kHiddenToo) return;
-		const cv::Point2d px = projected(K_, D_, p);
-		if (inside.contains(px))
-			fn(px, projected(K_, D_, q) - px, hidden, limb, p.z());
-		else if (outside && !hidden)
-			++*outside;
-	};
-	static const SelfOcclusion::PointSight kNoSight;
-	for (size_t k = 0; k < ss.samples_O.size(); ++k)
-	{
-		visit(ss.samples_O[k], occ ? &ss.sights[k] : &kNoSight);
-		if (stop()) return;
-	}
-	for (const auto& s : limbs)
-	{
-		visit(s, nullptr);
-		if (stop()) return;
-	}
-}
-
 ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
                             double truncate_px) const
 {
@@ -272,10 +231,11 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
 	};
 	forEachInViewWithDepth<false>(
 	    s, T_OinL, limbs,
-	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool, double depth_mm)
+	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool,
+	        const Eigen::Vector3d& p_C)
 	    {
 		    const Pixel at = pixelOf(px);
-		    if (occludedAt(at, depth_mm))
+		    if (occludedAt(at, p_C.z()))
 		    {
 			    ++c.occluded;
 			    return;
@@ -303,9 +263,9 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
 	const SightedSamples sighted(s_O, occ);
 	forEachInViewWithDepth<true>(sighted, T_OinL, limbsSeen(sighted, T_OinL),
 	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
-	                           bool limb, double depth_mm)
+	                           bool limb, const Eigen::Vector3d& p_C)
 	                       {
-		                       hidden = hidden || occludedAt(pixelOf(px), depth_mm);
+		                       hidden = hidden || occludedAt(pixelOf(px), p_C.z());
 		                       out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
 	                       },
 	                       [] { return false; }, nullptr);
