@@ -1,6 +1,6 @@
 // Refinement of a pose hypothesis in the stereo images (ImageVerifier::refine): a sweep of
-// rotations about the model's up axis, then a pattern search on the truncated oriented chamfer
-// distance. Both move the pose only where the images say it fits better.
+// rotations about the model's up axis, then Levenberg–Marquardt on the samples' distances to the
+// edge lines (ImageEdgeLines.cpp). Both move the pose only where the images say it fits better.
 #include <mrolr/recog/images/ImageVerifier.h>
 
 #include <cmath>
@@ -9,22 +9,10 @@ namespace mrolr::recog
 {
 namespace
 {
-constexpr int kMaxPatternEvaluations = 150;
-constexpr double kStartStep_mm = 2, kStartStep_deg = 1, kLastStep_mm = 0.1;
-
 Eigen::Isometry3d aboutAxis(const Eigen::Vector3d& a_O, double yaw_rad)
 {
 	return Eigen::Translation3d(a_O) * Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()) *
 	       Eigen::Translation3d(-a_O);
-}
-
-/** @p T moved along parameter @p k: 0–2 a translation in L (mm), 3–5 a rotation (rad) about L's
- * axes through @p c_L. */
-Eigen::Isometry3d moved(const Eigen::Isometry3d& T, const Eigen::Vector3d& c_L, int k, double step)
-{
-	if (k < 3) return Eigen::Translation3d(step * Eigen::Vector3d::Unit(k)) * T;
-	return Eigen::Translation3d(c_L) * Eigen::AngleAxisd(step, Eigen::Vector3d::Unit(k - 3)) *
-	       Eigen::Translation3d(-c_L) * T;
 }
 
 /** The yaw sweep prefers more supported samples, not a higher fraction: turned so that a cup's
@@ -35,35 +23,6 @@ bool better(const ImageScore& a, const ImageScore& b)
 	return a.supported > b.supported || (a.supported == b.supported && a.cost < b.cost);
 }
 }  // namespace
-
-/** The pattern search from @p start (its score @p start_s): steps of kStartStep along the 6
- * parameters (rotations about @p axis_O's image), halved when none lowers the cost. */
-std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::patternSearch(
-    const SightedSamples& samples, const Eigen::Isometry3d& start, const ImageScore& start_s,
-    const Eigen::Vector3d& axis_O) const
-{
-	Eigen::Isometry3d best = start;
-	ImageScore best_s = start_s;
-	double step_mm = kStartStep_mm, step_rad = kStartStep_deg * M_PI / 180;
-	for (int evals = 0; step_mm >= kLastStep_mm && evals < kMaxPatternEvaluations;)
-	{
-		bool improved = false;
-		const Eigen::Vector3d c_L = best * axis_O;
-		for (int k = 0; k < 6 && !improved; ++k)
-			for (const double sign : {1.0, -1.0})
-			{
-				const Eigen::Isometry3d T =
-				    moved(best, c_L, k, sign * (k < 3 ? step_mm : step_rad));
-				const auto s = scoreIfCheaper(samples, T, best_s.cost);
-				++evals;
-				if (!s) continue;
-				best = T, best_s = *s, improved = true;
-				break;
-			}
-		if (!improved) step_mm /= 2, step_rad /= 2;
-	}
-	return {best, best_s};
-}
 
 Eigen::Isometry3d ImageVerifier::refine(const std::vector<EdgeSample>& samples_O,
                                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
@@ -99,14 +58,14 @@ Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,
 			if (better(*s, by_count.s)) by_count = {T, *s, a_O};
 			if (s->score > by_fraction.s.score) by_fraction = {T, *s, a_O};
 		}
-	auto [best, best_s] = patternSearch(samples, by_count.T, by_count.s, by_count.axis_O);
+	auto [best, best_s] = edgeLineSearch(samples, by_count.T, by_count.s, by_count.axis_O);
 	std::vector<const Seed*> others;  // each distinct seed refined once
 	if (!start.T.isApprox(by_count.T)) others.push_back(&start);
 	if (!by_fraction.T.isApprox(by_count.T) && !by_fraction.T.isApprox(start.T))
 		others.push_back(&by_fraction);
 	for (const Seed* o : others)
 	{
-		const auto [T, s] = patternSearch(samples, o->T, o->s, o->axis_O);
+		const auto [T, s] = edgeLineSearch(samples, o->T, o->s, o->axis_O);
 		if (better(s, best_s)) best = T, best_s = s;
 	}
 	return best_s.supported >= by_count.s.supported ? best : by_count.T;

@@ -1,4 +1,4 @@
-// Scores that give up early (ScoreCap): the refinement's pattern search and yaw sweep want a
+// Scores that give up early (ScoreCap): the refinement's local search and yaw sweep want a
 // pose's score only when the pose can beat the best one; the count stops as soon as the samples
 // counted prove that it cannot, and the answer is otherwise score() itself.
 #include <mrolr/recog/images/ImageVerifier.h>
