@@ -14,7 +14,8 @@ namespace mrolr::recog
 {
 namespace
 {
-/** Steps tried at most (kept or refused); the searches of the rendered sets end after 5–8. */
+/** Steps tried at most, kept or refused (a refused one costs little: its score gives up early).
+ * On seed 1's rendered set a search tries 12.9 steps and keeps 4.3 (mean); 5 % stop here. */
 constexpr int kMaxEdgeLineSteps = 20;
 /** Marquardt's damping (a multiple of H's diagonal): start, bounds, and its factors after a kept
  * and after a refused step. */

@@ -57,7 +57,7 @@ struct PlaneHypothesisOptions
 	 * min_score is needed in any case. */
 	double min_image_score = 0.65;
 	/** After refinement in the images the model's base must still be within this of the plane
-	 * (mm); the pattern search is free in 6 parameters. */
+	 * (mm); the refinement is free in 6 parameters. */
 	double max_base_offset_mm = 15;
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
