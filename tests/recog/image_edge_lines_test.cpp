@@ -33,8 +33,9 @@ TEST(ImageEdgeLines, TheLinearModelPredictsTheResidualsAfterAStep)
 {
 	const Pair p;
 	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
-	const Eigen::Isometry3d start = Eigen::Translation3d(1.2, -0.9, 0.5) * boxPose() *
-	                                Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d(1, 1, 1).normalized());
+	const Eigen::Isometry3d start =
+	    Eigen::Translation3d(1.2, -0.9, 0.5) * boxPose() *
+	    Eigen::AngleAxisd(M_PI / 180, Eigen::Vector3d(1, 1, 1).normalized());
 	const Eigen::Vector3d c_L = start.translation();
 	const EdgeLineTerms t = p.images.edgeLines(samples, start, c_L);
 	ASSERT_GE(t.n, 200);

@@ -18,7 +18,8 @@ inline bool inView(const Eigen::Vector3d& p_C)
 /** cv::projectPoints of one point already in the camera frame (no rotation, no translation) with
  * the 5 coefficients k1 k2 p1 p2 k3, written out in OpenCV's order of operations (it gives the
  * same pixels, and takes a fifth of the time of the call per point). */
-inline cv::Point2d projected(const cv::Matx33d& K, const cv::Vec<double, 5>& D, const Eigen::Vector3d& p)
+inline cv::Point2d projected(const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+                             const Eigen::Vector3d& p)
 {
 	const double iz = p.z() != 0 ? 1. / p.z() : 1;
 	const double x = p.x() * iz, y = p.y() * iz;
@@ -49,9 +50,10 @@ void EdgeImage::forEachInViewWithDepth(const SightedSamples& ss, const Eigen::Is
 		// a limb is on the outline by construction: only the model's parts off its bodies (a
 		// handle) can hide it (SelfOcclusion::hiddenLimb)
 		const bool limb = sight == nullptr;
-		const bool hidden = occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
-		                            : revolution_visibility_ ? occ->hiddenOnBodies(view, *sight, s.p_O)
-		                                                     : occ->hidden(view, *sight, s.p_O));
+		const bool hidden =
+		    occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
+		            : revolution_visibility_ ? occ->hiddenOnBodies(view, *sight, s.p_O)
+		                                     : occ->hidden(view, *sight, s.p_O));
 		if (!in_view)
 		{
 			*outside += hidden ? 0 : 1;

@@ -43,7 +43,8 @@ Eigen::Isometry3d stepped(const Eigen::Isometry3d& T, const Eigen::Vector3d& c_L
 bool withinRefinementReach(const Eigen::Isometry3d& T_OinL, const Eigen::Isometry3d& start_OinL,
                            const Eigen::Vector3d& a_O)
 {
-	const double angle = Eigen::AngleAxisd(T_OinL.linear() * start_OinL.linear().transpose()).angle();
+	const double angle =
+	    Eigen::AngleAxisd(T_OinL.linear() * start_OinL.linear().transpose()).angle();
 	return (T_OinL * a_O - start_OinL * a_O).norm() <= kRefinementReach_mm &&
 	       angle <= kRefinementReach_deg * M_PI / 180;
 }
@@ -82,7 +83,8 @@ void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T
 	    [] { return false; }, nullptr);
 }
 
-EdgeLineTerms ImageVerifier::edgeLines(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
+EdgeLineTerms ImageVerifier::edgeLines(const SightedSamples& samples,
+                                       const Eigen::Isometry3d& T_OinL,
                                        const Eigen::Vector3d& c_L) const
 {
 	EdgeLineTerms t;

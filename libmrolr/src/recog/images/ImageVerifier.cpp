@@ -40,10 +40,10 @@ Eigen::Isometry3d cameraInL(const cv::Matx33d& R_CfromLcv, const cv::Vec3d& t_Lc
 	return T_LcvInL * T_LcvInC.inverse();
 }
 
-/** The edge through the Canny pixel (@p x, @p y) to a tenth of a pixel: the peak of the gradient
- * magnitude along its direction, a parabola through the pixel and its two neighbours that way
- * (Devernay 1995). A step between two pixels has its edge half-way; the pixel Canny keeps is on
- * one side of it, always the same side for one direction. */
+/** The sub-pixel position of the edge through the Canny pixel (@p x, @p y): the peak of the
+ * gradient magnitude along its direction, a parabola through the pixel and its two neighbours
+ * that way (Devernay 1995). A step between two pixels has its edge half-way; the pixel Canny
+ * keeps is on one side of it, always the same side for one direction. */
 cv::Point2f subpixelEdge(const cv::Mat& gx, const cv::Mat& gy, int x, int y)
 {
 	const auto magnitude = [&](int u, int v)

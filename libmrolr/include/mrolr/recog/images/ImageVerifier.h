@@ -160,10 +160,11 @@ struct EdgeLineTerms
 };
 
 /** How far the local search of ImageVerifier::refine may take a pose from where it started (the
- * move of the refinement's axis point, and the angle): a refinement refines. Twice the 99th
- * percentile of the moves, unbounded, of the refinements that ended with an image score of 0.6
- * or more on the rendered sets of seeds 1 and 201 (12.6 mm, 17.3°); unbounded, a fit to the
- * outline of another object in seed 101 moved 41 mm and 45° to reach the acceptance score. */
+ * move of the refinement's axis point, and the angle): a refinement refines. Measured without
+ * the bound (and before sub-pixel edges): twice the 99th percentile of the moves of the
+ * refinements that ended with an image score of 0.6 or more on the rendered sets of seeds 1 and
+ * 201 (12.6 mm, 17.3°); a fit to the outline of another object in seed 101 moved 41 mm and 45°
+ * to reach the acceptance score. */
 constexpr double kRefinementReach_mm = 25, kRefinementReach_deg = 35;
 /** @p T_OinL is within kRefinementReach of @p start_OinL: the point @p a_O (model frame) moved
  * no more than kRefinementReach_mm, the rotation between them no more than kRefinementReach_deg. */
@@ -242,9 +243,9 @@ class EdgeImage
 
  private:
 	/** Projects the samples of @p s (then @p limbs) at @p T_OinL; calls @p fn(pixel, tangent
-	 * pixel, hidden, limb, point in this camera's frame mm) for those in the image (the hidden ones only
-	 * when @p kHiddenToo); @p outside (may be null) counts those not hidden by s.occ outside it.
-	 * After each sample, stops when @p stop() says so. */
+	 * pixel, hidden, limb, point in this camera's frame mm) for those in the image (the hidden
+	 * ones only when @p kHiddenToo); @p outside (may be null) counts those not hidden by s.occ
+	 * outside it. After each sample, stops when @p stop() says so. */
 	template <bool kHiddenToo, class Fn, class Stop>
 	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                            const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
