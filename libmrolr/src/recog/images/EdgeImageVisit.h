@@ -1,5 +1,5 @@
 #pragma once
-// EdgeImage's walk over the samples of a pose (forEachInViewWithDepth), shared by the scores
+// EdgeImage's walk over the samples of a pose (forEachInView), shared by the scores
 // (ImageVerifier.cpp) and the edge-line terms of the refinement (ImageEdgeLines.cpp).
 #include <mrolr/recog/images/ImageVerifier.h>
 
@@ -33,7 +33,7 @@ inline cv::Point2d projected(const cv::Matx33d& K, const cv::Vec<double, 5>& D,
 }  // namespace detail
 
 template <bool kHiddenToo, class Fn, class Stop>
-void EdgeImage::forEachInViewWithDepth(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
+void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
                                        const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
                                        int* outside) const
 {

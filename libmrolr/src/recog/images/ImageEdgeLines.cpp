@@ -54,7 +54,7 @@ void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T
                              double truncate_px, EdgeLineTerms& terms) const
 {
 	const Eigen::Matrix3d R_CinL = T_CcvInL_.linear();
-	forEachInViewWithDepth<false>(
+	forEachInView<false>(
 	    s, T_OinL, limbs,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool,
 	        const Eigen::Vector3d& p_C)

@@ -229,7 +229,7 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
 		exceeded = exceeded || cap->exceeded();
 		return exceeded;
 	};
-	forEachInViewWithDepth<false>(
+	forEachInView<false>(
 	    s, T_OinL, limbs,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool,
 	        const Eigen::Vector3d& p_C)
@@ -261,7 +261,7 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
 {
 	std::vector<Judged> out;
 	const SightedSamples sighted(s_O, occ);
-	forEachInViewWithDepth<true>(sighted, T_OinL, limbsSeen(sighted, T_OinL),
+	forEachInView<true>(sighted, T_OinL, limbsSeen(sighted, T_OinL),
 	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
 	                           bool limb, const Eigen::Vector3d& p_C)
 	                       {

@@ -247,7 +247,7 @@ class EdgeImage
 	 * ones only when @p kHiddenToo); @p outside (may be null) counts those not hidden by s.occ
 	 * outside it. After each sample, stops when @p stop() says so. */
 	template <bool kHiddenToo, class Fn, class Stop>
-	void forEachInViewWithDepth(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	void forEachInView(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                            const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
 	                            int* outside) const;
 	struct Pixel
