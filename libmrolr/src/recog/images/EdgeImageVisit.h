@@ -34,8 +34,8 @@ inline cv::Point2d projected(const cv::Matx33d& K, const cv::Vec<double, 5>& D,
 
 template <bool kHiddenToo, class Fn, class Stop>
 void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
-                                       const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
-                                       int* outside) const
+                              const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
+                              int* outside) const
 {
 	const SelfOcclusion* occ = ss.occ;
 	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
