@@ -1,4 +1,5 @@
 #include <mrolr/recog/SelfOcclusion.h>
+#include <mrolr/util/SimdClones.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +94,7 @@ std::vector<double> SelfOcclusion::offsetsOf(const std::vector<std::vector<Eigen
 }
 
 SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& offsets,
-                                                     const std::vector<double>& nc) const
+                                                    const std::vector<double>& nc) const
 {
 	View::Faces f;
 	for (size_t i = 0; i < nc.size(); ++i)
@@ -170,6 +171,20 @@ bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 	       crossesPolytope(rest_offsets_, v.rest_, v.nc_, p_O, outsideFaces(rest_offsets_, p_O));
 }
 
+// No early exit, so that the loop is vectorised (a hidden point tries every face anyway), and
+// cloned for AVX2 (MROLR_SIMD_CLONES: the same answers).
+MROLR_SIMD_CLONES bool SelfOcclusion::enteredLate(const View::Faces& f, double t1,
+                                                  const Eigen::Vector3d& p_O)
+{
+	const double px = p_O.x(), py = p_O.y(), pz = p_O.z();
+	const double *gap = f.gap.data(), *nc = f.nc.data();
+	const double *nx = f.nx.data(), *ny = f.ny.data(), *nz = f.nz.data();
+	long late = 0;
+	for (size_t k = 0; k < f.gap.size(); ++k)
+		late += gap[k] - t1 * (nc[k] - (nx[k] * px + ny[k] * py + nz[k] * pz)) >= 0 ? 1 : 0;
+	return late != 0;
+}
+
 bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
                                     const std::vector<double>& nc, const Eigen::Vector3d& p_O,
                                     const std::array<std::uint64_t, 2>& p_outside) const
@@ -189,13 +204,8 @@ bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const Vi
 			t1 = std::min(t1, (offsets[i] - nc[i]) / (np(i) - nc[i]));
 		}
 	if (t1 <= 0) return false;
-	// it enters face k at (nc − d) / (nc − np) (np <= d < nc there): all of them before t1? (no
-	// early exit: the loop is vectorised, and a hidden point has to try every face anyway)
-	const double px = p_O.x(), py = p_O.y(), pz = p_O.z();
-	bool late = false;
-	for (size_t k = 0; k < f.gap.size(); ++k)
-		late |= f.gap[k] >= t1 * (f.nc[k] - (f.nx[k] * px + f.ny[k] * py + f.nz[k] * pz));
-	return !late;
+	// it enters face k at (nc − d) / (nc − np) (np <= d < nc there): all of them before t1?
+	return !enteredLate(f, t1, p_O);
 }
 
 bool SelfOcclusion::hiddenOnBodies(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O) const

@@ -103,14 +103,17 @@ class SelfOcclusion
 	View::Faces facesFrom(const std::vector<double>& offsets, const std::vector<double>& nc) const;
 	std::array<std::uint64_t, 2> outsideFaces(const std::vector<double>& offsets,
 	                                          const Eigen::Vector3d& p_O) const;
+	/** True when the segment from the camera to @p p_O enters one of the faces the camera is
+	 * outside of (@p f) at @p t1 or later: gap >= t1 (nc − n·p) for some face. */
+	static bool enteredLate(const View::Faces& f, double t1, const Eigen::Vector3d& p_O);
 	bool crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
 	                     const std::vector<double>& nc, const Eigen::Vector3d& p_O,
 	                     const std::array<std::uint64_t, 2>& p_outside) const;
 
 	std::vector<Eigen::Vector3d> normals_;  ///< at most 128 (View::Faces::outside)
 	std::vector<double> nx_, ny_, nz_;      ///< the same, one array per coordinate
-	std::vector<double> offsets_;  ///< plane offsets, already shrunk by the margin
-	std::vector<std::vector<Eigen::Vector3d>> samples_;  ///< per feature
+	std::vector<double> offsets_;           ///< plane offsets, already shrunk by the margin
+	std::vector<std::vector<Eigen::Vector3d>> samples_;                       ///< per feature
 	std::vector<std::vector<std::array<std::uint64_t, 2>>> samples_outside_;  ///< their faces
 	std::vector<RevolutionBody> bodies_;  ///< at most 64 (PointSight::on_bodies)
 	std::vector<double> rest_offsets_;  ///< polytope of the features off the bodies (may be empty)
