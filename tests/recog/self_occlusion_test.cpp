@@ -1,12 +1,14 @@
 // SelfOcclusion's sight test (SelfOcclusion.h): a segment from the camera is judged to cross the
 // object's shrunk polytope exactly when some point of it lies inside, and the camera-side View
 // and per-point PointSight give the same answers as the one-shot calls.
-#include <mrolr/recog/SelfOcclusion.h>
-#include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/recog/Feature.h>
+#include <mrolr/recog/SelfOcclusion.h>
+#include <mrolr/recog/images/Limbs.h>
+#include <mrolr/sim/SyntheticObjects.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace mrolr::recog;
@@ -70,6 +72,44 @@ TEST(SelfOcclusion, ViewAndPointSightAnswerAsTheOneShotCalls)
 			}
 		}
 	}
+}
+
+TEST(SelfOcclusion, ALimbIsHiddenExactlyByThePolytopeOfTheFeaturesOffTheBodies)
+{
+	// hiddenLimb clips against every face at once; the polytope of the cup's features off its
+	// bodies (the handle), built on its own, answers through the per-point face masks
+	const auto fs = featuresOf(makeCup());
+	const SelfOcclusion occ(fs);
+	std::vector<Feature> off_bodies;
+	for (const auto& f : fs)
+	{
+		const auto on = [&](const Eigen::Vector3d& p)
+		{
+			for (const auto& b : occ.revolutionBodies())
+				if (onSurface(b, p, 3)) return true;
+			return false;
+		};
+		const auto pts = samplesOf(f, 8);
+		if (!std::all_of(pts.begin(), pts.end(), on)) off_bodies.push_back(f);
+	}
+	ASSERT_FALSE(off_bodies.empty());
+	ASSERT_LT(off_bodies.size(), fs.size());
+	const SelfOcclusion handle(off_bodies);
+	std::mt19937 rng(5);
+	std::uniform_real_distribution<double> u(-1, 1);
+	int hidden = 0;
+	for (int k = 0; k < 400; ++k)
+	{
+		const Eigen::Vector3d c = 700 * Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+		const Eigen::Vector3d p =
+		    off_bodies[k % off_bodies.size()].m + 20 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+		const bool h = occ.hiddenLimb(c, p);
+		EXPECT_EQ(h, handle.hidden(c, p))
+		    << "camera " << c.transpose() << ", point " << p.transpose();
+		hidden += h;
+	}
+	EXPECT_GT(hidden, 20);
+	EXPECT_LT(hidden, 380);
 }
 
 TEST(SelfOcclusion, TooManyFaceDirectionsAreRefusedByName)

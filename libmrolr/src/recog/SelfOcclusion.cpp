@@ -1,6 +1,8 @@
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/util/SimdClones.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -97,6 +99,7 @@ SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& o
                                                     const std::vector<double>& nc) const
 {
 	View::Faces f;
+	for (auto* a : {&f.nx, &f.ny, &f.nz, &f.nc, &f.gap}) a->reserve(nc.size());
 	for (size_t i = 0; i < nc.size(); ++i)
 	{
 		if (nc[i] <= offsets[i]) continue;
@@ -111,9 +114,11 @@ SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
 {
 	View v;
 	v.c_O_ = c_O;
+	v.nc_.reserve(normals_.size());
 	for (const auto& n : normals_) v.nc_.push_back(n.dot(c_O));
 	v.all_ = facesFrom(offsets_, v.nc_);
 	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
+	v.bodies_.reserve(bodies_.size());
 	for (const auto& b : bodies_) v.bodies_.push_back(bodySight(b, c_O));
 	return v;
 }
@@ -167,8 +172,19 @@ bool SelfOcclusion::hiddenLimb(const Eigen::Vector3d& c_O, const Eigen::Vector3d
 
 bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 {
-	return !rest_offsets_.empty() &&
-	       crossesPolytope(rest_offsets_, v.rest_, v.nc_, p_O, outsideFaces(rest_offsets_, p_O));
+	// crossesPolytope's clipping over every face at once (a limb point has no PointSight: it
+	// moves with the camera): the same arithmetic, so the same answers
+	if (rest_offsets_.empty()) return false;
+	using Faces = Eigen::Map<const Eigen::ArrayXd>;
+	using Row = Eigen::Array<double, Eigen::Dynamic, 1, 0, 128, 1>;  // no heap
+	const auto n = static_cast<Eigen::Index>(rest_offsets_.size());
+	const Faces nx(nx_.data(), n), ny(ny_.data(), n), nz(nz_.data(), n);
+	const Faces d(rest_offsets_.data(), n), nc(v.nc_.data(), n);
+	const Row np = nx * p_O.x() + ny * p_O.y() + nz * p_O.z();
+	if (((np > d) && (nc > d)).any()) return false;  // both ends outside one face: a miss
+	const double t1 = std::min(1.0, (np > d).select((d - nc) / (np - nc), 1.0).minCoeff());
+	if (t1 <= 0) return false;
+	return !((nc > d) && (nc - d >= t1 * (nc - np))).any();
 }
 
 // No early exit, so that the loop is vectorised (a hidden point tries every face anyway), and
