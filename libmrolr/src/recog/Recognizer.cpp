@@ -51,8 +51,7 @@ std::vector<PoseHypothesis> hypothesesAt(const ModelTable& model, const Oriented
 	std::vector<PoseHypothesis> hyps;
 	for (size_t c = 0; c < model.cliques().size(); ++c)
 	{
-		const auto matches =
-		    matchClique(model, c, scene, p, o.max_search_nodes, focus_ok, members);
+		const auto matches = matchClique(model, c, scene, p, o.max_search_nodes, focus_ok, members);
 		for (size_t k = 0; k < matches.size() && k < kMatchesPerClique; ++k)
 			addPoses(correspondencesOf(model, scene, matches[k]), o, p,
 			         static_cast<double>(matches[k].matches.size()), hyps);
@@ -118,9 +117,12 @@ const char* originName(Origin origin)
 {
 	switch (origin)
 	{
-		case Origin::Clique: return "clique";
-		case Origin::SupportPlane: return "support_plane";
-		case Origin::None: break;
+		case Origin::Clique:
+			return "clique";
+		case Origin::SupportPlane:
+			return "support_plane";
+		case Origin::None:
+			break;
 	}
 	return "none";
 }
@@ -154,8 +156,8 @@ Recognizer::Recognizer(const model::WireFrame& model, const RecognitionOptions& 
 	occlusion_ = std::make_shared<SelfOcclusion>(table_.features());
 	samples_ = newSampleCache();
 	levels_cache_ = newLevelCache();
-	plane_gen_ = std::make_shared<PlaneHypothesisGenerator>(table_.features(),
-	                                                        modelBaseZ_mm(model), opts_.plane);
+	plane_gen_ = std::make_shared<PlaneHypothesisGenerator>(table_.features(), modelBaseZ_mm(model),
+	                                                        opts_.plane);
 	if (!opts_.verify_visible_only) return;
 	min_visible_share_ = minVisibleShare(table_.features(), *occlusion_, centroid_O_);
 }
@@ -191,13 +193,15 @@ RecognitionResult Recognizer::recognizeAtLevel(const std::vector<Feature>& scene
                                                const SceneContext& context) const
 {
 	const auto up = context.up();
+	Refinements refined;
 	return atLevel(scene, level, bounds, up ? &*up : nullptr,
-	               context.images ? &context.images->get() : nullptr, context.repeat);
+	               context.images ? &context.images->get() : nullptr, context.repeat, refined);
 }
 
 RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t level,
                                       FocusBounds& bounds, const Eigen::Vector3d* up_S,
-                                      const ImageVerifier* images, bool repeat) const
+                                      const ImageVerifier* images, bool repeat,
+                                      Refinements& refined) const
 {
 	const LevelParams& p = opts_.levels.at(level);
 	RecognitionResult best;
@@ -206,7 +210,7 @@ RecognitionResult Recognizer::atLevel(const std::vector<Feature>& scene, size_t 
 	const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 	auto [clusters, verified] =
 	    levelHypotheses(scene, os, level, bounds, up_S, images, repeat, best.times);
-	if (images) judgeInImages(verified, *images, os.features, p, up_S, best.times);
+	if (images) judgeInImages(verified, *images, os.features, p, up_S, refined, best.times);
 	double best_rank = 0;
 	for (const auto& h : verified)
 	{
@@ -249,9 +253,9 @@ Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
 		if (images && (!bounds.members || &bounds.members->table() != &table))
 			bounds.members =
 			    std::make_shared<MemberCandidates>(table, scene, loosestTolerance(opts_.levels));
-		const auto hyps = hypothesesAt(table, os, opts_, p,
-		                               focusFilter(scene, os, level, bounds, up_S, images),
-		                               images ? bounds.members.get() : nullptr);
+		const auto hyps =
+		    hypothesesAt(table, os, opts_, p, focusFilter(scene, os, level, bounds, up_S, images),
+		                 images ? bounds.members.get() : nullptr);
 		out.clusters =
 		    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
 	}
@@ -280,7 +284,8 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	size_t last = opts_.levels.size();
 	int skipped = 0;
 	RecognitionTimes times;
-	FocusBounds bounds;  // shared by the levels: computed for the coarsest tolerances
+	FocusBounds bounds;   // shared by the levels: computed for the coarsest tolerances
+	Refinements refined;  // shared by the levels and the plane hypotheses
 	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
@@ -289,7 +294,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 			++skipped;
 			continue;
 		}
-		RecognitionResult r = atLevel(scene, l, bounds, up_S, images, context.repeat);
+		RecognitionResult r = atLevel(scene, l, bounds, up_S, images, context.repeat, refined);
 		times += r.times;
 		if (r.found && !best.found) last = l + 1 + static_cast<size_t>(opts_.confirm_levels);
 		if (best.found && !r.found) continue;
@@ -298,7 +303,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	if (images && context.plane && opts_.plane.enable &&
 	    (!best.found || opts_.plane.run_when == PlaneRunWhen::Always))
 	{
-		RecognitionResult r = recognizeOnPlane(scene, *context.plane, *images);
+		RecognitionResult r = onPlane(scene, *context.plane, *images, refined);
 		times += r.times;
 		const bool better_candidate =
 		    !best.image_score || r.image_score.value_or(0) > *best.image_score;

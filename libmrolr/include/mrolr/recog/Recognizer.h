@@ -74,20 +74,20 @@ struct RecognitionResult
 	bool found = false;
 	Origin origin = Origin::None;
 	Eigen::Isometry3d T_OinS = Eigen::Isometry3d::Identity();  ///< model → scene frame (mm)
-	double score = 0;       ///< verified fraction of the model's length supported by the scene
-	double coverage = 0;    ///< supported length / length of the model features with support
-	int matched = 0;        ///< model features supported in the scene
+	double score = 0;     ///< verified fraction of the model's length supported by the scene
+	double coverage = 0;  ///< supported length / length of the model features with support
+	int matched = 0;      ///< model features supported in the scene
 	/** The 1-based level whose clique recognised; empty when not found or from the plane. */
 	std::optional<int> level;
 	/** cliqueConfidence() or planeConfidence() of a found answer; 0 when not found. */
 	double confidence = 0;
-	int agreeing_cliques = 0;    ///< clique transforms in the winning cluster
-	double spread_rot_deg = 0;   ///< RMS spread of those transforms (deg)
-	double spread_trans_mm = 0;  ///< RMS spread of the carried model centroid (mm)
+	int agreeing_cliques = 0;        ///< clique transforms in the winning cluster
+	double spread_rot_deg = 0;       ///< RMS spread of those transforms (deg)
+	double spread_trans_mm = 0;      ///< RMS spread of the carried model centroid (mm)
 	std::optional<int> scene_index;  ///< which scene of a sweep held it (searchSweep, found)
-	double ms = 0;               ///< wall time of the search (ms)
-	RecognitionTimes times;      ///< where ms went
-	int levels_skipped = 0;      ///< levels skipped: SupportBound says they cannot verify
+	double ms = 0;                   ///< wall time of the search (ms)
+	RecognitionTimes times;          ///< where ms went
+	int levels_skipped = 0;          ///< levels skipped: SupportBound says they cannot verify
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
 	 * model edge samples on image edges), which decided acceptance; empty without images. */
 	std::optional<double> image_score;
@@ -162,7 +162,8 @@ class Recognizer
 		std::shared_ptr<SupportBound> bound;
 		double match_beta_mm = 0;
 		std::map<std::pair<size_t, size_t>, double> mm;
-		/** The clique members' candidates under the loosest tolerance of the levels (with images). */
+		/** The clique members' candidates under the loosest tolerance of the levels (with images).
+		 */
 		std::shared_ptr<MemberCandidates> members;
 	};
 
@@ -224,20 +225,41 @@ class Recognizer
 		std::optional<double> image;
 		size_t hypothesis = 0;  ///< the clique cluster or plane hypothesis it came from
 	};
+	/** The refinements in the images made in one search (recognize(): its levels and its plane
+	 * hypotheses share them): where each started and where it ended. */
+	struct Refinements
+	{
+		struct Made
+		{
+			Eigen::Isometry3d start, result;
+		};
+		std::vector<Made> made;
+	};
 	// Internally an absent up direction or image pair is a null pointer.
 	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;
 	RecognitionResult atLevel(const std::vector<Feature>& scene, size_t level, FocusBounds& bounds,
-	                          const Eigen::Vector3d* up_S, const ImageVerifier* images,
-	                          bool repeat) const;
+	                          const Eigen::Vector3d* up_S, const ImageVerifier* images, bool repeat,
+	                          Refinements& refined) const;
+	/** recognizeOnPlane() sharing @p refined with the levels of the same search. */
+	RecognitionResult onPlane(const std::vector<Feature>& scene, const SupportPlane& plane,
+	                          const ImageVerifier& images, Refinements& refined) const;
 	/** Marks @p best ambiguous when another of @p poses is a near-equal rival (not a symmetry). */
 	void markAmbiguity(RecognitionResult& best, const std::vector<VerifiedPose>& poses) const;
 	/** True when the model's edges under @p a and @p b coincide within ambiguity_symmetry_mm. */
 	bool symmetric(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) const;
 	/** Scores @p poses in @p images, refines the best options().refine_candidates in the images
-	 * (ImageVerifier::refine) and re-verifies them in 3D against @p scene at level @p p. */
+	 * (ImageVerifier::refine) and re-verifies them in 3D against @p scene at level @p p. A pose
+	 * that starts where one of @p refined started or ended (kSameStart) takes its result. */
 	void judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,
 	                   const std::vector<Feature>& scene, const LevelParams& p,
-	                   const Eigen::Vector3d* up_S, RecognitionTimes& times) const;
+	                   const Eigen::Vector3d* up_S, Refinements& refined,
+	                   RecognitionTimes& times) const;
+	/** ImageVerifier::refine of @p T_OinS, or the result of an entry of @p refined that started
+	 * or ended within kSameStart of it; a new refinement is added to @p refined. */
+	Eigen::Isometry3d refinedOnce(const ImageVerifier& images, const SightedSamples& samples,
+	                              const Eigen::Isometry3d& T_OinS,
+	                              const std::vector<Eigen::Vector3d>& axes_O,
+	                              Refinements& refined) const;
 
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels). */

@@ -34,8 +34,9 @@ std::vector<size_t> bestDistinct(const std::vector<PlaneHypothesis>& hyps,
 	for (const size_t k : order)
 	{
 		if (kept.size() >= n) break;
-		const bool dup = std::any_of(kept.begin(), kept.end(), [&](size_t j)
-		                             { return samePose(hyps[j].T_OinS, hyps[k].T_OinS, c_O); });
+		const bool dup =
+		    std::any_of(kept.begin(), kept.end(),
+		                [&](size_t j) { return samePose(hyps[j].T_OinS, hyps[k].T_OinS, c_O); });
 		if (!dup) kept.push_back(k);
 	}
 	return kept;
@@ -45,6 +46,13 @@ std::vector<size_t> bestDistinct(const std::vector<PlaneHypothesis>& hyps,
 RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene,
                                                const SupportPlane& plane,
                                                const ImageVerifier& images) const
+{
+	Refinements refined;
+	return onPlane(scene, plane, images, refined);
+}
+
+RecognitionResult Recognizer::onPlane(const std::vector<Feature>& scene, const SupportPlane& plane,
+                                      const ImageVerifier& images, Refinements& refined) const
 {
 	const PlaneHypothesisOptions& po = opts_.plane;
 	RecognitionResult best;
@@ -70,12 +78,12 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		{
 			const Eigen::Isometry3d& T = hyps[k].T_OinS;
 			poses.push_back({T,
-			                 verifyPose(table_, os.features, T, beta, theta,
-			                            p.length_threshold_mm, occlusionFor(up_S)),
+			                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
+			                            occlusionFor(up_S)),
 			                 std::nullopt, k});
 		}
 	}
-	judgeInImages(poses, images, os.features, p, up_S, best.times);
+	judgeInImages(poses, images, os.features, p, up_S, refined, best.times);
 	double best_rank = -1;
 	std::vector<VerifiedPose> eligible;  // the poses that could be the answer
 	for (const auto& h : poses)
@@ -83,8 +91,7 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		const double rank = detail::rankOf(h.v, h.image);
 		// a pair of vertical lines is common in a scene of boxes and cylinders: edge-pair answers
 		// need more of the images
-		if (hyps[h.hypothesis].from_edge_pair && *h.image < po.edge_pair_min_image_score)
-			continue;
+		if (hyps[h.hypothesis].from_edge_pair && *h.image < po.edge_pair_min_image_score) continue;
 		if (!upright(h.T, up_S) ||
 		    std::abs(plane_gen_->baseOffset_mm(h.T, plane)) > po.max_base_offset_mm)
 			continue;
@@ -99,8 +106,7 @@ RecognitionResult Recognizer::recognizeOnPlane(const std::vector<Feature>& scene
 		best.agreeing_cliques = 0;
 		best.origin = Origin::SupportPlane;
 	}
-	best.found =
-	    *best.image_score >= std::max(images.options().min_score, po.min_image_score);
+	best.found = *best.image_score >= std::max(images.options().min_score, po.min_image_score);
 	if (!best.found) return best;
 	best.confidence = planeConfidence(*best.image_score);
 	markAmbiguity(best, eligible);
