@@ -9,9 +9,9 @@
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/TransformCluster.h>
 #include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/sim/SyntheticScene.h>
-#include <mrolr/recog/TransformCluster.h>
 #include <mrolr/util/Cli.h>
 
 #include <benchmark/benchmark.h>
@@ -208,8 +208,8 @@ void BM_RecogAbsentRenderedImages(benchmark::State& state)
 {
 	auto& f = rendered();
 	for (auto _ : state)
-		benchmark::DoNotOptimize(f.skip->recognize(
-		    f.scene.scene, {f.scene.up_L, std::cref(*f.images), std::nullopt}));
+		benchmark::DoNotOptimize(
+		    f.skip->recognize(f.scene.scene, {f.scene.up_L, std::cref(*f.images), std::nullopt}));
 }
 BENCHMARK(BM_RecogAbsentRenderedImages)->Unit(benchmark::kMillisecond);
 
@@ -324,12 +324,13 @@ void printSweepBreakdown(double sweep_cpu_ms)
 	const auto& f = sweep();
 	std::vector<double> ms;
 	RecognitionTimes sum;
-	int found = 0;
+	int found = 0, refinements = 0, reused = 0;
 	for (size_t v = 0; v < f.views.size(); ++v)
 		for (size_t m = 0; m < f.models.size(); ++m)
 		{
 			const RecognitionResult r = f.search(m, v);
 			ms.push_back(r.ms), sum += r.times, found += r.found ? 1 : 0;
+			refinements += r.image_refinements, reused += r.image_refinements_reused;
 		}
 	std::sort(ms.begin(), ms.end());
 	const auto n = static_cast<double>(ms.size());
@@ -345,6 +346,8 @@ void printSweepBreakdown(double sweep_cpu_ms)
 	    "ms, image refinement %.1f ms, plane hypotheses %.1f ms (sum %.1f ms)\n",
 	    mean.cliques_ms, mean.verify_3d_ms, mean.image_score_ms, mean.image_refine_ms,
 	    mean.plane_ms, mean.total_ms());
+	std::printf("  refinements in the images per model and view: %.2f made, %.2f reused\n",
+	            refinements / n, reused / n);
 }
 
 void printAccuracy()
@@ -387,8 +390,7 @@ int main(int argc, char** argv)
 	    "summary (CPU time): one model %.2f ms, 10-model database %.2f ms, PPF one model %.2f ms; "
 	    "time ratio MROLR/PPF = %.3f\n",
 	    one, db, ppf, ppf > 0 ? one / ppf : 0.0);
-	if (reporter.ms.count("BM_RecogSweepImages"))
-		printSweepBreakdown(get("BM_RecogSweepImages"));
+	if (reporter.ms.count("BM_RecogSweepImages")) printSweepBreakdown(get("BM_RecogSweepImages"));
 	printAccuracy();
 	benchmark::Shutdown();
 	return 0;

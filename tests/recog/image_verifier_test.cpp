@@ -98,6 +98,9 @@ TEST(ImageVerifier, RecognizerAcceptsByImageScore)
 	const Eigen::Vector3d error = r.T_OinS.translation() - boxPose().translation();
 	EXPECT_LT(error.head<2>().norm(), 650 / test::kFocal_px) << error.transpose();
 	EXPECT_LT(std::abs(error.z()), 5.0);
+	// found at the first level, confirmed at the second from the same pose: refined once
+	EXPECT_GE(r.image_refinements, 1);
+	EXPECT_GE(r.image_refinements_reused, 1);
 	EXPECT_FALSE(Recognizer(makeCup(), opts)
 	                 .recognize(scene, {std::nullopt, std::cref(p.images), std::nullopt})
 	                 .found);

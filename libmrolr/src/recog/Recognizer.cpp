@@ -312,6 +312,8 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	}
 	if (!best.found) best.T_OinS = Eigen::Isometry3d::Identity();
 	best.levels_skipped = skipped;
+	best.image_refinements = static_cast<int>(refined.made.size());
+	best.image_refinements_reused = refined.reused;
 	best.times = times;
 	best.ms =
 	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -88,6 +88,10 @@ struct RecognitionResult
 	double ms = 0;                   ///< wall time of the search (ms)
 	RecognitionTimes times;          ///< where ms went
 	int levels_skipped = 0;          ///< levels skipped: SupportBound says they cannot verify
+	/** With images: the refinements in the images the search made (ImageVerifier::refine), and
+	 * the candidates that took the result of one of them instead, starting within 2 mm and 2° of
+	 * where it started or ended (levels and plane hypotheses find the same pose again). */
+	int image_refinements = 0, image_refinements_reused = 0;
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
 	 * model edge samples on image edges), which decided acceptance; empty without images. */
 	std::optional<double> image_score;
@@ -234,6 +238,7 @@ class Recognizer
 			Eigen::Isometry3d start, result;
 		};
 		std::vector<Made> made;
+		int reused = 0;  ///< candidates given the result of one of made
 	};
 	// Internally an absent up direction or image pair is a null pointer.
 	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;

@@ -96,6 +96,8 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"level", r.level},
 	        {"ms", r.ms},
 	        {"times_ms", timesJson(r.times)},
+	        {"image_refinements", r.image_refinements},
+	        {"image_refinements_reused", r.image_refinements_reused},
 	        {"confidence", r.confidence},
 	        {"scene", r.scene_index},
 	        {"rpy_deg", {rpy.x(), rpy.y(), rpy.z()}},
