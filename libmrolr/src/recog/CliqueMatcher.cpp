@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace mrolr::recog
 {
@@ -31,26 +32,46 @@ class ConsistentSetSearch
 		cands_ = candidates;
 		std::sort(cands_.begin(), cands_.end(),
 		          [](const auto& a, const auto& b) { return a.size() < b.size(); });
+		first_.clear();
+		size_t n = 0;
+		for (const auto& c : cands_) first_.push_back(n), n += c.size();
+		pairs_ = n;
+		known_.assign(n * n, kUnknown);
 		chosen_ = {focus};
+		chosen_index_ = {0};
 		best_ = {chosen_};
 		dfs(0);
 		return best_;
 	}
 
  private:
-	/** Whether @p c, a candidate of the focus match (memberCandidates: consistent with it),
-	 * is consistent with the other chosen matches too. */
-	bool fits(const FeatureMatch& c) const
+	static constexpr std::int8_t kUnknown = -1;
+
+	/** Whether candidates @p a and @p b (indices over all members' lists) are consistent: asked
+	 * once per pair, however many branches of the search meet it. */
+	bool pairConsistent(size_t a, const FeatureMatch& x, size_t b, const FeatureMatch& c)
+	{
+		std::int8_t& k = known_[a * pairs_ + b];
+		if (k == kUnknown)
+		{
+			const auto& mf = model_.features();
+			k = consistent(model_.relation(x.model, c.model), mf[x.model], mf[c.model],
+			               scene_.oriented[x.oriented], scene_.oriented[c.oriented], tol_)
+			        ? 1
+			        : 0;
+		}
+		return k == 1;
+	}
+
+	/** Whether @p c (index @p ci), a candidate of the focus match (memberCandidates: consistent
+	 * with it), is consistent with the other chosen matches too. */
+	bool fits(const FeatureMatch& c, size_t ci)
 	{
 		for (size_t k = 1; k < chosen_.size(); ++k)
 		{
 			const FeatureMatch& x = chosen_[k];
 			if (x.scene() == c.scene()) return false;
-			const auto& rel = model_.relation(x.model, c.model);
-			const auto& mf = model_.features();
-			if (!consistent(rel, mf[x.model], mf[c.model], scene_.oriented[x.oriented],
-			                scene_.oriented[c.oriented], tol_))
-				return false;
+			if (!pairConsistent(chosen_index_[k], x, ci, c)) return false;
 		}
 		return true;
 	}
@@ -71,12 +92,13 @@ class ConsistentSetSearch
 		record();
 		if (k == cands_.size() || --budget_ <= 0) return;
 		if (chosen_.size() + (cands_.size() - k) < best_.front().size()) return;
-		for (const auto& c : cands_[k])
+		for (size_t i = 0; i < cands_[k].size(); ++i)
 		{
-			if (!fits(c)) continue;
-			chosen_.push_back(c);
+			const FeatureMatch& c = cands_[k][i];
+			if (!fits(c, first_[k] + i)) continue;
+			chosen_.push_back(c), chosen_index_.push_back(first_[k] + i);
 			dfs(k + 1);
-			chosen_.pop_back();
+			chosen_.pop_back(), chosen_index_.pop_back();
 			if (budget_ <= 0) return;
 		}
 		dfs(k + 1);
@@ -87,7 +109,11 @@ class ConsistentSetSearch
 	Tolerance tol_;
 	int budget_;
 	std::vector<std::vector<FeatureMatch>> cands_;
+	std::vector<size_t> first_;       ///< index of each member's first candidate
+	size_t pairs_ = 0;                ///< candidates of all members
+	std::vector<std::int8_t> known_;  ///< pairConsistent's answers (kUnknown: not asked yet)
 	std::vector<FeatureMatch> chosen_;
+	std::vector<size_t> chosen_index_;  ///< chosen_'s candidate indices (the focus's unused)
 	std::vector<std::vector<FeatureMatch>> best_;
 };
 
@@ -207,10 +233,10 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
 		for (size_t k = 0; k < clique.members.size(); ++k)
-			cands.push_back(members ? memberCandidates(model, clique.members[k], focus, scene, p,
-			                                           tol, *members, kept_index)
-			                        : memberCandidates(model, clique.members[k], gated[k], focus,
-			                                           scene, tol));
+			cands.push_back(
+			    members ? memberCandidates(model, clique.members[k], focus, scene, p, tol, *members,
+			                               kept_index)
+			            : memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
 		for (auto& ms : search.run(focus, cands))
 			if (static_cast<int>(ms.size()) >= p.clique_size)
