@@ -1,5 +1,7 @@
 #include <mrolr/recog/MemberCandidates.h>
 
+#include <mrolr/recog/CliqueMatcher.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -27,9 +29,23 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	const auto& mf = model_.features();
 	const auto& rel = model_.relation(focus, member);
 	const Feature& sa = oriented_[o_focus];
-	for (std::uint32_t o = 0; o < oriented_.size(); ++o)
+	for (const std::uint32_t o : gatedFor(member))
 		if (consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			it->second.push_back(o);
+	return it->second;
+}
+
+const std::vector<std::uint32_t>& MemberCandidates::gatedFor(size_t member)
+{
+	const auto [it, fresh] = gated_.try_emplace(member);
+	if (!fresh) return it->second;
+	// a scene feature that fails the gate at the loosest position error fails it at every level
+	// (a member's gate has no length ratio: that is the focus's)
+	LevelParams loosest;
+	loosest.position_error_mm = loosest_.beta_mm;
+	const Feature& m = model_.features()[member];
+	for (std::uint32_t o = 0; o < oriented_.size(); ++o)
+		if (passesUnaryGate(m, oriented_[o], loosest, false)) it->second.push_back(o);
 	return it->second;
 }
 

@@ -23,10 +23,10 @@ class MemberCandidates
 	MemberCandidates(const ModelTable& model, const std::vector<Feature>& scene,
 	                 const Tolerance& loosest);
 
-	/** The scene features, as 2 × index in the scene + 1 when flipped (increasing), consistent
-	 * under the loosest tolerance with model feature @p member when model feature @p focus is
-	 * matched to scene feature @p focus_scene (flipped when @p focus_flipped). Computed on the
-	 * first call and kept. */
+	/** The scene features, as 2 × index in the scene + 1 when flipped (increasing), that pass
+	 * model feature @p member's unary gate (passesUnaryGate) and are consistent with it, both
+	 * under the loosest tolerance, when model feature @p focus is matched to scene feature
+	 * @p focus_scene (flipped when @p focus_flipped). Computed on the first call and kept. */
 	const std::vector<std::uint32_t>& of(size_t focus, size_t member, size_t focus_scene,
 	                                     bool focus_flipped);
 	const ModelTable& table() const { return model_; }
@@ -37,6 +37,9 @@ class MemberCandidates
 	std::vector<Feature> oriented_;  ///< 2k: scene feature k, 2k + 1: flipped
 	Tolerance loosest_;
 	std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> lists_;
+	/** Per model feature: the oriented scene features passing its gate (on first use). */
+	std::unordered_map<size_t, std::vector<std::uint32_t>> gated_;
+	const std::vector<std::uint32_t>& gatedFor(size_t member);
 };
 
 /** The largest position error and rotation of @p levels, widened by 1e-6 mm and 1e-6 rad so that
