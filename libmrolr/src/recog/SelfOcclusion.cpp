@@ -52,7 +52,7 @@ SelfOcclusion::SelfOcclusion(const std::vector<Feature>& features_O, double marg
       bodies_(revolutionBodiesOf(features_O)),
       margin_mm_(margin_mm)
 {
-	if (directions > 128)
+	if (directions > static_cast<int>(View::kMaxFaces))
 		throw std::invalid_argument("SelfOcclusion: " + std::to_string(directions) +
 		                            " face directions, at most 128");
 	for (const auto& n : normals_) nx_.push_back(n.x()), ny_.push_back(n.y()), nz_.push_back(n.z());
@@ -96,16 +96,16 @@ std::vector<double> SelfOcclusion::offsetsOf(const std::vector<std::vector<Eigen
 }
 
 SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& offsets,
-                                                    const std::vector<double>& nc) const
+                                                    const View::PerFace& nc) const
 {
 	View::Faces f;
-	for (auto* a : {&f.nx, &f.ny, &f.nz, &f.nc, &f.gap}) a->reserve(nc.size());
-	for (size_t i = 0; i < nc.size(); ++i)
+	for (size_t i = 0; i < offsets.size(); ++i)
 	{
 		if (nc[i] <= offsets[i]) continue;
 		f.outside[i >> 6] |= std::uint64_t{1} << (i & 63);
-		f.nx.push_back(nx_[i]), f.ny.push_back(ny_[i]), f.nz.push_back(nz_[i]);
-		f.nc.push_back(nc[i]), f.gap.push_back(nc[i] - offsets[i]);
+		f.nx[f.n] = nx_[i], f.ny[f.n] = ny_[i], f.nz[f.n] = nz_[i];
+		f.nc[f.n] = nc[i], f.gap[f.n] = nc[i] - offsets[i];
+		++f.n;
 	}
 	return f;
 }
@@ -114,8 +114,7 @@ SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
 {
 	View v;
 	v.c_O_ = c_O;
-	v.nc_.reserve(normals_.size());
-	for (const auto& n : normals_) v.nc_.push_back(n.dot(c_O));
+	for (size_t i = 0; i < normals_.size(); ++i) v.nc_[i] = normals_[i].dot(c_O);
 	v.all_ = facesFrom(offsets_, v.nc_);
 	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
 	v.bodies_.reserve(bodies_.size());
@@ -176,7 +175,7 @@ bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 	// moves with the camera): the same arithmetic, so the same answers
 	if (rest_offsets_.empty()) return false;
 	using Faces = Eigen::Map<const Eigen::ArrayXd>;
-	using Row = Eigen::Array<double, Eigen::Dynamic, 1, 0, 128, 1>;  // no heap
+	using Row = Eigen::Array<double, Eigen::Dynamic, 1, 0, View::kMaxFaces, 1>;  // no heap
 	const auto n = static_cast<Eigen::Index>(rest_offsets_.size());
 	const Faces nx(nx_.data(), n), ny(ny_.data(), n), nz(nz_.data(), n);
 	const Faces d(rest_offsets_.data(), n), nc(v.nc_.data(), n);
@@ -196,13 +195,13 @@ MROLR_SIMD_CLONES bool SelfOcclusion::enteredLate(const View::Faces& f, double t
 	const double *gap = f.gap.data(), *nc = f.nc.data();
 	const double *nx = f.nx.data(), *ny = f.ny.data(), *nz = f.nz.data();
 	long late = 0;
-	for (size_t k = 0; k < f.gap.size(); ++k)
+	for (size_t k = 0; k < f.n; ++k)
 		late += gap[k] - t1 * (nc[k] - (nx[k] * px + ny[k] * py + nz[k] * pz)) >= 0 ? 1 : 0;
 	return late != 0;
 }
 
 bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
-                                    const std::vector<double>& nc, const Eigen::Vector3d& p_O,
+                                    const View::PerFace& nc, const Eigen::Vector3d& p_O,
                                     const std::array<std::uint64_t, 2>& p_outside) const
 {
 	// Cyrus–Beck clipping of x(t) = c + t (p − c), t in [0, 1], against n·x <= d, face by face

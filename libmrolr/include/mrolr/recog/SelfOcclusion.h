@@ -59,15 +59,18 @@ class SelfOcclusion
 
 	 private:
 		friend class SelfOcclusion;
+		static constexpr size_t kMaxFaces = 128;        ///< at most this many face directions
+		using PerFace = std::array<double, kMaxFaces>;  // fixed: a View is made per pose
 		/** Per polytope (whole, off the bodies): the faces the camera is outside of. */
 		struct Faces
 		{
 			std::array<std::uint64_t, 2> outside = {0, 0};  ///< bit i: n_i·c_O > offset_i
-			/** The same faces, one array per term: normal, n·c, n·c − offset. */
-			std::vector<double> nx, ny, nz, nc, gap;
+			/** The same n faces, one array per term: normal, n·c, n·c − offset. */
+			PerFace nx, ny, nz, nc, gap;
+			size_t n = 0;
 		};
 		Eigen::Vector3d c_O_;
-		std::vector<double> nc_;  ///< n_i·c_O per face direction
+		PerFace nc_;  ///< n_i·c_O per face direction
 		Faces all_, rest_;
 		std::vector<BodySight> bodies_;
 	};
@@ -100,17 +103,17 @@ class SelfOcclusion
  private:
 	std::vector<double> offsetsOf(const std::vector<std::vector<Eigen::Vector3d>>& pts,
 	                              double margin_mm) const;
-	View::Faces facesFrom(const std::vector<double>& offsets, const std::vector<double>& nc) const;
+	View::Faces facesFrom(const std::vector<double>& offsets, const View::PerFace& nc) const;
 	std::array<std::uint64_t, 2> outsideFaces(const std::vector<double>& offsets,
 	                                          const Eigen::Vector3d& p_O) const;
 	/** True when the segment from the camera to @p p_O enters one of the faces the camera is
 	 * outside of (@p f) at @p t1 or later: gap >= t1 (nc − n·p) for some face. */
 	static bool enteredLate(const View::Faces& f, double t1, const Eigen::Vector3d& p_O);
 	bool crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
-	                     const std::vector<double>& nc, const Eigen::Vector3d& p_O,
+	                     const View::PerFace& nc, const Eigen::Vector3d& p_O,
 	                     const std::array<std::uint64_t, 2>& p_outside) const;
 
-	std::vector<Eigen::Vector3d> normals_;  ///< at most 128 (View::Faces::outside)
+	std::vector<Eigen::Vector3d> normals_;  ///< at most View::kMaxFaces
 	std::vector<double> nx_, ny_, nz_;      ///< the same, one array per coordinate
 	std::vector<double> offsets_;           ///< plane offsets, already shrunk by the margin
 	std::vector<std::vector<Eigen::Vector3d>> samples_;                       ///< per feature
