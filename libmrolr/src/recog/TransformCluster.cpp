@@ -82,9 +82,10 @@ std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hy
 		    clusters.begin(), clusters.end(),
 		    [&](const PoseCluster& c)
 		    {
+			    // the translation first: it is cheaper, and most clusters fail it
 			    const auto& S = hyps[c.members.front()].T_OinS;
-			    return rotationDistanceDeg(S.linear(), T.linear()) <= max_rotation_deg &&
-			           (S * centroid_O - T * centroid_O).norm() <= max_translation_mm;
+			    return (S * centroid_O - T * centroid_O).norm() <= max_translation_mm &&
+			           rotationDistanceDeg(S.linear(), T.linear()) <= max_rotation_deg;
 		    });
 		if (it == clusters.end()) it = clusters.insert(clusters.end(), PoseCluster{});
 		it->members.push_back(i);
