@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace mrolr::recog
@@ -145,6 +146,19 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 			const double n = std::hypot(g.x, g.y);
 			normal_[label] = n > 0 ? g / static_cast<float>(n) : cv::Point2f(0, 0);
 		}
+	const float none = std::numeric_limits<float>::quiet_NaN();
+	nearest_normal_.create(edges_.size(), CV_32FC2);
+	for (int y = 0; y < edges_.rows; ++y)
+	{
+		const int* label = labels_.ptr<int>(y);
+		auto* out = nearest_normal_.ptr<cv::Vec2f>(y);
+		for (int x = 0; x < edges_.cols; ++x)
+		{
+			const auto k = static_cast<size_t>(label[x]);
+			out[x] =
+			    k < normal_.size() ? cv::Vec2f(normal_[k].x, normal_[k].y) : cv::Vec2f(none, none);
+		}
+	}
 }
 
 EdgeImage::Pixel EdgeImage::pixelOf(const cv::Point2d& px)
@@ -173,12 +187,10 @@ double EdgeImage::distanceAt(const cv::Point2d& px) const
 
 bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) const
 {
-	const size_t label = static_cast<size_t>(labels_.ptr<int>(at.y)[at.x]);
-	if (label >= normal_.size()) return false;
+	const cv::Vec2f& n = nearest_normal_.ptr<cv::Vec2f>(at.y)[at.x];  // NaN: no edge
 	const double len = std::sqrt(tangent_px.x * tangent_px.x + tangent_px.y * tangent_px.y);
 	if (len <= 0) return false;  // an edge seen end-on has no direction to compare
-	const cv::Point2f& n = normal_[label];
-	return std::abs(n.x * tangent_px.x + n.y * tangent_px.y) <= sin_tol_ * len;
+	return std::abs(n[0] * tangent_px.x + n[1] * tangent_px.y) <= sin_tol_ * len;
 }
 
 bool EdgeImage::occludedAt(const Pixel& at, double depth_mm) const
@@ -215,10 +227,9 @@ ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_
 	return *count(s, T_OinL, limbsSeen(s, T_OinL), truncate_px, nullptr);
 }
 
-std::optional<ImageCount> EdgeImage::count(const SightedSamples& s,
-                                           const Eigen::Isometry3d& T_OinL,
-                                           const std::vector<EdgeSample>& limbs,
-                                           double truncate_px, ScoreCap* cap) const
+std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+                                           const std::vector<EdgeSample>& limbs, double truncate_px,
+                                           ScoreCap* cap) const
 {
 	ImageCount c;
 	bool exceeded = false;
@@ -261,14 +272,15 @@ std::vector<EdgeImage::Judged> EdgeImage::judge(const std::vector<EdgeSample>& s
 {
 	std::vector<Judged> out;
 	const SightedSamples sighted(s_O, occ);
-	forEachInView<true>(sighted, T_OinL, limbsSeen(sighted, T_OinL),
-	                       [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden,
-	                           bool limb, const Eigen::Vector3d& p_C)
-	                       {
-		                       hidden = hidden || occludedAt(pixelOf(px), p_C.z());
-		                       out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
-	                       },
-	                       [] { return false; }, nullptr);
+	forEachInView<true>(
+	    sighted, T_OinL, limbsSeen(sighted, T_OinL),
+	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool hidden, bool limb,
+	        const Eigen::Vector3d& p_C)
+	    {
+		    hidden = hidden || occludedAt(pixelOf(px), p_C.z());
+		    out.push_back({px, limb, hidden, !hidden && supports(px, tangent)});
+	    },
+	    [] { return false; }, nullptr);
 	return out;
 }
 

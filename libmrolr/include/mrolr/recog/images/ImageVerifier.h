@@ -8,8 +8,8 @@
  * (unrectified) images of the stereo::StereoCalibration. */
 
 #include <mrolr/recog/Feature.h>
-#include <mrolr/recog/images/Limbs.h>
 #include <mrolr/recog/SelfOcclusion.h>
+#include <mrolr/recog/images/Limbs.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
 #include <mrpt/config/CConfigFileBase.h>
@@ -248,8 +248,7 @@ class EdgeImage
 	 * outside it. After each sample, stops when @p stop() says so. */
 	template <bool kHiddenToo, class Fn, class Stop>
 	void forEachInView(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
-	                            const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
-	                            int* outside) const;
+	                   const std::vector<EdgeSample>& limbs, Fn fn, Stop stop, int* outside) const;
 	struct Pixel
 	{
 		int x, y;
@@ -268,12 +267,15 @@ class EdgeImage
 	double dist_px_, sin_tol_;
 	bool limbs_, revolution_visibility_;
 	double limb_spacing_mm_;
-	cv::Mat edges_;                    ///< CV_8U, 255 on edges
-	cv::Mat dist_;                     ///< CV_32F, px to the nearest edge pixel
-	cv::Mat labels_;                   ///< CV_32S, label of the nearest edge pixel
+	cv::Mat edges_;                     ///< CV_8U, 255 on edges
+	cv::Mat dist_;                      ///< CV_32F, px to the nearest edge pixel
+	cv::Mat labels_;                    ///< CV_32S, label of the nearest edge pixel
 	std::vector<cv::Point2f> normal_;   ///< unit gradient at each label's edge pixel
 	std::vector<cv::Point2f> edge_px_;  ///< each label's edge pixel
-	cv::Mat occluder_z_;               ///< CV_32F, occluders' depth (mm); empty when none
+	/** CV_32FC2: normal_ of each pixel's nearest edge pixel, NaN where it has none (one look-up
+	 * for oriented() instead of two that depend on each other). */
+	cv::Mat nearest_normal_;
+	cv::Mat occluder_z_;  ///< CV_32F, occluders' depth (mm); empty when none
 	double occluder_margin_mm_ = 0;
 };
 
