@@ -36,7 +36,9 @@ class ConsistentSetSearch
 		size_t n = 0;
 		for (const auto& c : cands_) first_.push_back(n), n += c.size();
 		pairs_ = n;
-		known_.assign(n * n, kUnknown);
+		// a table of n² answers; beyond kMaxKnown (a scene of thousands of candidates) every pair
+		// is asked afresh instead
+		known_.assign(n * n <= kMaxKnown ? n * n : 0, kUnknown);
 		chosen_ = {focus};
 		chosen_index_ = {0};
 		best_ = {chosen_};
@@ -46,20 +48,21 @@ class ConsistentSetSearch
 
  private:
 	static constexpr std::int8_t kUnknown = -1;
+	static constexpr size_t kMaxKnown = size_t{1} << 22;  // 4 MiB
 
 	/** Whether candidates @p a and @p b (indices over all members' lists) are consistent: asked
 	 * once per pair, however many branches of the search meet it. */
 	bool pairConsistent(size_t a, const FeatureMatch& x, size_t b, const FeatureMatch& c)
 	{
-		std::int8_t& k = known_[a * pairs_ + b];
-		if (k == kUnknown)
+		const auto ask = [&]
 		{
 			const auto& mf = model_.features();
-			k = consistent(model_.relation(x.model, c.model), mf[x.model], mf[c.model],
-			               scene_.oriented[x.oriented], scene_.oriented[c.oriented], tol_)
-			        ? 1
-			        : 0;
-		}
+			return consistent(model_.relation(x.model, c.model), mf[x.model], mf[c.model],
+			                  scene_.oriented[x.oriented], scene_.oriented[c.oriented], tol_);
+		};
+		if (known_.empty()) return ask();
+		std::int8_t& k = known_[a * pairs_ + b];
+		if (k == kUnknown) k = ask() ? 1 : 0;
 		return k == 1;
 	}
 
