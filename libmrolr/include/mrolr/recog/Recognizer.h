@@ -166,8 +166,7 @@ class Recognizer
 		std::shared_ptr<SupportBound> bound;
 		double match_beta_mm = 0;
 		std::map<std::pair<size_t, size_t>, double> mm;
-		/** The clique members' candidates under the loosest tolerance of the levels (with images).
-		 */
+		/** The clique members' candidates under the levels' loosest tolerance (with images). */
 		std::shared_ptr<MemberCandidates> members;
 	};
 
