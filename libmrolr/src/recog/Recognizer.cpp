@@ -117,12 +117,9 @@ const char* originName(Origin origin)
 {
 	switch (origin)
 	{
-		case Origin::Clique:
-			return "clique";
-		case Origin::SupportPlane:
-			return "support_plane";
-		case Origin::None:
-			break;
+		case Origin::Clique: return "clique";
+		case Origin::SupportPlane: return "support_plane";
+		case Origin::None: break;
 	}
 	return "none";
 }
