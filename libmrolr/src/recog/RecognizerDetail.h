@@ -31,6 +31,15 @@ std::pair<Eigen::Isometry3d, VerificationResult> verifyAndRefine(
     const ModelTable& model, const std::vector<Feature>& scene, Eigen::Isometry3d T,
     const LevelParams& p, const RecognitionOptions& o, const SelfOcclusion* occ);
 
+/** True when poses @p a and @p b (model → scene) carry the model point @p c_O less than
+ * @p max_mm apart and differ by a rotation of less than @p max_deg. */
+inline bool nearPose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b,
+                     const Eigen::Vector3d& c_O, double max_mm, double max_deg)
+{
+	const double angle = Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+	return (a * c_O - b * c_O).norm() < max_mm && angle < max_deg * M_PI / 180;
+}
+
 /** Adds the wall time of its scope (ms) to a stage of RecognitionTimes. */
 class StageTimer
 {

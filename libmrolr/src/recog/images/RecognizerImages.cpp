@@ -5,7 +5,6 @@
 #include <mrolr/recog/Recognizer.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace mrolr::recog
 {
@@ -21,8 +20,7 @@ constexpr double kSameStart_mm = 2, kSameStart_deg = 2;
 
 bool sameStart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eigen::Vector3d& c_O)
 {
-	const double angle = Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-	return (a * c_O - b * c_O).norm() < kSameStart_mm && angle < kSameStart_deg * M_PI / 180;
+	return detail::nearPose(a, b, c_O, kSameStart_mm, kSameStart_deg);
 }
 }  // namespace
 

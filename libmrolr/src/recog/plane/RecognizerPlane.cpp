@@ -18,8 +18,7 @@ constexpr double kSamePose_mm = 5, kSamePose_deg = 5;  // near-duplicate hypothe
 
 bool samePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eigen::Vector3d& c_O)
 {
-	const double angle = Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
-	return (a * c_O - b * c_O).norm() < kSamePose_mm && angle < kSamePose_deg * M_PI / 180;
+	return detail::nearPose(a, b, c_O, kSamePose_mm, kSamePose_deg);
 }
 
 /** Indices of @p score sorted best first, near-duplicates of a better one dropped, at most @p n. */
