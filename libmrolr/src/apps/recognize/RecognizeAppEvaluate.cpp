@@ -54,7 +54,9 @@ nlohmann::json caseJson(const eval::EvalCase& c)
 	        {"levels_skipped", c.levels_skipped},
 	        {"score_bound", c.score_bound},
 	        {"ms", c.ms},
-	        {"times_ms", timesJson(c.result.times)}};
+	        {"times_ms", timesJson(c.result.times)},
+	        {"image_refinements", c.result.image_refinements},
+	        {"image_refinements_reused", c.result.image_refinements_reused}};
 }
 
 nlohmann::json objectJson(const eval::EvalObject& o)
