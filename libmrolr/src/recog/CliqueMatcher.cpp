@@ -230,16 +230,25 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 		for (size_t j : clique.members)
 			gated.push_back(gatedFor(model.features()[j], scene, p, false));
 	std::vector<CliqueMatch> out;
+	// a set has the focus and at most one match per member with candidates: once more members
+	// than this have none, no set of the focus reaches clique_size
+	const int spare = static_cast<int>(clique.members.size()) + 1 - p.clique_size;
+	if (spare < 0) return out;
 	for (size_t o : gatedFor(mfocus, scene, p, true))
 	{
 		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;
 		const FeatureMatch focus{clique.focus, o};
 		std::vector<std::vector<FeatureMatch>> cands;
-		for (size_t k = 0; k < clique.members.size(); ++k)
+		int without = 0;
+		for (size_t k = 0; k < clique.members.size() && without <= spare; ++k)
+		{
 			cands.push_back(
 			    members ? memberCandidates(model, clique.members[k], focus, scene, p, tol, *members,
 			                               kept_index)
 			            : memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
+			without += cands.back().empty() ? 1 : 0;
+		}
+		if (without > spare) continue;
 		ConsistentSetSearch search(model, scene, tol, max_nodes);
 		for (auto& ms : search.run(focus, cands))
 			if (static_cast<int>(ms.size()) >= p.clique_size)
