@@ -16,6 +16,7 @@ MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Fe
 		throw std::invalid_argument("MemberCandidates: too many scene features");
 	oriented_.reserve(2 * scene.size());
 	for (const auto& f : scene) oriented_.push_back(f), oriented_.push_back(f.flipped());
+	for (const auto& f : oriented_) u_.push_back(f.u);
 }
 
 const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t member,
@@ -29,8 +30,11 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	const auto& mf = model_.features();
 	const auto& rel = model_.relation(focus, member);
 	const Feature& sa = oriented_[o_focus];
+	// consistent()'s first test on the packed directions: most pairs fail it
+	const CosineRange angle = cosineRange(rel, loosest_);
 	for (const std::uint32_t o : gatedFor(member))
-		if (consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
+		if (angle.contains(sa.u.dot(u_[o])) &&
+		    consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			it->second.push_back(o);
 	return it->second;
 }

@@ -104,17 +104,16 @@ bool consistentConicConic(const PairRelation& m, const PairRelation& s, const To
 	return within(s.h, m.h, b2) && within(s.ax1, m.ax1, tol) && within(s.ax2, m.ax2, tol);
 }
 
-/** |alpha_scene - alpha_model| <= 2 theta, compared through cosines (no acos in the inner loop). */
-bool angleWithin(double cos_s, const PairRelation& m, const Tolerance& t)
+}  // namespace
+
+CosineRange cosineRange(const PairRelation& m, const Tolerance& t)
 {
 	const double two = 2 * t.theta_rad;
-	const double hi =
-	    m.alpha - two <= 0 ? 1.0 : m.cos_alpha * t.cos_2theta + m.sin_alpha * t.sin_2theta;
-	const double lo =
-	    m.alpha + two >= M_PI ? -1.0 : m.cos_alpha * t.cos_2theta - m.sin_alpha * t.sin_2theta;
-	return cos_s >= lo - 1e-12 && cos_s <= hi + 1e-12;
+	CosineRange r;
+	if (m.alpha - two > 0) r.hi = m.cos_alpha * t.cos_2theta + m.sin_alpha * t.sin_2theta;
+	if (m.alpha + two < M_PI) r.lo = m.cos_alpha * t.cos_2theta - m.sin_alpha * t.sin_2theta;
+	return r;
 }
-}  // namespace
 
 PairRelation relate(const Feature& a, const Feature& b, bool parallel)
 {
@@ -154,7 +153,7 @@ bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, con
                 const Feature& sb, const Tolerance& tol)
 {
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
-	if (!angleWithin(sa.u.dot(sb.u), m, tol)) return false;
+	if (!cosineRange(m, tol).contains(sa.u.dot(sb.u))) return false;
 	if (ma.isLine() && mb.isLine() && !m.parallel) return consistentSkew(m, sa, sb, tol);
 	PairRelation s;  // the angle was checked above: no trigonometry in the matcher's inner loop
 	relateGeometry(sa, sb, m.parallel, s);

@@ -35,6 +35,7 @@ class MemberCandidates
  private:
 	const ModelTable& model_;
 	std::vector<Feature> oriented_;  ///< 2k: scene feature k, 2k + 1: flipped
+	std::vector<Eigen::Vector3d> u_;  ///< oriented_'s directions, packed for of()'s angle test
 	Tolerance loosest_;
 	std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> lists_;
 	/** Per model feature: the oriented scene features passing its gate (on first use). */

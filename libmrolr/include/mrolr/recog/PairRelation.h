@@ -58,6 +58,15 @@ PairRelation relate(const Feature& a, const Feature& b, bool parallel);
 /** Relation of a model pair; the parallel form is chosen by kParallelAngle. */
 PairRelation relateModel(const Feature& a, const Feature& b);
 
+/** The cosines of the scene pair angles within 2·theta of the model pair @p m's angle alpha
+ * (consistent()'s first test, through cosines: no acos in the matcher's inner loop). */
+struct CosineRange
+{
+	double lo = -1, hi = 1;
+	bool contains(double cos_s) const { return cos_s >= lo - 1e-12 && cos_s <= hi + 1e-12; }
+};
+CosineRange cosineRange(const PairRelation& m, const Tolerance& t);
+
 /** True when the scene pair (sa, sb) — oriented as hypothesised — lies within the error intervals
  * of the model relation @p m of the pair (ma, mb): orientation within 2·theta, distances within the
  * paper's bounds beta1 + beta2 + |q| tan(theta) (/ sin alpha for positions along the lines), and
