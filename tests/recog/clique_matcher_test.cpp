@@ -1,10 +1,9 @@
-// matchClique: the clique size a level asks for only filters the sets it finds (thesis 6.3.2,
+// matchClique: the clique size a level asks for only filters the sets it finds (thesis 6.3,
 // parameter (a)); a focus match that cannot reach it is given up before its search, which must not
 // lose a set that reaches it.
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/MemberCandidates.h>
-#include <mrolr/sim/SyntheticObjects.h>
-#include <mrolr/sim/SyntheticScene.h>
+#include "noisy_table_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +11,6 @@
 #include <tuple>
 
 using namespace mrolr::recog;
-using namespace mrolr::sim;
 
 namespace
 {
@@ -40,36 +38,31 @@ std::vector<std::tuple<size_t, SetKey, double>> setsOf(const std::vector<CliqueM
 // those found for a clique size of 1 that have that many matches.
 TEST(CliqueMatcher, TheCliqueSizeOnlyFiltersTheSets)
 {
-	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
-	SceneNoise noise;
-	noise.endpoint_sigma_mm = 0.7, noise.fragment_probability = 0.4, noise.missing_fraction = 0.1;
 	size_t kept = 0, dropped = 0;
-	for (const size_t k : {0u, 2u, 5u})
+	const auto check = [&](const std::string& name, const ModelTable& table,
+	                       const std::vector<Feature>& scene)
 	{
-		const ModelTable table(objects[k], opts.auto_clique_count, opts.auto_clique_size,
-		                       opts.auto_cliques, opts.file_cliques);
-		const auto scene =
-		    featuresOf(makeTableScene(objects, static_cast<int>(k), 3, noise, 700 + k).scene);
 		MemberCandidates members(table, scene, loosestTolerance(opts.levels));
 		for (const auto& p : opts.levels)
 		{
 			const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 			LevelParams any = p;
 			any.clique_size = 1;
+			const size_t size = static_cast<size_t>(p.clique_size);
 			for (size_t c = 0; c < table.cliques().size(); ++c)
 				for (MemberCandidates* m : {static_cast<MemberCandidates*>(nullptr), &members})
 				{
 					const auto all = matchClique(table, c, os, any, opts.max_search_nodes, {}, m);
 					const auto sized = matchClique(table, c, os, p, opts.max_search_nodes, {}, m);
-					const size_t size = static_cast<size_t>(p.clique_size);
 					EXPECT_EQ(setsOf(sized, 0), setsOf(all, size))
-					    << objects[k].name << " clique " << c << " size " << p.clique_size;
+					    << name << " clique " << c << " size " << p.clique_size;
 					kept += sized.size();
 					dropped += all.size() - setsOf(all, size).size();
 				}
 		}
-	}
+	};
+	test::forNoisyTableScenes({0, 2, 5}, 700, check);
 	// both kinds occur: sets that reach the size and sets that do not
 	EXPECT_GT(kept, 100u);
 	EXPECT_GT(dropped, 100u);

@@ -2,13 +2,11 @@
 // every level exactly the matches it finds alone.
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/MemberCandidates.h>
-#include <mrolr/sim/SyntheticObjects.h>
-#include <mrolr/sim/SyntheticScene.h>
+#include "noisy_table_scenes.h"
 
 #include <gtest/gtest.h>
 
 using namespace mrolr::recog;
-using namespace mrolr::sim;
 
 namespace
 {
@@ -27,32 +25,27 @@ bool sameMatches(const std::vector<CliqueMatch>& a, const std::vector<CliqueMatc
 // the same matches with and without the shared candidates, and some matches at all.
 TEST(MemberCandidates, EveryLevelFindsTheMatchesItFindsAlone)
 {
-	const auto objects = makeLabObjects();
 	const auto opts = RecognitionOptions::defaults();
-	SceneNoise noise;
-	noise.endpoint_sigma_mm = 0.7, noise.fragment_probability = 0.4, noise.missing_fraction = 0.1;
 	size_t matches = 0;
-	for (const size_t k : {0u, 1u, 5u})
-	{
-		const ModelTable table(objects[k], opts.auto_clique_count, opts.auto_clique_size,
-		                       opts.auto_cliques, opts.file_cliques);
-		const auto scene =
-		    featuresOf(makeTableScene(objects, static_cast<int>(k), 3, noise, 600 + k).scene);
-		MemberCandidates members(table, scene, loosestTolerance(opts.levels));
-		for (const auto& p : opts.levels)
-		{
-			const OrientedScene os = orientScene(scene, p.length_threshold_mm);
-			for (size_t c = 0; c < table.cliques().size(); ++c)
-			{
-				const auto alone = matchClique(table, c, os, p, opts.max_search_nodes);
-				const auto shared =
-				    matchClique(table, c, os, p, opts.max_search_nodes, {}, &members);
-				EXPECT_TRUE(sameMatches(alone, shared))
-				    << objects[k].name << " clique " << c << " beta " << p.position_error_mm;
-				matches += alone.size();
-			}
-		}
-	}
+	test::forNoisyTableScenes(
+	    {0, 1, 5}, 600,
+	    [&](const std::string& name, const ModelTable& table, const std::vector<Feature>& scene)
+	    {
+		    MemberCandidates members(table, scene, loosestTolerance(opts.levels));
+		    for (const auto& p : opts.levels)
+		    {
+			    const OrientedScene os = orientScene(scene, p.length_threshold_mm);
+			    for (size_t c = 0; c < table.cliques().size(); ++c)
+			    {
+				    const auto alone = matchClique(table, c, os, p, opts.max_search_nodes);
+				    const auto shared =
+				        matchClique(table, c, os, p, opts.max_search_nodes, {}, &members);
+				    EXPECT_TRUE(sameMatches(alone, shared))
+				        << name << " clique " << c << " beta " << p.position_error_mm;
+				    matches += alone.size();
+			    }
+		    }
+	    });
 	EXPECT_GT(matches, 100u);
 }
 
