@@ -22,14 +22,17 @@ class ConsistentSetSearch
  public:
 	ConsistentSetSearch(const ModelTable& m, const OrientedScene& s, const Tolerance& t,
 	                    int max_nodes)
-	    : model_(m), scene_(s), tol_(t), budget_(max_nodes)
+	    : model_(m), scene_(s), tol_(t), max_nodes_(max_nodes)
 	{
 	}
 
-	std::vector<std::vector<FeatureMatch>> run(
-	    const FeatureMatch& focus, const std::vector<std::vector<FeatureMatch>>& candidates)
+	/** The largest sets for @p focus among @p candidates (one list per member), each search with
+	 * its own node budget; the search's buffers are kept from one focus match to the next. */
+	std::vector<std::vector<FeatureMatch>> run(const FeatureMatch& focus,
+	                                           std::vector<std::vector<FeatureMatch>>&& candidates)
 	{
-		cands_ = candidates;
+		budget_ = max_nodes_;
+		cands_ = std::move(candidates);
 		std::sort(cands_.begin(), cands_.end(),
 		          [](const auto& a, const auto& b) { return a.size() < b.size(); });
 		first_.clear();
@@ -110,7 +113,8 @@ class ConsistentSetSearch
 	const ModelTable& model_;
 	const OrientedScene& scene_;
 	Tolerance tol_;
-	int budget_;
+	int max_nodes_;
+	int budget_ = 0;
 	std::vector<std::vector<FeatureMatch>> cands_;
 	std::vector<size_t> first_;       ///< index of each member's first candidate
 	size_t pairs_ = 0;                ///< candidates of all members
@@ -234,11 +238,13 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 	// than this have none, no set of the focus reaches clique_size
 	const int spare = static_cast<int>(clique.members.size()) + 1 - p.clique_size;
 	if (spare < 0) return out;
+	ConsistentSetSearch search(model, scene, tol, max_nodes);
+	std::vector<std::vector<FeatureMatch>> cands;
 	for (size_t o : gatedFor(mfocus, scene, p, true))
 	{
 		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;
 		const FeatureMatch focus{clique.focus, o};
-		std::vector<std::vector<FeatureMatch>> cands;
+		cands.clear();
 		int without = 0;
 		for (size_t k = 0; k < clique.members.size() && without <= spare; ++k)
 		{
@@ -249,8 +255,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 			without += cands.back().empty() ? 1 : 0;
 		}
 		if (without > spare) continue;
-		ConsistentSetSearch search(model, scene, tol, max_nodes);
-		for (auto& ms : search.run(focus, cands))
+		for (auto& ms : search.run(focus, std::move(cands)))
 			if (static_cast<int>(ms.size()) >= p.clique_size)
 				out.push_back({clique_index, ms, strengthOf(model, ms)});
 	}
