@@ -124,16 +124,6 @@ class ConsistentSetSearch
 	std::vector<std::vector<FeatureMatch>> best_;
 };
 
-/** Oriented scene features passing member j's unary gate (computed once per clique). */
-std::vector<size_t> gatedFor(const Feature& m, const OrientedScene& scene, const LevelParams& p,
-                             bool focus)
-{
-	std::vector<size_t> out;
-	for (size_t o = 0; o < scene.oriented.size(); ++o)
-		if (passesUnaryGate(m, scene.oriented[o], p, focus)) out.push_back(o);
-	return out;
-}
-
 /** Scene matches of member j (among its gated features) consistent with the focus match. */
 std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
                                            const std::vector<size_t>& gated,
@@ -218,6 +208,15 @@ bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, b
 	return std::abs(s.a_mm - m.a_mm) <= rtol && std::abs(s.b_mm - m.b_mm) <= rtol;
 }
 
+std::vector<size_t> passingUnaryGate(const Feature& m, const std::vector<Feature>& oriented,
+                                     const LevelParams& p, bool focus)
+{
+	std::vector<size_t> out;
+	for (size_t o = 0; o < oriented.size(); ++o)
+		if (passesUnaryGate(m, oriented[o], p, focus)) out.push_back(o);
+	return out;
+}
+
 std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_index,
                                      const OrientedScene& scene, const LevelParams& p,
                                      int max_nodes, const FocusFilter& focus_ok,
@@ -232,7 +231,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 		kept_index = keptIndex(scene, members->sceneSize());
 	else
 		for (size_t j : clique.members)
-			gated.push_back(gatedFor(model.features()[j], scene, p, false));
+			gated.push_back(passingUnaryGate(model.features()[j], scene.oriented, p, false));
 	std::vector<CliqueMatch> out;
 	// a set has the focus and at most one match per member with candidates: once more members
 	// than this have none, no set of the focus reaches clique_size
@@ -240,7 +239,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 	if (spare < 0) return out;
 	ConsistentSetSearch search(model, scene, tol, max_nodes);
 	std::vector<std::vector<FeatureMatch>> cands;
-	for (size_t o : gatedFor(mfocus, scene, p, true))
+	for (size_t o : passingUnaryGate(mfocus, scene.oriented, p, true))
 	{
 		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;
 		const FeatureMatch focus{clique.focus, o};

@@ -32,14 +32,14 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	const Feature& sa = oriented_[o_focus];
 	// consistent()'s first test on the packed directions: most pairs fail it
 	const CosineRange angle = cosineRange(rel, loosest_);
-	for (const std::uint32_t o : gatedFor(member))
+	for (const size_t o : gatedFor(member))
 		if (angle.contains(sa.u.dot(u_[o])) &&
 		    consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
-			it->second.push_back(o);
+			it->second.push_back(static_cast<std::uint32_t>(o));
 	return it->second;
 }
 
-const std::vector<std::uint32_t>& MemberCandidates::gatedFor(size_t member)
+const std::vector<size_t>& MemberCandidates::gatedFor(size_t member)
 {
 	const auto [it, fresh] = gated_.try_emplace(member);
 	if (!fresh) return it->second;
@@ -47,9 +47,7 @@ const std::vector<std::uint32_t>& MemberCandidates::gatedFor(size_t member)
 	// (a member's gate has no length ratio: that is the focus's)
 	LevelParams loosest;
 	loosest.position_error_mm = loosest_.beta_mm;
-	const Feature& m = model_.features()[member];
-	for (std::uint32_t o = 0; o < oriented_.size(); ++o)
-		if (passesUnaryGate(m, oriented_[o], loosest, false)) it->second.push_back(o);
+	it->second = passingUnaryGate(model_.features()[member], oriented_, loosest, false);
 	return it->second;
 }
 

@@ -54,7 +54,8 @@ SelfOcclusion::SelfOcclusion(const std::vector<Feature>& features_O, double marg
 {
 	if (directions > static_cast<int>(View::kMaxFaces))
 		throw std::invalid_argument("SelfOcclusion: " + std::to_string(directions) +
-		                            " face directions, at most 128");
+		                            " face directions, at most " +
+		                            std::to_string(View::kMaxFaces));
 	for (const auto& n : normals_) nx_.push_back(n.x()), ny_.push_back(n.y()), nz_.push_back(n.z());
 	if (bodies_.size() > 64)
 		throw std::invalid_argument("SelfOcclusion: " + std::to_string(bodies_.size()) +

@@ -50,6 +50,11 @@ struct CliqueMatch
  * at least length_ratio times it; conic radii within 2 beta + 5 %. */
 bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus);
 
+/** The indices of the features of @p oriented that pass model feature @p m's unary gate at @p p
+ * (passesUnaryGate), increasing. */
+std::vector<size_t> passingUnaryGate(const Feature& m, const std::vector<Feature>& oriented,
+                                     const LevelParams& p, bool focus);
+
 /** Says whether a focus match (model feature index, index into OrientedScene::features) is worth
  * searching; empty = every one. */
 using FocusFilter = std::function<bool(size_t model_focus, size_t scene_feature)>;

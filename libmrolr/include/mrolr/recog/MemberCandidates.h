@@ -39,8 +39,8 @@ class MemberCandidates
 	Tolerance loosest_;
 	std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> lists_;
 	/** Per model feature: the oriented scene features passing its gate (on first use). */
-	std::unordered_map<size_t, std::vector<std::uint32_t>> gated_;
-	const std::vector<std::uint32_t>& gatedFor(size_t member);
+	std::unordered_map<size_t, std::vector<size_t>> gated_;
+	const std::vector<size_t>& gatedFor(size_t member);
 };
 
 /** The largest position error and rotation of @p levels, widened by 1e-6 mm and 1e-6 rad so that
