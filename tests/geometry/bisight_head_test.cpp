@@ -2,6 +2,7 @@
 #include <mrolr/geometry/BiSightHead.h>
 
 #include "geometry_test_util.h"
+#include "../common/ThrownMessage.h"
 
 #include <gtest/gtest.h>
 
@@ -14,15 +15,7 @@ namespace
 {
 std::string messageOf(const BiSightHead& head, const Eigen::Vector3d& p)
 {
-	try
-	{
-		head.fixate(p);
-	}
-	catch (const FixationError& e)
-	{
-		return e.what();
-	}
-	return "no error";
+	return mrolr::test_support::messageOf<FixationError>([&] { head.fixate(p); }, "no error");
 }
 }  // namespace
 

@@ -4,6 +4,8 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -33,16 +35,10 @@ std::string sectionWith(const std::string& key, const std::string& line)
 
 std::string errorOf(const std::string& text)
 {
-	try
-	{
-		BiSightOptions o;
-		o.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "bisight");
-	}
-	catch (const ConfigError& e)
-	{
-		return e.what();
-	}
-	return "no error";
+	BiSightOptions o;
+	return mrolr::test_support::messageOf<ConfigError>(
+	    [&] { o.loadFromConfigFile(mrpt::config::CConfigFileMemory(text), "bisight"); },
+	    "no error");
 }
 }  // namespace
 

@@ -2,6 +2,7 @@
 // the errors when a camera is missing or its section is wrong.
 #include "CameraTestUtil.h"
 #include "ExpectSerialError.h"
+#include "../common/ThrownMessage.h"
 
 #include <mrolr/hw_serial/CameraSensorStereo.h>
 #include <mrolr/hw_serial/CameraServer.h>
@@ -72,16 +73,10 @@ mrpt::config::CConfigFileMemory stereoConfig(const std::string& dir)
 /** The ConfigError's message, or a failure when none was thrown. */
 std::string configError(const mrpt::config::CConfigFileBase& cfg)
 {
-	try
-	{
-		hw_serial::CameraSensorStereo cameras(cfg);
-	}
-	catch (const util::ConfigError& e)
-	{
-		return e.what();
-	}
-	ADD_FAILURE() << "no ConfigError";
-	return {};
+	const std::string what = test_support::messageOf<util::ConfigError>(
+	    [&] { hw_serial::CameraSensorStereo cameras(cfg); });
+	if (what.empty()) ADD_FAILURE() << "no ConfigError";
+	return what;
 }
 
 bool has(const std::string& text, const std::string& part)

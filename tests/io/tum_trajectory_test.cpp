@@ -1,6 +1,8 @@
 // TUM trajectories (io/TumTrajectory.h): MRPT's axes, a lossless round trip, errors named.
 #include <mrolr/io/TumTrajectory.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,15 +28,7 @@ void writeText(const std::string& path, const std::string& text)
 
 std::string errorOf(const std::function<void()>& f)
 {
-	try
-	{
-		f();
-	}
-	catch (const std::exception& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<std::exception>(f);
 }
 }  // namespace
 

@@ -1,6 +1,7 @@
 // A recording answers a replay with exactly what the devices answered, faults included, and never
 // answers what it does not hold.
 #include "MissionTestConfig.h"
+#include "../common/ThrownMessage.h"
 
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/hw_serial/SerialError.h>
@@ -106,15 +107,7 @@ std::vector<double> session(mission::RobotDevices d, std::atomic<bool>* stop_see
 template <typename E>
 std::string thrownBy(const std::function<void()>& f)
 {
-	try
-	{
-		f();
-	}
-	catch (const E& e)
-	{
-		return e.what();
-	}
-	return "nothing thrown";
+	return mrolr::test_support::messageOf<E>(f, "nothing thrown");
 }
 }  // namespace
 

@@ -1,5 +1,6 @@
 // The mission configuration is checked before anything moves, and errors name section and key.
 #include "MissionTestConfig.h"
+#include "../common/ThrownMessage.h"
 
 #include <mrolr/util/Config.h>
 
@@ -18,15 +19,7 @@ namespace
 std::string errorOf(const mrpt::config::CConfigFileBase& cfg,
                     const MissionOptions::PlanChoice& plan = {})
 {
-	try
-	{
-		test::optionsFrom(cfg, plan);
-	}
-	catch (const std::exception& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<std::exception>([&] { test::optionsFrom(cfg, plan); });
 }
 
 void expectError(const std::string& section, const std::string& key, const std::string& value,

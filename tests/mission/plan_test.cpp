@@ -2,6 +2,8 @@
 // included; overrides replace keys; a malformed line names file, line, section and key.
 #include <mrolr/mission/Plan.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -87,15 +89,8 @@ TEST(Plan, MalformedEntriesNameFileLineSectionAndKey)
 	auto errorOf = [&](const std::string& text)
 	{
 		std::ofstream(dir / "plan.ini") << text;
-		try
-		{
-			Plan::load((dir / "plan.ini").string());
-		}
-		catch (const std::exception& e)
-		{
-			return std::string(e.what());
-		}
-		return std::string();
+		return mrolr::test_support::messageOf<std::exception>(
+		    [&] { Plan::load((dir / "plan.ini").string()); });
 	};
 	const std::string head = "[plan]\nroute = A\nstations = A\nhome = A\n[waypoints]\n";
 	EXPECT_NE(errorOf(head + "A = 0 0\n").find("plan.ini:6 [waypoints] A"), std::string::npos);

@@ -4,6 +4,8 @@
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -54,15 +56,8 @@ std::string errorFor(const std::string& from, const std::string& to)
 	text.replace(pos, from.size(), to);
 	mrpt::config::CConfigFileMemory cfg(text);
 	RecognitionOptions r;
-	try
-	{
-		r.loadFromConfigFile(cfg, "recognition");
-	}
-	catch (const mrolr::util::ConfigError& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<mrolr::util::ConfigError>(
+	    [&] { r.loadFromConfigFile(cfg, "recognition"); });
 }
 }  // namespace
 

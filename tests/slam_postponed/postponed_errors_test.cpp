@@ -2,6 +2,8 @@
 
 #include <mrolr/slam/PostponedTracker.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -11,19 +13,7 @@ using mrolr::slam::PostponedTracker33;
 
 namespace
 {
-template <class E, class F>
-std::string messageOf(F f)
-{
-	try
-	{
-		f();
-	}
-	catch (const E& e)
-	{
-		return e.what();
-	}
-	return "(no exception)";
-}
+using mrolr::test_support::messageOf;
 
 struct Small
 {

@@ -1,6 +1,7 @@
 // A configuration file with base files (util/ConfigFile.h): the file's keys laid over its base's,
 // errors naming the file that gave a key, loops and missing bases refused by name.
 #include "../common/FreshTempDir.h"
+#include "../common/ThrownMessage.h"
 
 #include <mrolr/util/Config.h>
 #include <mrolr/util/ConfigFile.h>
@@ -20,15 +21,7 @@ void write(const std::string& path, const std::string& text)
 
 std::string errorOf(const std::string& path)
 {
-	try
-	{
-		ConfigFile::load(path);
-	}
-	catch (const ConfigError& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<ConfigError>([&] { ConfigFile::load(path); });
 }
 }  // namespace
 

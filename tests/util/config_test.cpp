@@ -1,6 +1,8 @@
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -25,15 +27,7 @@ mrpt::config::CConfigFileMemory makeCfg()
 
 std::string errorOf(const std::function<void()>& f)
 {
-	try
-	{
-		f();
-	}
-	catch (const ConfigError& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<ConfigError>(f);
 }
 }  // namespace
 

@@ -4,6 +4,8 @@
 
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -51,15 +53,8 @@ const std::string kGood =
 std::string errorOf(const std::string& text)
 {
 	Demo d;
-	try
-	{
-		binder().load(mrpt::config::CConfigFileMemory(text), "d", d);
-	}
-	catch (const ConfigError& e)
-	{
-		return e.what();
-	}
-	return "";
+	return mrolr::test_support::messageOf<ConfigError>(
+	    [&] { binder().load(mrpt::config::CConfigFileMemory(text), "d", d); });
 }
 }  // namespace
 

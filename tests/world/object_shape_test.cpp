@@ -1,5 +1,7 @@
 #include <mrolr/world/ObjectShape.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -38,15 +40,8 @@ TEST(ObjectShape, ErrorsNameSectionAndKey)
 {
 	auto err = [](const std::string& text)
 	{
-		try
-		{
-			ObjectShape::parse(text, "obj.ini");
-		}
-		catch (const WorldError& e)
-		{
-			return std::string(e.what());
-		}
-		return std::string("no error");
+		return mrolr::test_support::messageOf<WorldError>(
+		    [&] { ObjectShape::parse(text, "obj.ini"); }, "no error");
 	};
 	EXPECT_NE(err("[object]\nname = x\n[part.a]\ntype = sphere\nbase_mm = 0 0 0\n")
 	              .find("obj.ini:4 [part.a] type = 'sphere'"),

@@ -1,5 +1,7 @@
 #include <mrolr/world/World.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,15 +25,8 @@ W0 = -1, 1, -90
 
 std::string errorOf(const std::string& text)
 {
-	try
-	{
-		World::parse(text, "bad.ini");
-	}
-	catch (const WorldError& e)
-	{
-		return e.what();
-	}
-	return "no error";
+	return mrolr::test_support::messageOf<WorldError>([&] { World::parse(text, "bad.ini"); },
+	                                                  "no error");
 }
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include <mrolr/world/World.h>
 
+#include "../common/ThrownMessage.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,15 +27,8 @@ size_m = 1.0 0.8 0.75
 
 std::string errorOf(const std::string& extra)
 {
-	try
-	{
-		World::parse(std::string(kBase) + extra, "lab.ini");
-	}
-	catch (const WorldError& e)
-	{
-		return e.what();
-	}
-	return "no error";
+	return mrolr::test_support::messageOf<WorldError>(
+	    [&] { World::parse(std::string(kBase) + extra, "lab.ini"); }, "no error");
 }
 }  // namespace
 
