@@ -1,7 +1,11 @@
 // eval's verdict on a robot's report: success only when the robot claimed it and the truth agrees;
-// the truth read back from T.json as written; a malformed T.json names the field.
+// the object's rotation error modulo its symmetries; the truth read back from T.json as written;
+// a malformed T.json names the field.
 #include <mrolr/eval/MissionEval.h>
+#include <mrolr/geometry/Frames.h>
 #include <mrolr/mission/MissionOutputs.h>
+
+#include "../common/ThrownMessage.h"
 
 #include <gtest/gtest.h>
 
@@ -113,4 +117,56 @@ TEST(MissionEval, TJsonReadsBackAndAMalformedOneNamesTheField)
 		EXPECT_NE(std::string(e.what()).find("T.json: missing field 'x_m'"), std::string::npos)
 		    << e.what();
 	}
+}
+
+namespace
+{
+/** In mm: a pose in metres with its translation scaled. */
+Eigen::Isometry3d inMm(Eigen::Isometry3d T_m)
+{
+	T_m.translation() *= 1000.0;
+	return T_m;
+}
+
+/** The object's rotation error in a report that found it turned by @p turn_deg about its own z,
+ * when its shape has the turns @p symmetry_deg. */
+double rotationErrorFor(double turn_deg, const std::vector<double>& symmetry_deg)
+{
+	Eigen::Isometry3d T_OinW = Eigen::Isometry3d::Identity();  // W: y up; O: z up
+	T_OinW.translation() = Eigen::Vector3d(0.1, 0.8, 1.5);
+	T_OinW.linear() = (Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()) *
+	                   Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()))
+	                      .toRotationMatrix();
+	const Eigen::Isometry3d T_C0inW = geometry::T_C0inW(Eigen::Vector3d::Zero(), 1.0);
+	const Eigen::Isometry3d T_OinC0 =
+	    inMm(T_C0inW).inverse() * inMm(T_OinW) *
+	    Eigen::AngleAxisd(turn_deg * M_PI / 180, Eigen::Vector3d::UnitZ());
+	auto r = claimedSuccess();
+	r["found"] = true;
+	r["target"] = "can";
+	r["robot"]["recognition"] = {{"frame", nullptr},
+	                             {"search_estimate_zxphi", {0.0, 0.0, 0.0}},
+	                             {"T_OinC0_mm", mission::matrix34(T_OinC0)}};
+	auto t = truthAt(0.0, "");
+	t.objects.push_back({"can_1", "can", T_OinW, T_OinW, symmetry_deg});
+	eval::evaluateMission(r, eval::truthFromJson(eval::truthJson(t), "T.json"));
+	EXPECT_EQ(r["found_instance"], "can_1");
+	EXPECT_NEAR(r["object_translation_error_mm"].get<double>(), 0, 1e-9);
+	EXPECT_EQ(r["eval"]["object_symmetry_deg"].get<std::vector<double>>(), symmetry_deg);
+	return r["object_rotation_error_deg"].get<double>();
+}
+}  // namespace
+
+TEST(MissionEval, AnObjectsRotationErrorIsTakenModuloTheTurnsThatMapItOntoItself)
+{
+	EXPECT_NEAR(rotationErrorFor(70, {-1}), 0, 1e-6);  // a body of revolution: any turn
+	EXPECT_NEAR(rotationErrorFor(70, {0}), 70, 1e-6);
+	EXPECT_NEAR(rotationErrorFor(180, {0, 180}), 0, 1e-6);
+	EXPECT_NEAR(rotationErrorFor(170, {0, 180}), 10, 1e-6);
+	json bad = eval::truthJson(truthAt(0.0, ""));
+	bad["objects"][0]["symmetry_deg"] = "none";
+	EXPECT_NE(test_support::messageOf<std::runtime_error>(
+	              [&] { eval::truthFromJson(bad, "T.json"); })
+	              .find("T.json: field 'symmetry_deg' is not a list of angles"),
+	          std::string::npos);
 }

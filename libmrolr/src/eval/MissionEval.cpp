@@ -1,6 +1,7 @@
 // The robot's report against the truth: home, held object, recognised pose, NEES, collisions.
 #include <mrolr/base/TrajectoryPlanner.h>
 #include <mrolr/eval/MissionEval.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/slam/Chi2.h>
@@ -112,6 +113,7 @@ struct Match
 	Eigen::Isometry3d T_true = Eigen::Isometry3d::Identity();
 	double translation_mm = std::numeric_limits<double>::infinity(), rotation_deg = 0;
 	bool in_C0 = false;
+	std::vector<double> symmetry_deg;  ///< the object's, which rotation_deg is taken modulo
 };
 
 Match matchObject(const json& r, const MissionTruth& t)
@@ -134,8 +136,9 @@ Match matchObject(const json& r, const MissionTruth& t)
 			T_true = mm(o.T_OinW_start), T_est = T_C0inW_est * T_OinC0;
 		const double d = (T_true.translation() - T_est.translation()).norm();
 		if (d >= best.translation_mm) continue;
-		best = {o.name, T_true, d, angleDeg(T_true.linear().transpose() * T_est.linear()),
-		        frame != nullptr};
+		best = {o.name, T_true, d,
+		        rotationErrorDeg(T_true.linear(), T_est.linear(), o.symmetry_deg),
+		        frame != nullptr, o.symmetry_deg};
 	}
 	return best;
 }
@@ -222,6 +225,7 @@ void objectErrors(json& r, const MissionTruth& t)
 	r["found_instance"] = m.instance;
 	r["object_translation_error_mm"] = m.translation_mm;
 	r["object_rotation_error_deg"] = m.rotation_deg;
+	r["eval"]["object_symmetry_deg"] = m.symmetry_deg;
 	r["eval"]["object_pose_frame"] = m.in_C0 ? "C0 at the recognising frame" : "W";
 	if (m.in_C0) r["recognition"]["T_OinC0_true_mm"] = mission::matrix34(m.T_true);
 	if (m.in_C0) tablePlaneError(r, m, t);

@@ -1,7 +1,10 @@
 // The world's truth after a run: from the lab, to and from T.json.
 #include <mrolr/eval/MissionTruth.h>
+#include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/mission/MissionOutputs.h>
+#include <mrolr/sim/ObjectWireFrame.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrolr::eval
@@ -35,6 +38,15 @@ Eigen::Isometry3d transform(const json& j, const char* key, const std::string& s
 		throw std::runtime_error(source + ": field '" + key + "': " + e.what());
 	}
 }
+/** An object's symmetry_deg: a non-empty list of numbers. */
+std::vector<double> anglesOf(const json& j, const std::string& source)
+{
+	const bool ok = j.is_array() && !j.empty() &&
+	                std::all_of(j.begin(), j.end(), [](const json& a) { return a.is_number(); });
+	if (!ok) throw std::runtime_error(source + ": field 'symmetry_deg' is not a list of angles");
+	return j.get<std::vector<double>>();
+}
+
 sim::GripperEvent::Kind kindNamed(const std::string& name, const std::string& source)
 {
 	using K = sim::GripperEvent::Kind;
@@ -69,7 +81,12 @@ MissionTruth truthOf(const sim::Lab& lab)
 	t.final_zxphi = lab.truePose();
 	const auto start = sim::placedObjectPoses(lab.options().world);
 	for (const auto& [name, T] : lab.objectPoses())
+	{
 		t.objects.push_back({name, lab.modelOf(name), start.at(name), T});
+		const auto shape = lab.shapes().find(t.objects.back().model);
+		if (shape != lab.shapes().end())
+			t.objects.back().symmetry_deg = symmetryAnglesDeg(sim::objectWireFrame(shape->second));
+	}
 	t.held = lab.held();
 	t.on_board.assign(lab.onBoard().begin(), lab.onBoard().end());
 	t.gripper_events = lab.gripperEvents();
@@ -120,7 +137,8 @@ json truthJson(const MissionTruth& t)
 		objects.push_back({{"name", o.name},
 		                   {"model", o.model},
 		                   {"T_OinW", mission::matrix34(o.T_OinW)},
-		                   {"T_OinW_start", mission::matrix34(o.T_OinW_start)}});
+		                   {"T_OinW_start", mission::matrix34(o.T_OinW_start)},
+		                   {"symmetry_deg", o.symmetry_deg}});
 	json contact = nullptr;
 	if (t.contact)
 		contact = {{"what", t.contact->what}, {"z_m", t.contact->p_zx.x()}, {"x_m", t.contact->p_zx.y()}};
@@ -152,6 +170,7 @@ MissionTruth truthFromJson(const json& j, const std::string& source)
 		ot.model = o.contains("model") ? o.at("model").get<std::string>() : "";
 		ot.T_OinW = transform(o, "T_OinW", source);
 		ot.T_OinW_start = o.contains("T_OinW_start") ? transform(o, "T_OinW_start", source) : ot.T_OinW;
+		if (o.contains("symmetry_deg")) ot.symmetry_deg = anglesOf(o.at("symmetry_deg"), source);
 		t.objects.push_back(ot);
 	}
 	const json& held = field(j, "held", source);

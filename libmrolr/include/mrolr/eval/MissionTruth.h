@@ -19,6 +19,9 @@ struct ObjectTruth
 	std::string name, model;
 	Eigen::Isometry3d T_OinW_start = Eigen::Isometry3d::Identity();  ///< where the world put it
 	Eigen::Isometry3d T_OinW = Eigen::Isometry3d::Identity();        ///< at the end
+	/** The turns about O's z that map the object's shape onto itself, in degrees ({-1}: every
+	 * angle, a body of revolution; symmetryAnglesDeg): a pose error is taken modulo them. */
+	std::vector<double> symmetry_deg = {0};
 };
 
 struct ContactTruth
@@ -49,9 +52,10 @@ struct MissionTruth
 /** The truth of @p lab now (after the run). */
 MissionTruth truthOf(const sim::Lab& lab);
 /** T.json: `{"vehicle": {"z_m", "x_m", "phi_deg"}, "objects": [{"name", "model", "T_OinW",
- * "T_OinW_start"}], "held": NAME or null, "on_board": [NAME…], "contact": {"what", "z_m", "x_m"} or null,
- * "gripper_events": [{"kind", "object", "detail"}], "frames": [{"frame", "T_C0inW", "objects":
- * {NAME: T_OinW}}]}` ("on_board", "gripper_events" and "frames" optional on reading). */
+ * "T_OinW_start", "symmetry_deg"}], "held": NAME or null, "on_board": [NAME…], "contact":
+ * {"what", "z_m", "x_m"} or null, "gripper_events": [{"kind", "object", "detail"}], "frames":
+ * [{"frame", "T_C0inW", "objects": {NAME: T_OinW}}]}` ("on_board", "gripper_events", "frames"
+ * and an object's "symmetry_deg" optional on reading). */
 nlohmann::json truthJson(const MissionTruth& t);
 /** The gripper's events as a JSON list of {"kind", "object", "detail"}. */
 nlohmann::json gripperEventsJson(const std::vector<sim::GripperEvent>& events);
