@@ -3,6 +3,7 @@
 // a malformed T.json names the field.
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/mission/MissionOutputs.h>
 
 #include "../common/ThrownMessage.h"
@@ -121,13 +122,6 @@ TEST(MissionEval, TJsonReadsBackAndAMalformedOneNamesTheField)
 
 namespace
 {
-/** In mm: a pose in metres with its translation scaled. */
-Eigen::Isometry3d inMm(Eigen::Isometry3d T_m)
-{
-	T_m.translation() *= 1000.0;
-	return T_m;
-}
-
 /** The object's rotation error in a report that found it turned by @p turn_deg about its own z,
  * when its shape has the turns @p symmetry_deg. */
 double rotationErrorFor(double turn_deg, const std::vector<double>& symmetry_deg)
@@ -139,7 +133,7 @@ double rotationErrorFor(double turn_deg, const std::vector<double>& symmetry_deg
 	                      .toRotationMatrix();
 	const Eigen::Isometry3d T_C0inW = geometry::T_C0inW(Eigen::Vector3d::Zero(), 1.0);
 	const Eigen::Isometry3d T_OinC0 =
-	    inMm(T_C0inW).inverse() * inMm(T_OinW) *
+	    geometry::inMm(T_C0inW).inverse() * geometry::inMm(T_OinW) *
 	    Eigen::AngleAxisd(turn_deg * M_PI / 180, Eigen::Vector3d::UnitZ());
 	auto r = claimedSuccess();
 	r["found"] = true;

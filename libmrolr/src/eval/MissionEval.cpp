@@ -1,5 +1,6 @@
 // The robot's report against the truth: home, held object, recognised pose, NEES, collisions.
 #include <mrolr/base/TrajectoryPlanner.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/geometry/Frames.h>
@@ -36,11 +37,6 @@ Eigen::Matrix3d mat3(const json& m)
 	return M;
 }
 
-Eigen::Isometry3d mm(Eigen::Isometry3d T_m)
-{
-	T_m.translation() *= 1000.0;
-	return T_m;
-}
 
 double angleDeg(const Eigen::Matrix3d& R)
 {
@@ -124,16 +120,17 @@ Match matchObject(const json& r, const MissionTruth& t)
 	const double h = need(need(r, "robot"), "head_height_m").get<double>();
 	const auto* frame = frameOf(t, rec);
 	const Eigen::Isometry3d T_C0inW_est =
-	    mm(geometry::T_C0inW(vec3(need(rec, "search_estimate_zxphi")), h));
+	    geometry::inMm(geometry::T_C0inW(vec3(need(rec, "search_estimate_zxphi")), h));
 	Match best;
 	for (const auto& o : t.objects)
 	{
 		if (o.model != target) continue;
 		Eigen::Isometry3d T_true, T_est;
 		if (frame)  // both in C0 at the recognising frame
-			T_true = mm(frame->T_C0inW.inverse() * frame->T_OinW.at(o.name)), T_est = T_OinC0;
+			T_true = geometry::inMm(frame->T_C0inW.inverse() * frame->T_OinW.at(o.name)),
+			T_est = T_OinC0;
 		else  // both in W, the estimate through the robot's own pose estimate
-			T_true = mm(o.T_OinW_start), T_est = T_C0inW_est * T_OinC0;
+			T_true = geometry::inMm(o.T_OinW_start), T_est = T_C0inW_est * T_OinC0;
 		const double d = (T_true.translation() - T_est.translation()).norm();
 		if (d >= best.translation_mm) continue;
 		best = {o.name, T_true, d,
@@ -154,7 +151,7 @@ void retrievalErrors(json& r, const Match& m, const MissionTruth& t)
 	{
 		const auto* fr = frameOf(t, g);
 		if (!fr) return;
-		T_true = mm(fr->T_C0inW.inverse() * fr->T_OinW.at(m.instance));
+		T_true = geometry::inMm(fr->T_C0inW.inverse() * fr->T_OinW.at(m.instance));
 	}
 	const auto first = mission::isometryFrom(need(g, "T_OinC0_first_mm"));
 	g["object_error_before_mm"] = (first.translation() - T_true.translation()).norm();

@@ -1,5 +1,6 @@
 // mission.3Dscene: the run in 3D for SceneViewer3D.
 #include <mrolr/arm/RtxKinematics.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/eval/MissionOutputs.h>
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/model/ModelRender.h>
@@ -18,12 +19,6 @@ namespace mrolr::eval
 namespace
 {
 using mission::MappedLandmark;
-
-Eigen::Isometry3d metres(Eigen::Isometry3d T_mm)
-{
-	T_mm.translation() /= 1000.0;
-	return T_mm;
-}
 
 mrpt::opengl::CSetOfLines::Ptr pathLines(const std::vector<Eigen::Vector3d>& path, float r,
                                          float g, float b, const std::string& name)
@@ -88,7 +83,7 @@ void addRecognisedAndArm(mrpt::opengl::COpenGLScene& scene, const mission::Missi
 	    model::loadWireFrame((std::filesystem::path(o.models_dir) / (o.target + ".wf")).string()));
 	obj->setScale(0.001f);  // the model is in mm
 	obj->setName("recognised." + r.target);
-	obj->setPose(geometry::poseToMrpt(T_C0inW * metres(r.search.T_OinC0_mm)));
+	obj->setPose(geometry::poseToMrpt(T_C0inW * geometry::inMetres(r.search.T_OinC0_mm)));
 	scene.insert(obj);
 	if (!r.retrieval.attempted) return;
 	arm::RtxKinematics kin(o.rtx);
@@ -96,7 +91,7 @@ void addRecognisedAndArm(mrpt::opengl::COpenGLScene& scene, const mission::Missi
 	auto gl = mrpt::opengl::CSetOfObjects::Create();
 	chain.getAs3DObject(gl);
 	gl->setName("arm");
-	gl->setPose(geometry::poseToMrpt(T_C0inW * metres(o.dock.T_C0inA).inverse()));
+	gl->setPose(geometry::poseToMrpt(T_C0inW * geometry::inMetres(o.dock.T_C0inA).inverse()));
 	scene.insert(gl);
 }
 }  // namespace

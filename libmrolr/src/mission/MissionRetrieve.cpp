@@ -1,6 +1,7 @@
 // The mission's retrieval stage: docking where the arm reaches, calibrating the dock, grasping.
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/geometry/GeometryError.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include "MissionImpl.h"
 #include <mrolr/mission/DecisionLog.h>
 
@@ -13,9 +14,7 @@ namespace mrolr::mission
 Eigen::Isometry3d Mission::Impl::predictedInC0(const Eigen::Isometry3d& T_OinW_m,
                                                const Eigen::Vector3d& xv) const
 {
-	Eigen::Isometry3d T = geometry::T_C0inW(xv, o.bisight.head_height_m).inverse() * T_OinW_m;
-	T.translation() *= 1000.0;
-	return T;
+	return geometry::inMm(geometry::T_C0inW(xv, o.bisight.head_height_m).inverse() * T_OinW_m);
 }
 
 /** True when the base at @p xv could turn without meeting the plan's walls (no walls: true). */
@@ -29,9 +28,7 @@ bool Mission::Impl::clearOfWalls(const Eigen::Vector3d& xv) const
 Eigen::Isometry3d Mission::Impl::inW(const Eigen::Isometry3d& T_OinC0_mm,
                                      const Eigen::Vector3d& xv) const
 {
-	Eigen::Isometry3d T = T_OinC0_mm;
-	T.translation() /= 1000.0;
-	return geometry::T_C0inW(xv, o.bisight.head_height_m) * T;
+	return geometry::T_C0inW(xv, o.bisight.head_height_m) * geometry::inMetres(T_OinC0_mm);
 }
 
 void Mission::Impl::retrieve()

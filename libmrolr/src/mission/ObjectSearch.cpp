@@ -1,5 +1,6 @@
 // The pan sweep at a station and recognition in each view (thesis 6.4, 7.2.2).
 #include <mrolr/geometry/GeometryError.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/mission/DockPlanner.h>
 #include <mrolr/mission/ObjectSearch.h>
 #include <mrolr/mission/TableCoverage.h>
@@ -13,12 +14,6 @@ namespace mrolr::mission
 {
 namespace
 {
-Eigen::Isometry3d toMm(Eigen::Isometry3d T)
-{
-	T.translation() *= 1000.0;
-	return T;
-}
-
 /** Mean of the line endpoints and conic centres (the frame of @p wf). */
 Eigen::Vector3d centreOf(const model::WireFrame& wf)
 {
@@ -108,7 +103,7 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	// C0 stands level on the base: its +y is the scene's up (upright prior, expected-visible
 	// verification; docs/recog.md).
 	const Eigen::Vector3d up_L = head_.up_L(angles);
-	const Eigen::Isometry3d T_LinC0_mm = toMm(head_.T_LinC0(angles));
+	const Eigen::Isometry3d T_LinC0_mm = geometry::inMm(head_.T_LinC0(angles));
 	r.table_plane = recog::estimateTablePlane(view.scene, up_L, expectedTableHeights_mm(T_LinC0_mm));
 	r.table_plane_C0 = planeInC0(r.table_plane.plane, T_LinC0_mm);
 	recog::SceneContext context;

@@ -1,5 +1,6 @@
 // The gripper against the world's objects and tables: pushes, falls, a grip that must fit.
 #include <mrolr/sim/GripperPhysics.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/util/OptionsBinder.h>
 
 #include <algorithm>
@@ -31,11 +32,6 @@ std::string mm(double v)
 	return buf;
 }
 
-Eigen::Isometry3d toMm(Eigen::Isometry3d T)
-{
-	T.translation() *= 1000.0;
-	return T;
-}
 
 /** The horizontal part of @p v. */
 Eigen::Vector3d horizontal(Eigen::Vector3d v)
@@ -143,7 +139,7 @@ std::vector<Eigen::Vector3d> GripperPhysics::inside(const std::string& name,
 	const double reach_m = 1e-3 * (shape.heightMm() + 2 * jaws_.opening_mm + jaws_.finger_length_mm);
 	std::vector<Eigen::Vector3d> out;
 	if ((T_OinW.translation() - T_GinW.translation()).norm() > reach_m + 0.3) return out;
-	const Eigen::Isometry3d T_GinO_mm = toMm(T_OinW.inverse(Eigen::Isometry) * T_GinW);
+	const Eigen::Isometry3d T_GinO_mm = geometry::inMm(T_OinW.inverse(Eigen::Isometry) * T_GinW);
 	for (const auto& p_G : points_G)
 		if (const Eigen::Vector3d p_O = T_GinO_mm * p_G; insideShape(shape, p_O))
 			out.push_back(T_OinW * (p_O / 1000.0));
@@ -291,7 +287,8 @@ GripperPhysics::Grip GripperPhysics::close(const Eigen::Isometry3d& T_GinW)
 	double best_d = 1e9, best_width = 0;
 	for (const auto& [name, T_OinW] : objects_)
 	{
-		const Eigen::Isometry3d T_OinG_mm = toMm(T_GinW.inverse(Eigen::Isometry) * T_OinW);
+		const Eigen::Isometry3d T_OinG_mm =
+		    geometry::inMm(T_GinW.inverse(Eigen::Isometry) * T_OinW);
 		const double w = jawWidthMm(shapeOf(name), T_OinG_mm, jaws_);
 		if (w <= 0 || !inside(name, T_GinW, open).empty()) continue;  // between the jaws, untouched
 		if (const double d = T_OinG_mm.translation().norm(); d < best_d)
@@ -299,7 +296,7 @@ GripperPhysics::Grip GripperPhysics::close(const Eigen::Isometry3d& T_GinW)
 	}
 	if (best.empty()) return {};
 	Eigen::Isometry3d T_OinG = T_GinW.inverse(Eigen::Isometry) * objects_.at(best);
-	const double across = widthAcrossMm(shapeOf(best), toMm(T_OinG), jaws_);
+	const double across = widthAcrossMm(shapeOf(best), geometry::inMm(T_OinG), jaws_);
 	if (best_width < across - o_.compliance_mm)
 	{
 		// the jaws close on a chord: the object is squeezed out along the approach axis

@@ -1,5 +1,6 @@
 // The simulated lab: devices for the robot, truth for eval.
 #include <mrolr/arm/RtxKinematics.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/geometry/Frames.h>
 #include <mrolr/sim/Lab.h>
 #include <mrolr/sim/Placement.h>
@@ -11,12 +12,6 @@ namespace mrolr::sim
 {
 namespace
 {
-Eigen::Isometry3d metres(Eigen::Isometry3d T_mm)
-{
-	T_mm.translation() /= 1000.0;
-	return T_mm;
-}
-
 /** The nominal mount off by one draw of the dock's error (SimArmOptions::mount_error_*). */
 Eigen::Isometry3d dockedMount(const LabOptions& o)
 {
@@ -78,7 +73,7 @@ Lab::Lab(const LabOptions& o)
 	head_ = makeHead();
 	const arm::RtxKinematics kin(o.rtx);
 	auto T_GinW = [this, kin](const hw::ArmJoints& j)
-	{ return T_AinW() * metres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
+	{ return T_AinW() * geometry::inMetres(kin.T06(arm::RtxJoints::fromMmDeg(j))); };
 	const JawGeometry jaws{o.gripper.gripper_opening_max_mm, o.gripper.finger_length_mm,
 	                       o.gripper.finger_width_mm};
 	std::map<std::string, std::string> model_of;
@@ -115,7 +110,7 @@ Eigen::Isometry3d Lab::trueC0() const
 
 Eigen::Isometry3d Lab::T_AinW() const
 {
-	return trueC0() * metres(T_C0inA_true_mm_.inverse());
+	return trueC0() * geometry::inMetres(T_C0inA_true_mm_.inverse());
 }
 
 std::string Lab::modelOf(const std::string& name) const
