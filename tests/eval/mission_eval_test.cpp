@@ -108,16 +108,9 @@ TEST(MissionEval, TJsonReadsBackAndAMalformedOneNamesTheField)
 	EXPECT_EQ(back.contact->what, "wall");
 	json bad = eval::truthJson(t);
 	bad["vehicle"].erase("x_m");
-	try
-	{
-		eval::truthFromJson(bad, "T.json");
-		FAIL() << "accepted";
-	}
-	catch (const std::runtime_error& e)
-	{
-		EXPECT_NE(std::string(e.what()).find("T.json: missing field 'x_m'"), std::string::npos)
-		    << e.what();
-	}
+	const std::string message = test_support::messageOf<std::runtime_error>(
+	    [&] { eval::truthFromJson(bad, "T.json"); }, "accepted");
+	EXPECT_NE(message.find("T.json: missing field 'x_m'"), std::string::npos) << message;
 }
 
 namespace
