@@ -53,8 +53,9 @@ void Mission::Impl::loadTarget()
 	ViewSource views = [this](const geometry::HeadAngles& a) { return reconstructedView(a); };
 	if (o.search.scene_source == SceneSource::Simulated)
 		views = [this](const geometry::HeadAngles& a) { return simulatedView(a); };
-	std::vector<std::string> files;  // the rest of the database ([search] behind_found)
-	if (o.search.behind_found && o.search.image_verification)
+	// the rest of the database ([search] behind_found, rival_models)
+	std::vector<std::string> files;
+	if ((o.search.behind_found || o.search.rival_models) && o.search.image_verification)
 		for (const auto& e : std::filesystem::directory_iterator(o.models_dir))
 			if (e.path().extension() == ".wf" && e.path().stem() != o.target)
 				files.push_back(e.path().string());
@@ -66,8 +67,7 @@ void Mission::Impl::loadTarget()
 	                std::to_string(target.lines.size()) + " lines, " +
 	                std::to_string(target.conics.size()) + " conics" +
 	                (others.empty() ? std::string()
-	                                : ", " + std::to_string(others.size()) +
-	                                      " other models to look behind"));
+	                                : ", " + std::to_string(others.size()) + " other models"));
 }
 
 hw::StereoImages Mission::Impl::grabStereo(StereoShot::Purpose purpose)

@@ -33,6 +33,17 @@ recog::SupportPlane planeInC0(const recog::SupportPlane& plane_L, const Eigen::I
 	out.d_mm = plane_L.d_mm - n_C0.dot(T_LinC0_mm.translation());
 	return out;
 }
+
+/** What a sweep view's timeline note says of it. */
+std::string verdict(const SearchResult& r)
+{
+	const auto confidence = std::to_string(r.recognition.confidence);
+	if (r.found) return "recognised (confidence " + confidence + ")";
+	if (!r.explained_by.empty())
+		return "recognised (confidence " + confidence + ") but refused: the " + r.explained_by +
+		       " model explains that place better";
+	return "not recognised";
+}
 }  // namespace
 
 std::vector<double> ObjectSearch::expectedTableHeights_mm(const Eigen::Isometry3d& T_LinC0_mm) const
@@ -50,9 +61,27 @@ ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& targ
       head_(o.bisight),
       recognizer_(target, o.recognition),
       p_centreinO_mm_(centreOf(target)),
-      views_(std::move(views))
+      views_(std::move(views)),
+      footprint_(recog::footprintOf(target))
 {
-	for (const auto& wf : others) others_.emplace_back(wf, o.recognition);
+	for (const auto& wf : others)
+	{
+		others_.emplace_back(wf, o.recognition);
+		footprints_.push_back(recog::footprintOf(wf));
+	}
+}
+
+std::optional<std::string> ObjectSearch::rivalAt(const SearchView& view,
+                                                 const recog::SceneContext& context,
+                                                 const recog::RecognitionResult& r) const
+{
+	std::vector<recog::RecognitionResult> found;
+	for (const auto& other : others_) found.push_back(other.recognize(view.scene, context));
+	std::vector<recog::PlacedAnswer> rivals;
+	for (size_t i = 0; i < others_.size(); ++i) rivals.push_back({&found[i], footprints_[i]});
+	const auto k = recog::betterExplained({&r, footprint_}, rivals, *context.up_S);
+	if (!k) return {};
+	return found[*k].model;
 }
 
 recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
@@ -111,11 +140,13 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	if (view.images) context.images = std::cref(*view.images);
 	if (r.table_plane.found) context.plane = r.table_plane.plane;
 	r.recognition = recognizer_.recognize(view.scene, context);
-	if (!r.recognition.found && view.images && !others_.empty())
+	if (!r.recognition.found && view.images && !others_.empty() && o_.search.behind_found)
 		r.recognition = behindOthers(view, context, r.recognition);
+	if (r.recognition.found && view.images && !others_.empty() && o_.search.rival_models)
+		r.explained_by = rivalAt(view, context, r.recognition).value_or("");
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
-	r.found = r.recognition.found;
+	r.found = r.recognition.found && r.explained_by.empty();
 	if (!r.found) return r;
 	r.T_OinL_mm = r.recognition.T_OinS;
 	r.T_OinC0_mm = T_LinC0_mm * r.T_OinL_mm;
@@ -182,10 +213,7 @@ SearchResult ObjectSearch::sweep(Timeline& timeline, const Eigen::Vector3d& xv_e
 			timeline.advance(o_.search.head_move_time_s);
 			last = observe(v.angles, timeline);
 			last.views = ++views;
-			timeline.note("view at " + v.label + ": " +
-			              (last.found ? "recognised (confidence " +
-			                                std::to_string(last.recognition.confidence) + ")"
-			                          : std::string("not recognised")));
+			timeline.note("view at " + v.label + ": " + verdict(last));
 			if (last.found && (!best.found || last.recognition.confidence > best.recognition.confidence))
 				best = last;
 			if (best.found && o_.search.stop_at_first) break;

@@ -47,7 +47,8 @@ const util::OptionsBinder<Se>& searchBinder()
 	                          .flag("image_verification", &Se::image_verification, kOpt)
 	                          .flag("cover_table", &Se::cover_table, kOpt)
 	                          .flag("stop_at_first", &Se::stop_at_first, kOpt)
-	                          .flag("behind_found", &Se::behind_found, kOpt);
+	                          .flag("behind_found", &Se::behind_found, kOpt)
+	                          .flag("rival_models", &Se::rival_models, kOpt);
 	return b;
 }
 

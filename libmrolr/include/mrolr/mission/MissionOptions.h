@@ -121,6 +121,11 @@ struct SearchOptions
 	 * found (recog::searchBehindFound, as mrolr-recognize does); false (default): the target
 	 * alone. */
 	bool behind_found = false;
+	/** Optional, with image verification: in a view where the target is recognised, the other
+	 * models of the database are recognised too, and the target's answer is refused there when
+	 * one of them is found at its place with a higher image score (recog::betterExplained); the
+	 * sweep goes on. false (default): the target alone. */
+	bool rival_models = false;
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 	void dump(std::ostream& out) const;
 };

@@ -10,6 +10,7 @@
 #include <mrolr/mission/Timeline.h>
 #include <mrolr/model/WireFrame.h>
 #include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/Rivals.h>
 #include <mrolr/recog/plane/TablePlaneEstimate.h>
 
 #include <Eigen/Geometry>
@@ -38,6 +39,9 @@ struct SearchResult
 	recog::SupportPlane table_plane_C0;
 	int views = 0;
 	double compute_s = 0;
+	/** The target was recognised in this view but refused: this other model of the database was
+	 * found at its place with a higher image score ([search] rival_models); empty otherwise. */
+	std::string explained_by;
 };
 
 /** A view's scene wire-frame (L, mm) and, when image verification is on, the pair's edge
@@ -56,7 +60,8 @@ class ObjectSearch
 	/** @p target: the model wire-frame (O, mm) the recogniser looks for; @p views: where a view's
 	 * scene comes from (the head is moved to the angles by it); @p others: the database's other
 	 * models, recognised in a view where the target is not, so that it is sought behind those
-	 * found ([search] behind_found; may be empty). */
+	 * found ([search] behind_found), or in a view where it is, to ask whether one of them
+	 * explains its place better ([search] rival_models); may be empty. */
 	ObjectSearch(const MissionOptions& o, const model::WireFrame& target, ViewSource views,
 	             const std::vector<model::WireFrame>& others = {});
 	/** Head angles of sweep position @p pan_deg (tilted by gaze_tilt_deg, verged on the table). */
@@ -97,10 +102,17 @@ class ObjectSearch
 	                                      const recog::SceneContext& context,
 	                                      const recog::RecognitionResult& alone) const;
 
+	/** The other model found at @p r's place with a higher image score in @p view, if any
+	 * ([search] rival_models, recog::betterExplained). */
+	std::optional<std::string> rivalAt(const SearchView& view, const recog::SceneContext& context,
+	                                   const recog::RecognitionResult& r) const;
+
 	const MissionOptions& o_;
 	geometry::BiSightHead head_;
 	recog::Recognizer recognizer_;
 	std::vector<recog::Recognizer> others_;
+	recog::Footprint footprint_;                ///< the target's
+	std::vector<recog::Footprint> footprints_;  ///< the others'
 	Eigen::Vector3d p_centreinO_mm_;  ///< centre of the target's wire-frame
 	ViewSource views_;
 };
