@@ -1,4 +1,5 @@
 #include <mrolr/arm/HeadToArm.h>
+#include <mrolr/geometry/PoseUnits.h>
 
 namespace mrolr::arm
 {
@@ -6,9 +7,7 @@ Eigen::Isometry3d objectInHeadCentre(const geometry::BiSightHead& head,
                                      const geometry::HeadAngles& angles,
                                      const Eigen::Isometry3d& T_OinL_mm)
 {
-	Eigen::Isometry3d T_LinC0 = head.T_LinC0(angles);
-	T_LinC0.translation() *= 1000.0;  // m → mm
-	return T_LinC0 * T_OinL_mm;
+	return geometry::inMm(head.T_LinC0(angles)) * T_OinL_mm;
 }
 
 }  // namespace mrolr::arm

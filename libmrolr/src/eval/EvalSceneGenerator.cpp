@@ -1,5 +1,6 @@
 #include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/model/WireFrameSampling.h>
 #include <mrolr/sim/GroundTruth.h>
@@ -209,8 +210,7 @@ EvalObject EvalSceneGenerator::truthOf(const sim::ObjectView& ov,
 {
 	EvalObject o;
 	o.model = ov.model;
-	o.T_OinL = ov.T_OinL;
-	o.T_OinL.translation() *= 1000;
+	o.T_OinL = geometry::inMm(ov.T_OinL);
 	o.visible_fraction = visibleFraction(truthWireFrame(ov.model), o.T_OinL, calib.K_left, depth_m,
 	                                     opts_.visibility_depth_tol_mm);
 	return o;

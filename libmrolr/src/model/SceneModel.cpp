@@ -1,4 +1,5 @@
 #include <mrolr/model/SceneModel.h>
+#include <mrolr/geometry/PoseUnits.h>
 
 #include <stdexcept>
 
@@ -51,9 +52,7 @@ WireFrame leftCameraToC0(const WireFrame& wf_L, const geometry::BiSightHead& hea
 {
 	if (wf_L.frame != WireFrameFrame::LeftCamera)
 		throw std::invalid_argument("leftCameraToC0 needs a wire-frame in frame left_camera");
-	Eigen::Isometry3d T = head.T_LinC0(angles);
-	T.translation() *= 1000.0;  // m -> mm
-	return transformWireFrame(wf_L, T, WireFrameFrame::C0);
+	return transformWireFrame(wf_L, geometry::inMm(head.T_LinC0(angles)), WireFrameFrame::C0);
 }
 
 }  // namespace mrolr::model

@@ -1,3 +1,4 @@
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/model/SceneModel.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/Placement.h>
@@ -32,8 +33,7 @@ void addObject(const world::World& w, const world::PlacedObject& o,
 	if (s == shapes.end())
 		throw world::WorldError(w.path + ": object '" + o.name + "': no definition of model '" +
 		                        o.model + "'");
-	Eigen::Isometry3d T = T_OinW(w, o);
-	T.translation() *= 1000.0;
+	const Eigen::Isometry3d T = geometry::inMm(T_OinW(w, o));
 	const auto wf =
 	    model::transformWireFrame(objectWireFrame(s->second), T, model::WireFrameFrame::Object);
 	out.lines.insert(out.lines.end(), wf.lines.begin(), wf.lines.end());
@@ -60,9 +60,8 @@ model::WireFrame tableSceneInCamera(const world::World& w,
                                     const std::map<std::string, world::ObjectShape>& shapes,
                                     const Eigen::Isometry3d& T_CinW, SceneParts parts)
 {
-	Eigen::Isometry3d T_WinC = T_CinW.inverse();
-	T_WinC.translation() *= 1000.0;
-	return model::transformWireFrame(tableSceneWireFrame(w, shapes, parts), T_WinC,
+	return model::transformWireFrame(tableSceneWireFrame(w, shapes, parts),
+	                                 geometry::inMm(T_CinW.inverse()),
 	                                 model::WireFrameFrame::LeftCamera);
 }
 

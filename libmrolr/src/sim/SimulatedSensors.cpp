@@ -1,6 +1,7 @@
 // The simulator's shortcut sensors: ideal landmark angles and exact scene wire-frames.
 #include <mrolr/geometry/GeometryError.h>
 #include <mrolr/geometry/IdealHead.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/sim/ObjectWireFrame.h>
 #include <mrolr/sim/SimulatedSensors.h>
 #include <mrolr/sim/SyntheticScene.h>
@@ -108,12 +109,12 @@ model::WireFrame ExactScenes::scene(const geometry::HeadAngles& angles)
 	out.frame = model::WireFrameFrame::LeftCamera;
 	for (const auto& [name, T_OinW] : lab_.objectPoses())
 	{
-		Eigen::Isometry3d T_OinL = T_WinL * T_OinW;
+		const Eigen::Isometry3d T_OinL = T_WinL * T_OinW;
 		const Eigen::Vector3d p = T_OinL.translation();
 		if (p.z() <= 0.05 || p.norm() > o_.max_object_range_m) continue;
 		if (!originInLeftImage((T_C0inW.inverse() * T_OinW).translation(), angles)) continue;
-		T_OinL.translation() *= 1000.0;
-		const auto moved = sim::placeInScene(exact_.at(lab_.modelOf(name)), T_OinL);
+		const auto moved =
+		    sim::placeInScene(exact_.at(lab_.modelOf(name)), geometry::inMm(T_OinL));
 		sim::appendWireFrame(out, sim::corruptScene(moved, noise, rng_));
 	}
 	return out;

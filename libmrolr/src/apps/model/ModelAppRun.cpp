@@ -1,5 +1,6 @@
 #include <mrolr/apps/ModelApp.h>
 #include <mrolr/geometry/BiSightOptions.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/model/AutoCliques.h>
 #include <mrolr/model/ModelEditor.h>
 #include <mrolr/model/ModelRender.h>
@@ -221,9 +222,9 @@ model::WireFrame ModelApp::inFrameOf(const model::WireFrame& m, const model::Wir
 		// a scene model written with --head: back into the left camera of that view
 		const geometry::BiSightHead head(
 		    geometry::BiSightOptions::fromFile(util::requireProjectFile(bisight_path)));
-		Eigen::Isometry3d T_C0inL = head.T_LinC0(anglesFromDeg(*head_deg)).inverse();
-		T_C0inL.translation() *= 1000.0;
-		return model::transformWireFrame(m, T_C0inL, model::WireFrameFrame::LeftCamera);
+		const Eigen::Isometry3d T_C0inL_mm =
+		    geometry::inMm(head.T_LinC0(anglesFromDeg(*head_deg)).inverse());
+		return model::transformWireFrame(m, T_C0inL_mm, model::WireFrameFrame::LeftCamera);
 	}
 	if (m.frame != truth.frame)
 		throw std::runtime_error("stats: " + name + " is in frame " + model::frameName(m.frame) +

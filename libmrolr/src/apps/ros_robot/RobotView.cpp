@@ -2,6 +2,7 @@
 #include "RobotView.h"
 
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/ros/Conversions.h>
 #include <mrolr/ros/DeviceTopics.h>
 
@@ -139,8 +140,7 @@ void RobotView::measurement(const vision::CycleRecord& c)
 void RobotView::recognised(const mission::SearchResult& r, const Eigen::Vector3d& xv,
                            const model::WireFrame& target)
 {
-	Eigen::Isometry3d T_OinC0_m = r.T_OinC0_mm;
-	T_OinC0_m.translation() /= 1000.0;  // mm → m
+	const Eigen::Isometry3d T_OinC0_m = geometry::inMetres(r.T_OinC0_mm);
 	geometry_msgs::PoseStamped p;
 	p.header.stamp = ros::toRosTime(last_time_s_);
 	p.header.frame_id = "world";
