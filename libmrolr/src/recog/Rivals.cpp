@@ -10,8 +10,8 @@ namespace
 {
 double across(const Eigen::Vector3d& d_O) { return std::hypot(d_O.x(), d_O.y()); }
 
-/** The points of @p wf: its lines' ends and its conics' arcs in 360 steps (a full ellipse is
- * then within 0.02 % of its semi-axes). */
+/** The points of @p wf: its lines' ends and its conics' arcs in 360 steps (a full circle's
+ * radius then comes out at most 0.004 % short). */
 std::vector<Eigen::Vector3d> pointsOf(const model::WireFrame& wf)
 {
 	std::vector<Eigen::Vector3d> out;

@@ -21,7 +21,7 @@ struct Footprint
 	double radius_mm = 0;  ///< largest distance across +z of a model point from centre_O
 };
 
-/** The footprint of @p wf (its lines' ends and its conics' whole extent). */
+/** The footprint of @p wf (its lines' ends and its conics' arcs). */
 Footprint footprintOf(const model::WireFrame& wf);
 
 /** A found answer and its model's footprint. */
