@@ -81,6 +81,14 @@ inline Run runMission(const mrpt::config::CConfigFileBase& cfg,
 	return run;
 }
 
+/** Whether a note of @p r's timeline contains @p text. */
+inline bool timelineHas(const MissionResult& r, const std::string& text)
+{
+	for (const auto& e : r.timeline.events())
+		if (e.text.find(text) != std::string::npos) return true;
+	return false;
+}
+
 /** The true pose at every step of @p run, in the robot's path order (matched by base time). */
 inline std::vector<Eigen::Vector3d> truePath(const Run& run)
 {

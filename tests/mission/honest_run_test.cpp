@@ -14,16 +14,7 @@
 
 using namespace mrolr;
 namespace fs = std::filesystem;
-
-namespace
-{
-bool timelineHas(const mission::MissionResult& r, const std::string& text)
-{
-	for (const auto& e : r.timeline.events())
-		if (e.text.find(text) != std::string::npos) return true;
-	return false;
-}
-}  // namespace
+using mission::test::timelineHas;
 
 TEST(HonestRun, ATableTheRobotWasNotToldOfStopsItByTheBumperAndEvalNamesIt)
 {

@@ -5,16 +5,7 @@
 #include <gtest/gtest.h>
 
 using namespace mrolr;
-
-namespace
-{
-bool timelineHas(const mission::MissionResult& r, const std::string& text)
-{
-	for (const auto& e : r.timeline.events())
-		if (e.text.find(text) != std::string::npos) return true;
-	return false;
-}
-}  // namespace
+using mission::test::timelineHas;
 
 TEST(RivalModels, ACanPoseAtTheLargeCupsPlaceIsRefusedAndNotGrasped)
 {
