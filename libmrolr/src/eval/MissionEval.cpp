@@ -1,9 +1,9 @@
 // The robot's report against the truth: home, held object, recognised pose, NEES, collisions.
 #include <mrolr/base/TrajectoryPlanner.h>
-#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/eval/MissionEval.h>
 #include <mrolr/eval/RecognitionEvaluation.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/mission/MissionOutputs.h>
 #include <mrolr/slam/Chi2.h>
 
@@ -36,7 +36,6 @@ Eigen::Matrix3d mat3(const json& m)
 		for (int k = 0; k < 3; ++k) M(i, k) = m.at(i).at(k).get<double>();
 	return M;
 }
-
 
 double angleDeg(const Eigen::Matrix3d& R)
 {

@@ -1,8 +1,8 @@
 // mission.3Dscene: the run in 3D for SceneViewer3D.
 #include <mrolr/arm/RtxKinematics.h>
-#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/eval/MissionOutputs.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/model/ModelRender.h>
 #include <mrolr/model/WireFrameIO.h>
 #include <mrolr/sim/SceneBuilder.h>

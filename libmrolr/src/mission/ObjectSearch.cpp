@@ -60,9 +60,9 @@ ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& targ
     : o_(o),
       head_(o.bisight),
       recognizer_(target, o.recognition),
+      footprint_(recog::footprintOf(target)),
       p_centreinO_mm_(centreOf(target)),
-      views_(std::move(views)),
-      footprint_(recog::footprintOf(target))
+      views_(std::move(views))
 {
 	for (const auto& wf : others)
 	{
@@ -71,30 +71,34 @@ ObjectSearch::ObjectSearch(const MissionOptions& o, const model::WireFrame& targ
 	}
 }
 
-std::optional<std::string> ObjectSearch::rivalAt(const SearchView& view,
-                                                 const recog::SceneContext& context,
-                                                 const recog::RecognitionResult& r) const
+std::vector<recog::RecognitionResult> ObjectSearch::othersIn(
+    const SearchView& view, const recog::SceneContext& context) const
 {
-	std::vector<recog::RecognitionResult> found;
-	for (const auto& other : others_) found.push_back(other.recognize(view.scene, context));
-	std::vector<recog::PlacedAnswer> rivals;
-	for (size_t i = 0; i < others_.size(); ++i) rivals.push_back({&found[i], footprints_[i]});
-	const auto k = recog::betterExplained({&r, footprint_}, rivals, *context.up_S);
-	if (!k) return {};
-	return found[*k].model;
+	std::vector<recog::RecognitionResult> out;
+	for (const auto& other : others_) out.push_back(other.recognize(view.scene, context));
+	return out;
 }
 
-recog::RecognitionResult ObjectSearch::behindOthers(const SearchView& view,
-                                                    const recog::SceneContext& context,
-                                                    const recog::RecognitionResult& alone) const
+std::optional<std::string> ObjectSearch::rivalAt(
+    const recog::RecognitionResult& r, const std::vector<recog::RecognitionResult>& others,
+    const Eigen::Vector3d& up_L) const
+{
+	std::vector<recog::PlacedAnswer> rivals;
+	for (size_t i = 0; i < others.size(); ++i) rivals.push_back({&others[i], footprints_[i]});
+	const auto k = recog::betterExplained({&r, footprint_}, rivals, up_L);
+	if (!k) return {};
+	return others[*k].model;
+}
+
+recog::RecognitionResult ObjectSearch::behindOthers(
+    const SearchView& view, const recog::SceneContext& context,
+    const recog::RecognitionResult& alone,
+    const std::vector<recog::RecognitionResult>& others) const
 {
 	std::vector<const recog::Recognizer*> recs{&recognizer_};
 	std::vector<recog::RecognitionResult> first{alone};
-	for (const auto& other : others_)
-	{
-		recs.push_back(&other);
-		first.push_back(other.recognize(view.scene, context));
-	}
+	for (const auto& other : others_) recs.push_back(&other);
+	first.insert(first.end(), others.begin(), others.end());
 	auto search = [&](size_t i, const recog::ImageVerifier& behind)
 	{
 		if (i != 0) return recog::RecognitionResult{};  // only the target is sought behind them
@@ -140,10 +144,18 @@ SearchResult ObjectSearch::observe(const geometry::HeadAngles& angles, Timeline&
 	if (view.images) context.images = std::cref(*view.images);
 	if (r.table_plane.found) context.plane = r.table_plane.plane;
 	r.recognition = recognizer_.recognize(view.scene, context);
-	if (!r.recognition.found && view.images && !others_.empty() && o_.search.behind_found)
-		r.recognition = behindOthers(view, context, r.recognition);
-	if (r.recognition.found && view.images && !others_.empty() && o_.search.rival_models)
-		r.explained_by = rivalAt(view, context, r.recognition).value_or("");
+	const bool database = view.images && !others_.empty();
+	std::vector<recog::RecognitionResult> others;  // the other models in this view, once
+	if (database && !r.recognition.found && o_.search.behind_found)
+	{
+		others = othersIn(view, context);
+		r.recognition = behindOthers(view, context, r.recognition, others);
+	}
+	if (database && r.recognition.found && o_.search.rival_models)
+	{
+		if (others.empty()) others = othersIn(view, context);
+		r.explained_by = rivalAt(r.recognition, others, up_L).value_or("");
+	}
 	r.compute_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	timeline.addCompute(r.compute_s);
 	r.found = r.recognition.found && r.explained_by.empty();

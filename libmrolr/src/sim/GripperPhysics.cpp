@@ -32,7 +32,6 @@ std::string mm(double v)
 	return buf;
 }
 
-
 /** The horizontal part of @p v. */
 Eigen::Vector3d horizontal(Eigen::Vector3d v)
 {

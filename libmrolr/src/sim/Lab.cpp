@@ -1,7 +1,7 @@
 // The simulated lab: devices for the robot, truth for eval.
 #include <mrolr/arm/RtxKinematics.h>
-#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/geometry/Frames.h>
+#include <mrolr/geometry/PoseUnits.h>
 #include <mrolr/sim/Lab.h>
 #include <mrolr/sim/Placement.h>
 #include <mrolr/sim/SceneBuilder.h>

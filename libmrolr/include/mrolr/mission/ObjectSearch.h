@@ -96,16 +96,22 @@ class ObjectSearch
 	 * plane estimate (C0 stands head_height_m above the floor, +y up). */
 	std::vector<double> expectedTableHeights_mm(const Eigen::Isometry3d& T_LinC0_mm) const;
 
-	/** The target sought again behind the other models found in @p view ([search]
-	 * behind_found); @p alone: its recognition without them. */
-	recog::RecognitionResult behindOthers(const SearchView& view,
-	                                      const recog::SceneContext& context,
-	                                      const recog::RecognitionResult& alone) const;
+	/** The other models' recognitions in @p view, in the order of others_. */
+	std::vector<recog::RecognitionResult> othersIn(const SearchView& view,
+	                                               const recog::SceneContext& context) const;
 
-	/** The other model found at @p r's place with a higher image score in @p view, if any
-	 * ([search] rival_models, recog::betterExplained). */
-	std::optional<std::string> rivalAt(const SearchView& view, const recog::SceneContext& context,
-	                                   const recog::RecognitionResult& r) const;
+	/** The target sought again behind the other models found in @p view ([search]
+	 * behind_found); @p alone: its recognition without them; @p others: othersIn(). */
+	recog::RecognitionResult behindOthers(
+	    const SearchView& view, const recog::SceneContext& context,
+	    const recog::RecognitionResult& alone,
+	    const std::vector<recog::RecognitionResult>& others) const;
+
+	/** The other model found at @p r's place with a higher image score ([search] rival_models,
+	 * recog::betterExplained); @p others: othersIn(); @p up_L: the view's up direction. */
+	std::optional<std::string> rivalAt(const recog::RecognitionResult& r,
+	                                   const std::vector<recog::RecognitionResult>& others,
+	                                   const Eigen::Vector3d& up_L) const;
 
 	const MissionOptions& o_;
 	geometry::BiSightHead head_;
