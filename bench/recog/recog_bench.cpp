@@ -324,13 +324,14 @@ void printSweepBreakdown(double sweep_cpu_ms)
 	const auto& f = sweep();
 	std::vector<double> ms;
 	RecognitionTimes sum;
-	int found = 0, refinements = 0, reused = 0;
+	int found = 0, refinements = 0, reused = 0, sweeps_reused = 0;
 	for (size_t v = 0; v < f.views.size(); ++v)
 		for (size_t m = 0; m < f.models.size(); ++m)
 		{
 			const RecognitionResult r = f.search(m, v);
 			ms.push_back(r.ms), sum += r.times, found += r.found ? 1 : 0;
 			refinements += r.image_refinements, reused += r.image_refinements_reused;
+			sweeps_reused += r.image_sweeps_reused;
 		}
 	std::sort(ms.begin(), ms.end());
 	const auto n = static_cast<double>(ms.size());
@@ -346,8 +347,10 @@ void printSweepBreakdown(double sweep_cpu_ms)
 	    "ms, image refinement %.1f ms, plane hypotheses %.1f ms (sum %.1f ms)\n",
 	    mean.cliques_ms, mean.verify_3d_ms, mean.image_score_ms, mean.image_refine_ms,
 	    mean.plane_ms, mean.total_ms());
-	std::printf("  refinements in the images per model and view: %.2f made, %.2f reused\n",
-	            refinements / n, reused / n);
+	std::printf(
+	    "  refinements in the images per model and view: %.2f made (%.2f yaw circles of theirs "
+	    "taken from an earlier one), %.2f reused\n",
+	    refinements / n, sweeps_reused / n, reused / n);
 }
 
 void printAccuracy()

@@ -311,6 +311,7 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	best.levels_skipped = skipped;
 	best.image_refinements = static_cast<int>(refined.made.size());
 	best.image_refinements_reused = refined.reused;
+	best.image_sweeps_reused = refined.memo.circles_reused;
 	best.times = times;
 	best.ms =
 	    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -13,6 +13,7 @@
 #include <mrolr/recog/TransformCluster.h>
 #include <mrolr/recog/Verification.h>
 #include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/images/RefineMemo.h>
 #include <mrolr/recog/plane/PlaneHypotheses.h>
 #include <mrolr/recog/plane/SupportPlane.h>
 
@@ -92,6 +93,8 @@ struct RecognitionResult
 	 * the candidates that took the result of one of them instead, starting within 2 mm and 2° of
 	 * where it started or ended (levels and plane hypotheses find the same pose again). */
 	int image_refinements = 0, image_refinements_reused = 0;
+	/** Of those made, the yaw sweeps taken from an earlier one's circle (RefineMemo). */
+	int image_sweeps_reused = 0;
 	/** With images (ImageVerifier): the image score of the pose (fraction of the expected-visible
 	 * model edge samples on image edges), which decided acceptance; empty without images. */
 	std::optional<double> image_score;
@@ -237,7 +240,8 @@ class Recognizer
 			Eigen::Isometry3d start, result;
 		};
 		std::vector<Made> made;
-		int reused = 0;  ///< candidates given the result of one of made
+		int reused = 0;   ///< candidates given the result of one of made
+		RefineMemo memo;  ///< what made swept and searched
 	};
 	// Internally an absent up direction or image pair is a null pointer.
 	bool upright(const Eigen::Isometry3d& T_OinS, const Eigen::Vector3d* up_S) const;

@@ -56,7 +56,8 @@ nlohmann::json caseJson(const eval::EvalCase& c)
 	        {"ms", c.ms},
 	        {"times_ms", timesJson(c.result.times)},
 	        {"image_refinements", c.result.image_refinements},
-	        {"image_refinements_reused", c.result.image_refinements_reused}};
+	        {"image_refinements_reused", c.result.image_refinements_reused},
+	        {"image_sweeps_reused", c.result.image_sweeps_reused}};
 }
 
 nlohmann::json objectJson(const eval::EvalObject& o)

@@ -98,6 +98,7 @@ nlohmann::json resultJson(const recog::RecognitionResult& r)
 	        {"times_ms", timesJson(r.times)},
 	        {"image_refinements", r.image_refinements},
 	        {"image_refinements_reused", r.image_refinements_reused},
+	        {"image_sweeps_reused", r.image_sweeps_reused},
 	        {"confidence", r.confidence},
 	        {"scene", r.scene_index},
 	        {"rpy_deg", {rpy.x(), rpy.y(), rpy.z()}},

@@ -36,7 +36,7 @@ Eigen::Isometry3d Recognizer::refinedOnce(const ImageVerifier& images,
 			++refined.reused;
 			return m.result;
 		}
-	const Eigen::Isometry3d T = images.refine(samples, T_OinS, axes_O);
+	const Eigen::Isometry3d T = images.refine(samples, T_OinS, axes_O, &refined.memo);
 	refined.made.push_back({T_OinS, T});
 	return T;
 }

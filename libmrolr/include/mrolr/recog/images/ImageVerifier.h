@@ -125,6 +125,10 @@ struct ImageCount
 	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
 };
 
+struct RefineMemo;
+struct ScoredPose;
+struct SweptCircle;
+
 /** What lets a count give up early: the score of a pose is wanted only if it can beat a best one
  * (the mean squared distance of the considered samples below max_mean_px2, or more than
  * min_supported samples supported, or a supported fraction above max_fraction; a criterion left
@@ -320,9 +324,12 @@ class ImageVerifier
 	Eigen::Isometry3d refine(const std::vector<EdgeSample>& samples_O,
 	                         const Eigen::Isometry3d& T_OinL, const SelfOcclusion* occ,
 	                         const std::vector<Eigen::Vector3d>& axes_O) const;
-	/** The same on samples whose sight is known. */
+	/** The same on samples whose sight is known. With @p memo (may be null), what the refinements
+	 * of the same search have swept and searched is taken from it (RefineMemo), and what this
+	 * one does is added. */
 	Eigen::Isometry3d refine(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
-	                         const std::vector<Eigen::Vector3d>& axes_O) const;
+	                         const std::vector<Eigen::Vector3d>& axes_O,
+	                         RefineMemo* memo = nullptr) const;
 
 	/** The edge-line terms of both images at @p T_OinL, motions about @p c_L. */
 	EdgeLineTerms edgeLines(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
@@ -343,6 +350,16 @@ class ImageVerifier
 	                                                        const Eigen::Isometry3d& start,
 	                                                        const ImageScore& start_s,
 	                                                        const Eigen::Vector3d& axis_O) const;
+	/** refine()'s yaw sweep about the axis through @p a_O: the circle of @p start. */
+	SweptCircle sweptAbout(const SightedSamples& samples, const ScoredPose& start,
+	                       const Eigen::Vector3d& a_O) const;
+	/** sweptAbout() about axis @p k of @p axes_O, or the circle of @p memo it lies on. */
+	SweptCircle circleOf(const SightedSamples& samples, const ScoredPose& start,
+	                     const std::vector<Eigen::Vector3d>& axes_O, size_t k,
+	                     RefineMemo* memo) const;
+	/** edgeLineSearch() from @p seed, or the one of @p memo from the same seed and axis. */
+	ScoredPose searchedFrom(const SightedSamples& samples, const ScoredPose& seed,
+	                        const Eigen::Vector3d& axis_O, RefineMemo* memo) const;
 	/** The ImageScore of both images' counts (score()'s acceptance rules). */
 	ImageScore combined(const std::array<ImageCount, 2>& counts) const;
 	/** score(), or empty as soon as @p cap is exceeded. */
