@@ -109,10 +109,16 @@ Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,
                                         const std::vector<Eigen::Vector3d>& axes_O,
                                         RefineMemo* memo) const
 {
+	return refine(samples, ScoredPose{T_OinL, score(samples, T_OinL)}, axes_O, memo).T;
+}
+
+ScoredPose ImageVerifier::refine(const SightedSamples& samples, const ScoredPose& start_pose,
+                                 const std::vector<Eigen::Vector3d>& axes_O, RefineMemo* memo) const
+{
 	// the sweep keeps the yaw with the most supported samples and the one with the highest
 	// fraction; each is scored unrefined, so both (and the start) are refined and compared then
 	const Eigen::Vector3d axis0_O = axes_O.empty() ? Eigen::Vector3d::Zero() : axes_O.front();
-	const Seed start{{T_OinL, score(samples, T_OinL)}, axis0_O};
+	const Seed start{start_pose, axis0_O};
 	Seed by_count = start, by_fraction = start;
 	for (size_t k = 0; k < axes_O.size(); ++k)
 	{
@@ -130,7 +136,7 @@ Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,
 		const ScoredPose r = searchedFrom(samples, o->p, o->axis_O, memo);
 		if (better(r.s, best.s)) best = r;
 	}
-	return best.s.supported >= by_count.p.s.supported ? best.T : by_count.p.T;
+	return best.s.supported >= by_count.p.s.supported ? best : by_count.p;
 }
 
 }  // namespace mrolr::recog

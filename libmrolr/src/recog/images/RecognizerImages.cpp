@@ -24,21 +24,20 @@ bool sameStart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eig
 }
 }  // namespace
 
-Eigen::Isometry3d Recognizer::refinedOnce(const ImageVerifier& images,
-                                          const SightedSamples& samples,
-                                          const Eigen::Isometry3d& T_OinS,
-                                          const std::vector<Eigen::Vector3d>& axes_O,
-                                          Refinements& refined) const
+ScoredPose Recognizer::refinedOnce(const ImageVerifier& images, const SightedSamples& samples,
+                                   const ScoredPose& start,
+                                   const std::vector<Eigen::Vector3d>& axes_O,
+                                   Refinements& refined) const
 {
 	for (const auto& m : refined.made)
-		if (sameStart(m.start, T_OinS, centroid_O_) || sameStart(m.result, T_OinS, centroid_O_))
+		if (sameStart(m.start, start.T, centroid_O_) || sameStart(m.result.T, start.T, centroid_O_))
 		{
 			++refined.reused;
 			return m.result;
 		}
-	const Eigen::Isometry3d T = images.refine(samples, T_OinS, axes_O, &refined.memo);
-	refined.made.push_back({T_OinS, T});
-	return T;
+	const ScoredPose r = images.refine(samples, start, axes_O, &refined.memo);
+	refined.made.push_back({start.T, r});
+	return r;
 }
 
 void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVerifier& images,
@@ -50,7 +49,8 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	const SightedSamples& samples = sightedSamples(o.sample_spacing_mm);
 	{
 		const detail::StageTimer timer(times.image_score_ms);
-		for (auto& h : poses) h.image = images.score(samples, h.T).score;
+		for (auto& h : poses)
+			h.image_counts = images.score(samples, h.T), h.image = h.image_counts.score;
 	}
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });
@@ -61,11 +61,11 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	{
 		auto& h = poses[k];
 		if (*h.image < 0.5 * o.min_score) break;
-		const Eigen::Isometry3d T = refinedOnce(images, samples, h.T, axes_O, refined);
-		if (!upright(T, up_S)) continue;
-		h.T = T;
-		h.image = images.score(samples, T).score;
-		h.v = verifyPose(table_, scene, T, beta, theta, p.length_threshold_mm, occlusionFor(up_S));
+		const ScoredPose r = refinedOnce(images, samples, {h.T, h.image_counts}, axes_O, refined);
+		if (!upright(r.T, up_S)) continue;
+		h.T = r.T, h.image_counts = r.s, h.image = r.s.score;
+		h.v =
+		    verifyPose(table_, scene, r.T, beta, theta, p.length_threshold_mm, occlusionFor(up_S));
 	}
 }
 

@@ -115,6 +115,13 @@ struct ImageScore
 	int outside = 0;   ///< samples not hidden by the object itself but outside the images
 };
 
+/** A pose and its ImageScore. */
+struct ScoredPose
+{
+	Eigen::Isometry3d T;
+	ImageScore s;
+};
+
 /** One image's share of an ImageScore (ImageVerifier::score sums both images'). */
 struct ImageCount
 {
@@ -126,7 +133,6 @@ struct ImageCount
 };
 
 struct RefineMemo;
-struct ScoredPose;
 struct SweptCircle;
 
 /** What lets a count give up early: the score of a pose is wanted only if it can beat a best one
@@ -330,6 +336,9 @@ class ImageVerifier
 	Eigen::Isometry3d refine(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
 	                         const std::vector<Eigen::Vector3d>& axes_O,
 	                         RefineMemo* memo = nullptr) const;
+	/** The same from @p start, whose score() is known: the refined pose with its score(). */
+	ScoredPose refine(const SightedSamples& samples, const ScoredPose& start,
+	                  const std::vector<Eigen::Vector3d>& axes_O, RefineMemo* memo) const;
 
 	/** The edge-line terms of both images at @p T_OinL, motions about @p c_L. */
 	EdgeLineTerms edgeLines(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,

@@ -8,13 +8,6 @@
 
 namespace mrolr::recog
 {
-/** A pose and its ImageScore. */
-struct ScoredPose
-{
-	Eigen::Isometry3d T;
-	ImageScore s;
-};
-
 /** The yaw sweep of ImageVerifier::refine about one axis: every yaw of the circle of poses
  * T · Rz(yaw) about the axis through the model point a_O, yaw 0 (T itself) included: the one with
  * the most supported samples (then the lowest cost) and the one with the highest supported
