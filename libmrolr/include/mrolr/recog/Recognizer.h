@@ -230,7 +230,7 @@ class Recognizer
 		VerificationResult v;
 		std::optional<double> image;
 		size_t hypothesis = 0;    ///< the clique cluster or plane hypothesis it came from
-		ImageScore image_counts;  ///< image's counts and cost (judgeInImages)
+		ImageScore image_counts;  ///< the counts and cost behind image: a refinement's start
 	};
 	/** The refinements in the images made in one search (recognize(): its levels and its plane
 	 * hypotheses share them): where each started and where it ended. */

@@ -14,8 +14,8 @@ namespace
  * within kSameCircle_mm, their up axes within kSameCircle_deg, and their yaws differ by a whole
  * number of sweep steps to within kSameCircle_deg. 0.1 mm is 0.1 px at 650 mm. Measured on the
  * eight rendered sets (seeds 1 to 701): at 0.1 every count and median stays or improves; at 0.2,
- * which reuses 68 circles of the bench sweep's 390 instead of 38, the counts stay but seeds 101's
- * and 401's medians rise (0.337° → 0.357°, 0.497 → 0.552 mm); at 2 (the kSameStart of
+ * which takes 34 circles on the bench sweep instead of 19, the counts stay but seeds 101's and
+ * 401's medians rise (0.337° → 0.357°, 0.497 → 0.552 mm); at 2 (the kSameStart of
  * RecognizerImages.cpp), seeds 1, 101 and 701 each lose a view. */
 constexpr double kSameCircle_mm = 0.1, kSameCircle_deg = 0.1;
 
