@@ -95,12 +95,11 @@ EdgeLineTerms ImageVerifier::edgeLines(const SightedSamples& samples,
 	return t;
 }
 
-std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::edgeLineSearch(
-    const SightedSamples& samples, const Eigen::Isometry3d& start, const ImageScore& start_s,
-    const Eigen::Vector3d& axis_O) const
+ScoredPose ImageVerifier::edgeLineSearch(const SightedSamples& samples, const ScoredPose& start,
+                                         const Eigen::Vector3d& axis_O) const
 {
-	Eigen::Isometry3d best = start;
-	ImageScore best_s = start_s;
+	Eigen::Isometry3d best = start.T;
+	ImageScore best_s = start.s;
 	double damping = kStartDamping;
 	Eigen::Vector3d c_L = best * axis_O;
 	EdgeLineTerms t = edgeLines(samples, best, c_L);
@@ -110,7 +109,7 @@ std::pair<Eigen::Isometry3d, ImageScore> ImageVerifier::edgeLineSearch(
 		A.diagonal() += damping * t.H.diagonal();
 		const Eigen::Matrix<double, 6, 1> d = -A.ldlt().solve(t.g);
 		const Eigen::Isometry3d T = stepped(best, c_L, d);
-		const auto s = withinRefinementReach(T, start, axis_O)
+		const auto s = withinRefinementReach(T, start.T, axis_O)
 		                   ? scoreIfCheaper(samples, T, best_s.cost)
 		                   : std::nullopt;
 		if (!s)

@@ -99,9 +99,9 @@ ScoredPose ImageVerifier::searchedFrom(const SightedSamples& samples, const Scor
 	if (memo)
 		for (const auto& s : memo->searches)
 			if (s.axis_O == axis_O && s.seed.isApprox(seed.T)) return s.result;
-	const auto [T, s] = edgeLineSearch(samples, seed.T, seed.s, axis_O);
-	if (memo) memo->searches.push_back({seed.T, axis_O, {T, s}});
-	return {T, s};
+	const ScoredPose r = edgeLineSearch(samples, seed, axis_O);
+	if (memo) memo->searches.push_back({seed.T, axis_O, r});
+	return r;
 }
 
 Eigen::Isometry3d ImageVerifier::refine(const SightedSamples& samples,

@@ -353,12 +353,10 @@ class ImageVerifier
 
  private:
 	/** Levenberg–Marquardt steps on the edge-line residuals (EdgeImage::addEdgeLines) from
-	 * @p start (its score @p start_s), rotations about @p axis_O's image; a step is kept only if
+	 * @p start (a pose and its score), rotations about @p axis_O's image; a step is kept only if
 	 * it lowers the chamfer cost of score() and stays withinRefinementReach of @p start. */
-	std::pair<Eigen::Isometry3d, ImageScore> edgeLineSearch(const SightedSamples& samples,
-	                                                        const Eigen::Isometry3d& start,
-	                                                        const ImageScore& start_s,
-	                                                        const Eigen::Vector3d& axis_O) const;
+	ScoredPose edgeLineSearch(const SightedSamples& samples, const ScoredPose& start,
+	                          const Eigen::Vector3d& axis_O) const;
 	/** refine()'s yaw sweep about the axis through @p a_O: the circle of @p start. */
 	SweptCircle sweptAbout(const SightedSamples& samples, const ScoredPose& start,
 	                       const Eigen::Vector3d& a_O) const;
