@@ -16,7 +16,6 @@ MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Fe
 		throw std::invalid_argument("MemberCandidates: too many scene features");
 	oriented_.reserve(2 * scene.size());
 	for (const auto& f : scene) oriented_.push_back(f), oriented_.push_back(f.flipped());
-	for (const auto& f : oriented_) u_.push_back(f.u);
 }
 
 const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t member,
@@ -30,16 +29,19 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	const auto& mf = model_.features();
 	const auto& rel = model_.relation(focus, member);
 	const Feature& sa = oriented_[o_focus];
-	// consistent()'s first test on the packed directions: most pairs fail it
-	const CosineRange angle = cosineRange(rel, loosest_);
-	for (const size_t o : gatedFor(member))
-		if (angle.contains(sa.u.dot(u_[o])) &&
-		    consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
+	// consistent()'s first tests on the packed features at once: most pairs fail them
+	const Gated& gated = gatedFor(member);
+	mayBeConsistent(rel, mf[focus], mf[member], sa, gated.packed, loosest_, keep_);
+	for (size_t k = 0; k < gated.index.size(); ++k)
+	{
+		const size_t o = gated.index[k];
+		if (keep_[k] && consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			it->second.push_back(static_cast<std::uint32_t>(o));
+	}
 	return it->second;
 }
 
-const std::vector<size_t>& MemberCandidates::gatedFor(size_t member)
+const MemberCandidates::Gated& MemberCandidates::gatedFor(size_t member)
 {
 	const auto [it, fresh] = gated_.try_emplace(member);
 	if (!fresh) return it->second;
@@ -47,8 +49,10 @@ const std::vector<size_t>& MemberCandidates::gatedFor(size_t member)
 	// (a member's gate has no length ratio: that is the focus's)
 	LevelParams loosest;
 	loosest.position_error_mm = loosest_.beta_mm;
-	it->second = passingUnaryGate(model_.features()[member], oriented_, loosest, false);
-	return it->second;
+	Gated& g = it->second;
+	g.index = passingUnaryGate(model_.features()[member], oriented_, loosest, false);
+	for (const size_t o : g.index) g.packed.push_back(oriented_[o]);
+	return g;
 }
 
 Tolerance loosestTolerance(const std::vector<LevelParams>& levels)

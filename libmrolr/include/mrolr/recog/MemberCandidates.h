@@ -6,6 +6,7 @@
  * found once per scene and each level tests only those. The answers are the levels' own. */
 
 #include <mrolr/recog/ModelTable.h>
+#include <mrolr/recog/PairPrefilter.h>
 #include <mrolr/recog/PairRelation.h>
 #include <mrolr/recog/RecognitionOptions.h>
 
@@ -35,12 +36,18 @@ class MemberCandidates
  private:
 	const ModelTable& model_;
 	std::vector<Feature> oriented_;  ///< 2k: scene feature k, 2k + 1: flipped
-	std::vector<Eigen::Vector3d> u_;  ///< oriented_'s directions, packed for of()'s angle test
 	Tolerance loosest_;
 	std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> lists_;
-	/** Per model feature: the oriented scene features passing its gate (on first use). */
-	std::unordered_map<size_t, std::vector<size_t>> gated_;
-	const std::vector<size_t>& gatedFor(size_t member);
+	/** The oriented scene features passing a model feature's gate, also packed for
+	 * mayBeConsistent (PairPrefilter.h). */
+	struct Gated
+	{
+		std::vector<size_t> index;
+		PackedFeatures packed;
+	};
+	std::unordered_map<size_t, Gated> gated_;  ///< per model feature, on first use
+	std::vector<std::int64_t> keep_;           ///< of()'s prefilter answers
+	const Gated& gatedFor(size_t member);
 };
 
 /** The largest position error and rotation of @p levels, widened by 1e-6 mm and 1e-6 rad so that

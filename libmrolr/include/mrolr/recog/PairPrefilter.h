@@ -1,0 +1,32 @@
+#pragma once
+/** A quick, conservative form of consistent() (PairRelation.h) for one scene feature against
+ * many, on packed arrays so that the compiler vectorises it (MROLR_SIMD_CLONES): the angle test
+ * and, for two skew model lines, the test of their common perpendicular's length h (paper 3.2),
+ * each widened by far more than rounding can move them. It never rejects a pair that consistent()
+ * accepts; consistent() then decides for those it keeps. Most scene pairs fail one of these two
+ * tests (MemberCandidates::of). */
+
+#include <mrolr/recog/Feature.h>
+#include <mrolr/recog/PairRelation.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace mrolr::recog
+{
+/** Directions and midpoints of scene features, one array per coordinate. */
+struct PackedFeatures
+{
+	std::vector<double> ux, uy, uz, mx, my, mz;
+	void push_back(const Feature& f);
+	size_t size() const { return ux.size(); }
+};
+
+/** keep[k] = 0 for the features @p b of @p packed that cannot be consistent() with the model pair
+ * (@p ma, @p mb) of relation @p m under @p tol when @p a is matched to ma, 1 for the others.
+ * @p keep is resized to packed.size(). */
+void mayBeConsistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& a,
+                     const PackedFeatures& packed, const Tolerance& tol,
+                     std::vector<std::int64_t>& keep);
+
+}  // namespace mrolr::recog
