@@ -54,14 +54,16 @@ SelfOcclusion::SelfOcclusion(const std::vector<Feature>& features_O, double marg
 {
 	if (directions > static_cast<int>(View::kMaxFaces))
 		throw std::invalid_argument("SelfOcclusion: " + std::to_string(directions) +
-		                            " face directions, at most " +
-		                            std::to_string(View::kMaxFaces));
+		                            " face directions, at most " + std::to_string(View::kMaxFaces));
 	for (const auto& n : normals_) nx_.push_back(n.x()), ny_.push_back(n.y()), nz_.push_back(n.z());
 	if (bodies_.size() > 64)
 		throw std::invalid_argument("SelfOcclusion: " + std::to_string(bodies_.size()) +
 		                            " bodies of revolution, at most 64");
 	for (const auto& f : features_O) samples_.push_back(samplesOf(f, kSamplesPerFeature));
 	offsets_ = offsetsOf(samples_, margin_mm);
+	std::vector<Eigen::Vector3d> all;
+	for (const auto& fs : samples_) all.insert(all.end(), fs.begin(), fs.end());
+	balls_ = innerBalls(normals_, offsets_, all);
 	for (const auto& fs : samples_)
 	{
 		samples_outside_.emplace_back();
@@ -117,6 +119,7 @@ SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
 	v.c_O_ = c_O;
 	for (size_t i = 0; i < normals_.size(); ++i) v.nc_[i] = normals_[i].dot(c_O);
 	v.all_ = facesFrom(offsets_, v.nc_);
+	v.balls_ = ballsSeenFrom(balls_, c_O);
 	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
 	v.bodies_.reserve(bodies_.size());
 	for (const auto& b : bodies_) v.bodies_.push_back(bodySight(b, c_O));
@@ -130,12 +133,12 @@ bool SelfOcclusion::hidden(const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_
 
 bool SelfOcclusion::hidden(const View& v, const Eigen::Vector3d& p_O) const
 {
-	return crossesPolytope(offsets_, v.all_, v.nc_, p_O, outsideFaces(offsets_, p_O));
+	return crossesPolytope(v, p_O, outsideFaces(offsets_, p_O));
 }
 
 bool SelfOcclusion::hidden(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const
 {
-	return crossesPolytope(offsets_, v.all_, v.nc_, p_O, ps.outside_all);
+	return crossesPolytope(v, p_O, ps.outside_all);
 }
 
 SelfOcclusion::PointSight SelfOcclusion::pointSight(const Eigen::Vector3d& p_O) const
@@ -201,16 +204,20 @@ MROLR_SIMD_CLONES bool SelfOcclusion::enteredLate(const View::Faces& f, double t
 	return late != 0;
 }
 
-bool SelfOcclusion::crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
-                                    const View::PerFace& nc, const Eigen::Vector3d& p_O,
+bool SelfOcclusion::crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
                                     const std::array<std::uint64_t, 2>& p_outside) const
 {
+	const View::Faces& f = v.all_;
+	const View::PerFace& nc = v.nc_;
+	const std::vector<double>& offsets = offsets_;
 	// Cyrus–Beck clipping of x(t) = c + t (p − c), t in [0, 1], against n·x <= d, face by face
 	// according to which end is outside it: a face both ends are outside of proves a miss, one
 	// both are inside of bounds nothing, the segment leaves through those only p is outside of
 	// (t1, the least of their t) and crosses when it has entered all those only c is outside of
 	// by then.
 	if ((p_outside[0] & f.outside[0]) | (p_outside[1] & f.outside[1])) return false;
+	// a sight line through a ball inside the polytope crosses it: no clipping needed
+	if (throughBall(v.balls_, p_O - v.c_O_)) return true;
 	const auto np = [&](int i) { return nx_[i] * p_O.x() + ny_[i] * p_O.y() + nz_[i] * p_O.z(); };
 	double t1 = 1;
 	for (int w = 0; w < 2; ++w)
@@ -253,7 +260,7 @@ std::vector<double> SelfOcclusion::visibleFractions(const Eigen::Vector3d& c_O) 
 		const auto& fs = samples_[k];
 		int seen = 0;
 		for (size_t j = 0; j < fs.size(); ++j)
-			seen += crossesPolytope(offsets_, v.all_, v.nc_, fs[j], samples_outside_[k][j]) ? 0 : 1;
+			seen += crossesPolytope(v, fs[j], samples_outside_[k][j]) ? 0 : 1;
 		out.push_back(fs.empty() ? 1.0 : static_cast<double>(seen) / fs.size());
 	}
 	return out;

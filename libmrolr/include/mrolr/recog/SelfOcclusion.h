@@ -8,6 +8,7 @@
  * it passes through that polytope shrunk by a margin. Model frame, millimetres. */
 
 #include <mrolr/recog/Feature.h>
+#include <mrolr/recog/InnerBalls.h>
 #include <mrolr/recog/images/Limbs.h>
 
 #include <Eigen/Core>
@@ -72,6 +73,7 @@ class SelfOcclusion
 		Eigen::Vector3d c_O_;
 		PerFace nc_;  ///< n_i·c_O per face direction
 		Faces all_, rest_;
+		BallsSeen balls_;  ///< the whole polytope's inner balls, from c_O
 		std::vector<BodySight> bodies_;
 	};
 	/** The camera-side terms for a camera at @p c_O. */
@@ -109,13 +111,15 @@ class SelfOcclusion
 	/** True when the segment from the camera to @p p_O enters one of the faces the camera is
 	 * outside of (@p f) at @p t1 or later: gap >= t1 (nc − n·p) for some face. */
 	static bool enteredLate(const View::Faces& f, double t1, const Eigen::Vector3d& p_O);
-	bool crossesPolytope(const std::vector<double>& offsets, const View::Faces& f,
-	                     const View::PerFace& nc, const Eigen::Vector3d& p_O,
+	/** True when the segment from the camera of @p v to @p p_O (outside the faces @p p_outside)
+	 * crosses the shrunk polytope. */
+	bool crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
 	                     const std::array<std::uint64_t, 2>& p_outside) const;
 
 	std::vector<Eigen::Vector3d> normals_;  ///< at most View::kMaxFaces
 	std::vector<double> nx_, ny_, nz_;      ///< the same, one array per coordinate
 	std::vector<double> offsets_;           ///< plane offsets, already shrunk by the margin
+	InnerBalls balls_;  ///< inside the shrunk polytope: a quick proof that a sample is hidden
 	std::vector<std::vector<Eigen::Vector3d>> samples_;                       ///< per feature
 	std::vector<std::vector<std::array<std::uint64_t, 2>>> samples_outside_;  ///< their faces
 	std::vector<RevolutionBody> bodies_;  ///< at most 64 (PointSight::on_bodies)

@@ -1,0 +1,101 @@
+#include <mrolr/recog/InnerBalls.h>
+#include <mrolr/util/SimdClones.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mrolr::recog
+{
+namespace
+{
+constexpr int kGrid = 9;             // candidate centres per axis of the points' box
+constexpr double kMinRadius_mm = 1;  // smaller balls catch next to nothing
+constexpr double kSpread = 0.7;      // a next centre lies beyond this fraction of a chosen radius
+
+struct Ball
+{
+	Eigen::Vector3d c;
+	double r;
+};
+
+/** The radius of the largest ball about @p c inside every face, less @p margin_mm. */
+double radiusAt(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& offsets,
+                const Eigen::Vector3d& c, double margin_mm)
+{
+	double r = std::numeric_limits<double>::infinity();
+	for (size_t i = 0; i < normals.size(); ++i) r = std::min(r, offsets[i] - normals[i].dot(c));
+	return r - margin_mm;
+}
+}  // namespace
+
+InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<double>& offsets,
+                      const std::vector<Eigen::Vector3d>& points, double margin_mm)
+{
+	InnerBalls out;
+	out.r2.fill(-1);
+	if (points.empty() || normals.empty()) return out;
+	Eigen::Vector3d lo = points.front(), hi = points.front();
+	for (const auto& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+	std::vector<Ball> candidates;
+	for (int i = 0; i < kGrid; ++i)
+		for (int j = 0; j < kGrid; ++j)
+			for (int k = 0; k < kGrid; ++k)
+			{
+				const Eigen::Vector3d f = (Eigen::Vector3d(i, j, k).array() + 0.5) / kGrid;
+				const Eigen::Vector3d c = lo + (hi - lo).cwiseProduct(f);
+				const double r = radiusAt(normals, offsets, c, margin_mm);
+				if (r >= kMinRadius_mm) candidates.push_back({c, r});
+			}
+	std::stable_sort(candidates.begin(), candidates.end(),
+	                 [](const Ball& a, const Ball& b) { return a.r > b.r; });
+	std::vector<Ball> chosen;
+	for (const auto& b : candidates)
+	{
+		if (chosen.size() == InnerBalls::kMax) break;
+		const bool apart =
+		    std::all_of(chosen.begin(), chosen.end(),
+		                [&](const Ball& c) { return (c.c - b.c).norm() >= kSpread * c.r; });
+		if (apart) chosen.push_back(b);
+	}
+	for (const auto& b : chosen)
+	{
+		out.x[out.n] = b.c.x(), out.y[out.n] = b.c.y(), out.z[out.n] = b.c.z();
+		out.r2[out.n] = b.r * b.r;
+		++out.n;
+	}
+	return out;
+}
+
+BallsSeen ballsSeenFrom(const InnerBalls& balls, const Eigen::Vector3d& c_O)
+{
+	BallsSeen s;
+	for (size_t b = 0; b < InnerBalls::kMax; ++b)
+	{
+		s.ox[b] = balls.x[b] - c_O.x(), s.oy[b] = balls.y[b] - c_O.y();
+		s.oz[b] = balls.z[b] - c_O.z(), s.r2[b] = balls.r2[b];
+	}
+	return s;
+}
+
+// every ball at once, no early exit and no branch, so that the loop is vectorised
+// (MROLR_SIMD_CLONES)
+MROLR_SIMD_CLONES bool throughBall(const BallsSeen& seen, const Eigen::Vector3d& d_O)
+{
+	const double dx = d_O.x(), dy = d_O.y(), dz = d_O.z();
+	const double dd = dx * dx + dy * dy + dz * dz;
+	long hit = 0;
+	for (size_t b = 0; b < InnerBalls::kMax; ++b)
+	{
+		const double ox = seen.ox[b], oy = seen.oy[b], oz = seen.oz[b], r2 = seen.r2[b];
+		const double od = ox * dx + oy * dy + oz * dz, oo = ox * ox + oy * oy + oz * oz;
+		const double ex = ox - dx, ey = oy - dy, ez = oz - dz;
+		// an end inside the ball, or the segment's point nearest the centre (0 < t < 1) inside it
+		const bool ends = (oo <= r2) | (ex * ex + ey * ey + ez * ez <= r2);
+		const bool between = (od > 0) & (od < dd) & (oo * dd - od * od <= r2 * dd);
+		hit += static_cast<long>(ends | between);
+	}
+	return hit != 0;
+}
+
+}  // namespace mrolr::recog
