@@ -29,10 +29,11 @@ std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSample
                                                              const Eigen::Isometry3d& T_OinL,
                                                              ScoreCap cap) const
 {
-	std::array<std::vector<EdgeSample>, 2> limbs;
+	// the sweep and the local search ask at every pose: the limbs' storage is kept per thread
+	static thread_local std::array<std::vector<EdgeSample>, 2> limbs;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		limbs[i] = images_[i].limbsSeen(samples, T_OinL);
+		images_[i].limbsSeen(samples, T_OinL, limbs[i]);
 		cap.unvisited += static_cast<int>(samples.samples_O.size() + limbs[i].size());
 	}
 	std::array<ImageCount, 2> counts;

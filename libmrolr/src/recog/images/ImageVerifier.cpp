@@ -211,14 +211,18 @@ std::vector<EdgeSample> EdgeImage::limbsSeen(const SightedSamples& ss,
                                              const Eigen::Isometry3d& T_OinL) const
 {
 	std::vector<EdgeSample> limbs;
-	if (!limbs_ || !ss.occ) return limbs;
+	limbsSeen(ss, T_OinL, limbs);
+	return limbs;
+}
+
+void EdgeImage::limbsSeen(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
+                          std::vector<EdgeSample>& limbs) const
+{
+	limbs.clear();
+	if (!limbs_ || !ss.occ) return;
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
 	for (const auto& body : ss.occ->revolutionBodies())
-	{
-		const auto l = limbSamples(body, c_O, limb_spacing_mm_);
-		limbs.insert(limbs.end(), l.begin(), l.end());
-	}
-	return limbs;
+		appendLimbSamples(body, c_O, limb_spacing_mm_, limbs);
 }
 
 ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,

@@ -57,7 +57,8 @@ struct Level
  * (the larger pair on a tie). */
 std::vector<ProfileSegment> profileOf(std::vector<Level> pts, double merge_mm)
 {
-	std::sort(pts.begin(), pts.end(), [](const Level& a, const Level& b) { return a.z_mm < b.z_mm; });
+	std::sort(pts.begin(), pts.end(),
+	          [](const Level& a, const Level& b) { return a.z_mm < b.z_mm; });
 	std::vector<std::vector<Level>> levels;
 	for (size_t i = 0; i < pts.size(); ++i)
 	{
@@ -151,6 +152,13 @@ std::vector<EdgeSample> limbSamples(const RevolutionBody& body, const Eigen::Vec
                                     double spacing_mm)
 {
 	std::vector<EdgeSample> out;
+	appendLimbSamples(body, c_O, spacing_mm, out);
+	return out;
+}
+
+void appendLimbSamples(const RevolutionBody& body, const Eigen::Vector3d& c_O, double spacing_mm,
+                       std::vector<EdgeSample>& out)
+{
 	for (const auto& [a, b] : limbLines(body, c_O))
 	{
 		const double len = (b - a).norm();
@@ -158,7 +166,6 @@ std::vector<EdgeSample> limbSamples(const RevolutionBody& body, const Eigen::Vec
 		const Eigen::Vector3d t = (b - a) / len;
 		for (int i = 0; i < n; ++i) out.push_back({a + (b - a) * (i + 0.5) / n, t, -1});
 	}
-	return out;
 }
 
 bool onSurface(const RevolutionBody& body, const Eigen::Vector3d& p_O, double tol_mm)

@@ -218,6 +218,9 @@ class EdgeImage
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
 	                                  const Eigen::Isometry3d& T_OinL) const;
+	/** The same into @p limbs (emptied first; its storage is kept). */
+	void limbsSeen(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	               std::vector<EdgeSample>& limbs) const;
 
 	/** Adds to @p terms a residual for each sample count() considers that lies on an edge of
 	 * compatible direction within @p truncate_px: its signed distance r = n·(px − e) to the line

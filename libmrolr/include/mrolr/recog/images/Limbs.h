@@ -62,6 +62,10 @@ std::vector<RevolutionBody> revolutionBodiesOf(const std::vector<Feature>& featu
  * generator; feature -1). A frustum seen along its axis from inside its cone shows no limb. */
 std::vector<EdgeSample> limbSamples(const RevolutionBody& body, const Eigen::Vector3d& c_O,
                                     double spacing_mm);
+/** limbSamples() appended to @p out (no allocation once @p out has grown: the sweep asks for
+ * them at every pose). */
+void appendLimbSamples(const RevolutionBody& body, const Eigen::Vector3d& c_O, double spacing_mm,
+                       std::vector<EdgeSample>& out);
 
 /** The outline generators themselves (end points), two per frustum that has them. */
 std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> limbLines(const RevolutionBody& body,
