@@ -72,8 +72,11 @@ BallsSeen ballsSeenFrom(const InnerBalls& balls, const Eigen::Vector3d& c_O)
 	BallsSeen s;
 	for (size_t b = 0; b < InnerBalls::kMax; ++b)
 	{
-		s.ox[b] = balls.x[b] - c_O.x(), s.oy[b] = balls.y[b] - c_O.y();
-		s.oz[b] = balls.z[b] - c_O.z(), s.r2[b] = balls.r2[b];
+		const double ox = balls.x[b] - c_O.x(), oy = balls.y[b] - c_O.y(),
+		             oz = balls.z[b] - c_O.z();
+		s.ox[b] = ox, s.oy[b] = oy, s.oz[b] = oz, s.r2[b] = balls.r2[b];
+		s.oo[b] = ox * ox + oy * oy + oz * oz;
+		s.camera_inside = s.camera_inside || s.oo[b] <= s.r2[b];
 	}
 	return s;
 }
@@ -87,15 +90,15 @@ MROLR_SIMD_CLONES bool throughBall(const BallsSeen& seen, const Eigen::Vector3d&
 	long hit = 0;
 	for (size_t b = 0; b < InnerBalls::kMax; ++b)
 	{
-		const double ox = seen.ox[b], oy = seen.oy[b], oz = seen.oz[b], r2 = seen.r2[b];
-		const double od = ox * dx + oy * dy + oz * dz, oo = ox * ox + oy * oy + oz * oz;
-		const double ex = ox - dx, ey = oy - dy, ez = oz - dz;
-		// an end inside the ball, or the segment's point nearest the centre (0 < t < 1) inside it
-		const bool ends = (oo <= r2) | (ex * ex + ey * ey + ez * ez <= r2);
+		// o the centre and d the point, both from the camera: the point inside the ball
+		// (|o − d|² <= r²), or the segment's point nearest the centre (0 < t < 1) inside it
+		const double od = seen.ox[b] * dx + seen.oy[b] * dy + seen.oz[b] * dz;
+		const double oo = seen.oo[b], r2 = seen.r2[b];
+		const bool end = oo - 2 * od + dd <= r2;
 		const bool between = (od > 0) & (od < dd) & (oo * dd - od * od <= r2 * dd);
-		hit += static_cast<long>(ends | between);
+		hit += static_cast<long>(end | between);
 	}
-	return hit != 0;
+	return seen.camera_inside || hit != 0;
 }
 
 }  // namespace mrolr::recog

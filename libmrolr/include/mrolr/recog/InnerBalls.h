@@ -34,6 +34,8 @@ InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
 struct BallsSeen
 {
 	InnerBalls::PerBall ox{}, oy{}, oz{}, r2{};
+	InnerBalls::PerBall oo{};    ///< |o|², o a centre from the camera
+	bool camera_inside = false;  ///< in one of the balls: every sight line passes through it
 };
 BallsSeen ballsSeenFrom(const InnerBalls& balls, const Eigen::Vector3d& c_O);
 
