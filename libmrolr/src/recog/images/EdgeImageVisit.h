@@ -8,6 +8,45 @@
 
 namespace mrolr::recog
 {
+// the per-sample look-ups, inline: every score and edge-line term calls them per sample
+inline EdgeImage::Pixel EdgeImage::pixelOf(const cv::Point2d& px)
+{
+	// px is inside the image (x, y >= 0): rounding half up is std::lround there
+	return {static_cast<int>(px.x + 0.5), static_cast<int>(px.y + 0.5)};
+}
+
+inline bool EdgeImage::supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const
+{
+	const Pixel at = pixelOf(px);
+	return dist_.ptr<float>(at.y)[at.x] <= dist_px_ && oriented(at, tangent_px);
+}
+
+inline double EdgeImage::distanceAt(const cv::Point2d& px) const
+{
+	const int x0 = std::min(static_cast<int>(px.x), dist_.cols - 2);
+	const int y0 = std::min(static_cast<int>(px.y), dist_.rows - 2);
+	const double fx = px.x - x0, fy = px.y - y0;
+	const float* r0 = dist_.ptr<float>(y0);
+	const float* r1 = dist_.ptr<float>(y0 + 1);
+	const auto d = [](const float* row, int x) { return static_cast<double>(row[x]); };
+	return (1 - fy) * ((1 - fx) * d(r0, x0) + fx * d(r0, x0 + 1)) +
+	       fy * ((1 - fx) * d(r1, x0) + fx * d(r1, x0 + 1));
+}
+
+inline bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) const
+{
+	const cv::Vec2f& n = nearest_normal_.ptr<cv::Vec2f>(at.y)[at.x];  // NaN: no edge
+	const double len = std::sqrt(tangent_px.x * tangent_px.x + tangent_px.y * tangent_px.y);
+	if (len <= 0) return false;  // an edge seen end-on has no direction to compare
+	return std::abs(n[0] * tangent_px.x + n[1] * tangent_px.y) <= sin_tol_ * len;
+}
+
+inline bool EdgeImage::occludedAt(const Pixel& at, double depth_mm) const
+{
+	if (occluder_z_.empty()) return false;
+	return depth_mm > occluder_z_.ptr<float>(at.y)[at.x] + occluder_margin_mm_;
+}
+
 template <bool kHiddenToo, class Fn, class Stop>
 void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
                               const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
