@@ -136,11 +136,6 @@ bool SelfOcclusion::hidden(const View& v, const Eigen::Vector3d& p_O) const
 	return crossesPolytope(v, p_O, outsideFaces(offsets_, p_O));
 }
 
-bool SelfOcclusion::hidden(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const
-{
-	return crossesPolytope(v, p_O, ps.outside_all);
-}
-
 SelfOcclusion::PointSight SelfOcclusion::pointSight(const Eigen::Vector3d& p_O) const
 {
 	PointSight ps;
@@ -241,10 +236,9 @@ bool SelfOcclusion::hiddenOnBodies(const View& v, const Eigen::Vector3d& p_O) co
 	return hiddenOnBodies(v, pointSight(p_O), p_O);
 }
 
-bool SelfOcclusion::hiddenOnBodies(const View& v, const PointSight& ps,
-                                   const Eigen::Vector3d& p_O) const
+bool SelfOcclusion::crossesBodies(const View& v, const PointSight& ps,
+                                  const Eigen::Vector3d& p_O) const
 {
-	if (!ps.on_bodies) return hidden(v, ps, p_O);
 	for (size_t k = 0; k < bodies_.size(); ++k)
 		if (((ps.on_bodies >> k) & 1u) && crossesSolid(bodies_[k], v.bodies_[k], p_O, margin_mm_))
 			return true;

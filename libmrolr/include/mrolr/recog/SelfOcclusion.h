@@ -111,6 +111,9 @@ class SelfOcclusion
 	/** True when the segment from the camera to @p p_O enters one of the faces the camera is
 	 * outside of (@p f) at @p t1 or later: gap >= t1 (nc − n·p) for some face. */
 	static bool enteredLate(const View::Faces& f, double t1, const Eigen::Vector3d& p_O);
+	/** True when the segment from the camera of @p v to @p p_O crosses the solid of one of the
+	 * bodies of revolution @p ps lies on (crossesSolid). */
+	bool crossesBodies(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const;
 	/** True when the segment from the camera of @p v to @p p_O (outside the faces @p p_outside)
 	 * crosses the shrunk polytope. */
 	bool crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
@@ -126,6 +129,22 @@ class SelfOcclusion
 	std::vector<double> rest_offsets_;  ///< polytope of the features off the bodies (may be empty)
 	double margin_mm_;
 };
+
+// The per-sample tests, inline: the image verification asks them of every sample at every pose,
+// and a sample that shares an outside face with the camera (most of those in view) needs no call.
+inline bool SelfOcclusion::hidden(const View& v, const PointSight& ps,
+                                  const Eigen::Vector3d& p_O) const
+{
+	const auto& out = ps.outside_all;
+	if ((out[0] & v.all_.outside[0]) | (out[1] & v.all_.outside[1])) return false;
+	return crossesPolytope(v, p_O, out);
+}
+
+inline bool SelfOcclusion::hiddenOnBodies(const View& v, const PointSight& ps,
+                                          const Eigen::Vector3d& p_O) const
+{
+	return ps.on_bodies ? crossesBodies(v, ps, p_O) : hidden(v, ps, p_O);
+}
 
 /** Points along a feature: a line's samples from end to end, a conic's around its rim (an ellipse
  * as a circle of the mean semi-axis: the feature keeps no major-axis direction). */
