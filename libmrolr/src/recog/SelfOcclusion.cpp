@@ -107,7 +107,7 @@ SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& o
 		if (nc[i] <= offsets[i]) continue;
 		f.outside[i >> 6] |= std::uint64_t{1} << (i & 63);
 		f.nx[f.n] = nx_[i], f.ny[f.n] = ny_[i], f.nz[f.n] = nz_[i];
-		f.nc[f.n] = nc[i], f.gap[f.n] = nc[i] - offsets[i];
+		f.nc[f.n] = nc[i], f.gap[f.n] = nc[i] - offsets[i], f.offset[f.n] = offsets[i];
 		++f.n;
 	}
 	return f;
@@ -173,6 +173,11 @@ bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 	// crossesPolytope's clipping over every face at once (a limb point has no PointSight: it
 	// moves with the camera): the same arithmetic, so the same answers
 	if (rest_offsets_.empty()) return false;
+	// first, one face at a time, a face both ends are outside of (the camera is outside those of
+	// rest_): a miss. Nine limb points in ten find one, most of them early.
+	const View::Faces& f = v.rest_;
+	for (size_t k = 0; k < f.n; ++k)
+		if (f.nx[k] * p_O.x() + f.ny[k] * p_O.y() + f.nz[k] * p_O.z() > f.offset[k]) return false;
 	using Faces = Eigen::Map<const Eigen::ArrayXd>;
 	using Row = Eigen::Array<double, Eigen::Dynamic, 1, 0, View::kMaxFaces, 1>;  // no heap
 	const auto n = static_cast<Eigen::Index>(rest_offsets_.size());

@@ -66,8 +66,8 @@ class SelfOcclusion
 		struct Faces
 		{
 			std::array<std::uint64_t, 2> outside = {0, 0};  ///< bit i: n_i·c_O > offset_i
-			/** The same n faces, one array per term: normal, n·c, n·c − offset. */
-			PerFace nx, ny, nz, nc, gap;
+			/** The same n faces, one array per term: normal, n·c, n·c − offset, offset. */
+			PerFace nx, ny, nz, nc, gap, offset;
 			size_t n = 0;
 		};
 		Eigen::Vector3d c_O_;
