@@ -230,6 +230,14 @@ bool crossesSolid(const RevolutionBody& body, const BodySight& sight, const Eige
 	const Eigen::Vector3d v = p_O - sight.c_O;
 	const Eigen::Vector2d w1(v.dot(sight.e1), v.dot(sight.e2));
 	const double dz = v.dot(body.axis_dir);
+	// a quick miss: the segment keeps farther from the axis than the widest shrunk frustum
+	// reaches (with a margin far above rounding, so that the test below could only agree)
+	double r_max = 0;
+	for (const auto& s : body.profile) r_max = std::max({r_max, s.r0_mm, s.r1_mm});
+	const double ww = w1.squaredNorm();
+	const double t = ww > 0 ? std::clamp(-sight.w0.dot(w1) / ww, 0.0, 1.0) : 0.0;
+	const double reach = std::max(0.0, r_max - margin_mm) + 1e-6;
+	if ((sight.w0 + t * w1).squaredNorm() > reach * reach) return false;
 	for (const auto& s : body.profile)
 		if (crossesFrustum(s, sight.cz, dz, sight.w0, w1, margin_mm)) return true;
 	return false;
