@@ -3,24 +3,17 @@
 #include <mrolr/recog/PairPrefilter.h>
 #include <mrolr/sim/SyntheticObjects.h>
 
+#include "recog_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 using namespace mrolr::recog;
+using test::randomPose;
 
 namespace
 {
-Eigen::Isometry3d randomPose(std::mt19937& rng)
-{
-	std::uniform_real_distribution<> u(-1, 1);
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
-	                 .toRotationMatrix();
-	T.translation() = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 500;
-	return T;
-}
-
 /** @p f moved by a small random motion (up to @p mm and @p rad), as a noisy scene sees it. */
 Feature jittered(const Feature& f, std::mt19937& rng, double mm, double rad)
 {

@@ -2,11 +2,14 @@
 #include <mrolr/recog/PairRelation.h>
 #include <mrolr/sim/SyntheticObjects.h>
 
+#include "recog_test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 using namespace mrolr::recog;
+using test::randomPose;
 using namespace mrolr::sim;
 
 namespace
@@ -16,16 +19,6 @@ Feature line(Eigen::Vector3d a, Eigen::Vector3d b)
 	mrolr::model::WireFrame wf;
 	wf.lines.push_back({1, a, b});
 	return featuresOf(wf).front();
-}
-
-Eigen::Isometry3d randomPose(std::mt19937& rng)
-{
-	std::uniform_real_distribution<> u(-1, 1);
-	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-	T.linear() = Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
-	                 .toRotationMatrix();
-	T.translation() = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 500;
-	return T;
 }
 }  // namespace
 

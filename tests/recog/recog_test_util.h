@@ -7,11 +7,24 @@
 
 #include <Eigen/Geometry>
 
+#include <random>
+
 namespace mrolr::recog::test
 {
 inline double rotationErrorDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b)
 {
 	return rotationDistanceDeg(a.linear(), b.linear());
+}
+
+/** A pose of uniformly random rotation and translation within ±500 mm on each axis. */
+inline Eigen::Isometry3d randomPose(std::mt19937& rng)
+{
+	std::uniform_real_distribution<> u(-1, 1);
+	Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+	T.linear() = Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
+	                 .toRotationMatrix();
+	T.translation() = Eigen::Vector3d(u(rng), u(rng), u(rng)) * 500;
+	return T;
 }
 
 /** Translation error at the model's origin (mm). */
