@@ -199,11 +199,14 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen:
 {
 	ImageCount c;
 	bool exceeded = false;
+	// the cap is asked every 4th sample and once at the end: once exceeded it stays so (its
+	// bounds only tighten as samples are counted), so the answer is the same, for 3 tests in 4
+	// fewer and at most 3 samples more
 	const auto stop = [&]
 	{
 		if (!cap) return false;
 		--cap->unvisited;
-		exceeded = exceeded || cap->exceeded();
+		if (cap->unvisited % 4 == 0) exceeded = cap->exceeded();
 		return exceeded;
 	};
 	forEachInView<false>(
@@ -228,7 +231,7 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen:
 		    if (cap) cap->sum_px2 += d * d;
 	    },
 	    stop, &c.outside);
-	if (exceeded) return std::nullopt;
+	if (cap && (exceeded || cap->exceeded())) return std::nullopt;
 	return c;
 }
 
