@@ -221,6 +221,7 @@ BodySight bodySight(const RevolutionBody& body, const Eigen::Vector3d& c_O)
 	const Eigen::Vector3d c = c_O - body.axis_point;
 	s.w0 = Eigen::Vector2d(c.dot(s.e1), c.dot(s.e2));
 	s.cz = c.dot(d);
+	for (const auto& p : body.profile) s.r_max_mm = std::max({s.r_max_mm, p.r0_mm, p.r1_mm});
 	return s;
 }
 
@@ -232,11 +233,9 @@ bool crossesSolid(const RevolutionBody& body, const BodySight& sight, const Eige
 	const double dz = v.dot(body.axis_dir);
 	// a quick miss: the segment keeps farther from the axis than the widest shrunk frustum
 	// reaches (with a margin far above rounding, so that the test below could only agree)
-	double r_max = 0;
-	for (const auto& s : body.profile) r_max = std::max({r_max, s.r0_mm, s.r1_mm});
 	const double ww = w1.squaredNorm();
 	const double t = ww > 0 ? std::clamp(-sight.w0.dot(w1) / ww, 0.0, 1.0) : 0.0;
-	const double reach = std::max(0.0, r_max - margin_mm) + 1e-6;
+	const double reach = std::max(0.0, sight.r_max_mm - margin_mm) + 1e-6;
 	if ((sight.w0 + t * w1).squaredNorm() > reach * reach) return false;
 	for (const auto& s : body.profile)
 		if (crossesFrustum(s, sight.cz, dz, sight.w0, w1, margin_mm)) return true;

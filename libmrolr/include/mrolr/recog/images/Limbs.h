@@ -81,6 +81,7 @@ struct BodySight
 	Eigen::Vector3d c_O, e1, e2;  ///< camera centre; two unit vectors normal to the axis
 	Eigen::Vector2d w0;           ///< camera relative to the axis point, along e1, e2
 	double cz = 0;                ///< ... and along the axis
+	double r_max_mm = 0;          ///< the body's widest radius
 };
 BodySight bodySight(const RevolutionBody& body, const Eigen::Vector3d& c_O);
 
