@@ -97,7 +97,10 @@ class ConsistentSetSearch
 	{
 		record();
 		if (k == cands_.size() || --budget_ <= 0) return;
-		if (chosen_.size() + (cands_.size() - k) < best_.front().size()) return;
+		// below here no set is larger than the largest found so far, and one as large is kept
+		// only while the alternatives are not full: past that nothing found here is kept
+		const size_t reach = chosen_.size() + (cands_.size() - k), best = best_.front().size();
+		if (reach < best || (reach == best && best_.size() == kAlternatives)) return;
 		for (size_t i = 0; i < cands_[k].size(); ++i)
 		{
 			const FeatureMatch& c = cands_[k][i];
