@@ -26,18 +26,39 @@ class ConsistentSetSearch
 	{
 	}
 
-	/** The largest sets for @p focus among @p candidates (one list per member), each search with
-	 * its own node budget; the search's buffers are kept from one focus match to the next. */
-	std::vector<std::vector<FeatureMatch>> run(const FeatureMatch& focus,
-	                                           std::vector<std::vector<FeatureMatch>>&& candidates)
+	/** Starts the candidates of a new focus match: members are then added in clique order. */
+	void clearMembers() { members_.clear(), by_member_.clear(); }
+	/** Appends the next member's candidates to this (they stay in the order appended). */
+	std::vector<FeatureMatch>& candidates() { return by_member_; }
+	/** Closes the member whose candidates were appended since the last call; true when it has
+	 * none. */
+	bool closeMember()
+	{
+		const size_t begin = members_.empty() ? 0 : members_.back().end;
+		members_.push_back({begin, by_member_.size()});
+		return begin == by_member_.size();
+	}
+
+	/** The largest sets for @p focus among the members' candidates, each search with its own node
+	 * budget; the search's buffers are kept from one focus match to the next. */
+	const std::vector<std::vector<FeatureMatch>>& run(const FeatureMatch& focus)
 	{
 		budget_ = max_nodes_;
-		cands_ = std::move(candidates);
-		std::sort(cands_.begin(), cands_.end(),
-		          [](const auto& a, const auto& b) { return a.size() < b.size(); });
-		first_.clear();
-		size_t n = 0;
-		for (const auto& c : cands_) first_.push_back(n), n += c.size();
+		// the members by their number of candidates (std::sort, as on the lists themselves: the
+		// same order)
+		order_.resize(members_.size());
+		for (size_t k = 0; k < order_.size(); ++k) order_[k] = k;
+		std::sort(order_.begin(), order_.end(),
+		          [&](size_t a, size_t b) { return members_[a].size() < members_[b].size(); });
+		cands_.clear(), first_.clear();
+		for (const size_t k : order_)
+		{
+			first_.push_back(cands_.size());
+			cands_.insert(cands_.end(), by_member_.begin() + static_cast<long>(members_[k].begin),
+			              by_member_.begin() + static_cast<long>(members_[k].end));
+		}
+		first_.push_back(cands_.size());
+		const size_t n = cands_.size();
 		pairs_ = n;
 		// a table of n² answers; beyond kMaxKnown (a scene of thousands of candidates) every pair
 		// is asked afresh instead
@@ -96,16 +117,17 @@ class ConsistentSetSearch
 	void dfs(size_t k)
 	{
 		record();
-		if (k == cands_.size() || --budget_ <= 0) return;
+		const size_t members = first_.size() - 1;
+		if (k == members || --budget_ <= 0) return;
 		// below here no set is larger than the largest found so far, and one as large is kept
 		// only while the alternatives are not full: past that nothing found here is kept
-		const size_t reach = chosen_.size() + (cands_.size() - k), best = best_.front().size();
+		const size_t reach = chosen_.size() + (members - k), best = best_.front().size();
 		if (reach < best || (reach == best && best_.size() == kAlternatives)) return;
-		for (size_t i = 0; i < cands_[k].size(); ++i)
+		for (size_t i = first_[k]; i < first_[k + 1]; ++i)
 		{
-			const FeatureMatch& c = cands_[k][i];
-			if (!fits(c, first_[k] + i)) continue;
-			chosen_.push_back(c), chosen_index_.push_back(first_[k] + i);
+			const FeatureMatch& c = cands_[i];
+			if (!fits(c, i)) continue;
+			chosen_.push_back(c), chosen_index_.push_back(i);
 			dfs(k + 1);
 			chosen_.pop_back(), chosen_index_.pop_back();
 			if (budget_ <= 0) return;
@@ -118,8 +140,17 @@ class ConsistentSetSearch
 	Tolerance tol_;
 	int max_nodes_;
 	int budget_ = 0;
-	std::vector<std::vector<FeatureMatch>> cands_;
-	std::vector<size_t> first_;       ///< index of each member's first candidate
+	/** A member's candidates in by_member_: [begin, end). */
+	struct Range
+	{
+		size_t begin, end;
+		size_t size() const { return end - begin; }
+	};
+	std::vector<FeatureMatch> by_member_;  ///< the members' candidates, in clique order
+	std::vector<Range> members_;
+	std::vector<size_t> order_;       ///< the members by their number of candidates
+	std::vector<FeatureMatch> cands_;  ///< the candidates in that order
+	std::vector<size_t> first_;       ///< index of each member's first candidate; then the end
 	size_t pairs_ = 0;                ///< candidates of all members
 	std::vector<std::int8_t> known_;  ///< pairConsistent's answers (kUnknown: not asked yet)
 	std::vector<FeatureMatch> chosen_;
@@ -127,34 +158,30 @@ class ConsistentSetSearch
 	std::vector<std::vector<FeatureMatch>> best_;
 };
 
-/** Scene matches of member j (among its gated features) consistent with the focus match. */
-std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
-                                           const std::vector<size_t>& gated,
-                                           const FeatureMatch& focus, const OrientedScene& scene,
-                                           const Tolerance& tol)
+/** Appends to @p out the scene matches of member j (among its gated features) consistent with
+ * the focus match. */
+void memberCandidates(const ModelTable& model, size_t j, const std::vector<size_t>& gated,
+                      const FeatureMatch& focus, const OrientedScene& scene, const Tolerance& tol,
+                      std::vector<FeatureMatch>& out)
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
-	std::vector<FeatureMatch> out;
 	for (size_t o : gated)
 		if (o / 2 != focus.scene() &&
 		    consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented],
 		               scene.oriented[o], tol))
 			out.push_back({j, o});
-	return out;
 }
 
 /** The same, seeking them among the scene features @p members lists for the focus match
  * (@p kept_index: each scene feature's index among the level's kept ones, -1 if not kept). */
-std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
-                                           const FeatureMatch& focus, const OrientedScene& scene,
-                                           const LevelParams& p, const Tolerance& tol,
-                                           MemberCandidates& members,
-                                           const std::vector<int>& kept_index)
+void memberCandidates(const ModelTable& model, size_t j, const FeatureMatch& focus,
+                      const OrientedScene& scene, const LevelParams& p, const Tolerance& tol,
+                      MemberCandidates& members, const std::vector<int>& kept_index,
+                      std::vector<FeatureMatch>& out)
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
-	std::vector<FeatureMatch> out;
 	const size_t src = scene.source[focus.scene()];
 	for (const std::uint32_t code : members.of(focus.model, j, src, focus.oriented % 2 == 1))
 	{
@@ -166,7 +193,6 @@ std::vector<FeatureMatch> memberCandidates(const ModelTable& model, size_t j,
 		               scene.oriented[o], tol))
 			out.push_back({j, o});
 	}
-	return out;
 }
 
 /** Each of the @p n scene features' index among @p scene's kept ones (-1 when not kept). */
@@ -241,23 +267,24 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 	const int spare = static_cast<int>(clique.members.size()) + 1 - p.clique_size;
 	if (spare < 0) return out;
 	ConsistentSetSearch search(model, scene, tol, max_nodes);
-	std::vector<std::vector<FeatureMatch>> cands;
 	for (size_t o : passingUnaryGate(mfocus, scene.oriented, p, true))
 	{
 		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;
 		const FeatureMatch focus{clique.focus, o};
-		cands.clear();
+		search.clearMembers();
 		int without = 0;
 		for (size_t k = 0; k < clique.members.size() && without <= spare; ++k)
 		{
-			cands.push_back(
-			    members ? memberCandidates(model, clique.members[k], focus, scene, p, tol, *members,
-			                               kept_index)
-			            : memberCandidates(model, clique.members[k], gated[k], focus, scene, tol));
-			without += cands.back().empty() ? 1 : 0;
+			if (members)
+				memberCandidates(model, clique.members[k], focus, scene, p, tol, *members,
+				                 kept_index, search.candidates());
+			else
+				memberCandidates(model, clique.members[k], gated[k], focus, scene, tol,
+				                 search.candidates());
+			without += search.closeMember() ? 1 : 0;
 		}
 		if (without > spare) continue;
-		for (auto& ms : search.run(focus, std::move(cands)))
+		for (const auto& ms : search.run(focus))
 			if (static_cast<int>(ms.size()) >= p.clique_size)
 				out.push_back({clique_index, ms, strengthOf(model, ms)});
 	}
