@@ -22,10 +22,16 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
                                                        size_t focus_scene, bool focus_flipped)
 {
 	const size_t n = model_.features().size();
-	const std::uint64_t o_focus = 2 * focus_scene + (focus_flipped ? 1 : 0);
-	const std::uint64_t key = (focus * n + member) * oriented_.size() + o_focus;
-	const auto [it, fresh] = lists_.try_emplace(key);
-	if (!fresh) return it->second;
+	const size_t o_focus = 2 * focus_scene + (focus_flipped ? 1 : 0);
+	if (pair_slot_.empty()) pair_slot_.assign(n * n, -1);
+	std::int32_t& slot = pair_slot_[focus * n + member];
+	if (slot < 0)
+		slot = static_cast<std::int32_t>(by_pair_.size()),
+		by_pair_.emplace_back(oriented_.size(), -1);
+	std::int32_t& index = by_pair_[static_cast<size_t>(slot)][o_focus];
+	if (index >= 0) return lists_[static_cast<size_t>(index)];
+	index = static_cast<std::int32_t>(lists_.size());
+	std::vector<std::uint32_t>& list = lists_.emplace_back();
 	const auto& mf = model_.features();
 	const auto& rel = model_.relation(focus, member);
 	const Feature& sa = oriented_[o_focus];
@@ -36,9 +42,9 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	{
 		const size_t o = gated.index[k];
 		if (keep_[k] && consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
-			it->second.push_back(static_cast<std::uint32_t>(o));
+			list.push_back(static_cast<std::uint32_t>(o));
 	}
-	return it->second;
+	return list;
 }
 
 const MemberCandidates::Gated& MemberCandidates::gatedFor(size_t member)

@@ -11,6 +11,7 @@
 #include <mrolr/recog/RecognitionOptions.h>
 
 #include <cstdint>
+#include <deque>
 #include <unordered_map>
 #include <vector>
 
@@ -37,7 +38,11 @@ class MemberCandidates
 	const ModelTable& model_;
 	std::vector<Feature> oriented_;  ///< 2k: scene feature k, 2k + 1: flipped
 	Tolerance loosest_;
-	std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> lists_;
+	/** The lists computed: per (focus, member) pair asked, an index into lists_ per oriented focus
+	 * scene feature (-1: not yet); a direct look-up (a hash map's cost more than the lists). */
+	std::vector<std::int32_t> pair_slot_;             ///< per focus × member: into by_pair_, or -1
+	std::vector<std::vector<std::int32_t>> by_pair_;  ///< per oriented scene feature: into lists_
+	std::deque<std::vector<std::uint32_t>> lists_;    ///< a deque: of()'s references stay valid
 	/** The oriented scene features passing a model feature's gate, also packed for
 	 * mayBeConsistent (PairPrefilter.h). */
 	struct Gated
