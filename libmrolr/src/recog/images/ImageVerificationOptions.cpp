@@ -1,5 +1,5 @@
 // [image_verification]: its keys declared once (util/OptionsBinder.h).
-#include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/images/ImageVerificationOptions.h>
 #include <mrolr/util/OptionsBinder.h>
 
 namespace mrolr::recog
