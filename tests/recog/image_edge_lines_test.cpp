@@ -83,3 +83,40 @@ TEST(ImageEdgeLines, ReachBoundsTheMoveOfThePointAndTheTurn)
 	// 10 deg about a point 200 mm away moves a_O by about 35 mm
 	EXPECT_FALSE(withinRefinementReach(turned(10, a_O + Eigen::Vector3d(200, 0, 0)), start, a_O));
 }
+
+// The local search takes a kept step's terms from the samples its score found on edges
+// (EdgeImage::count's AlignedSamples): they are the terms of a walk over the samples, to the bit,
+// at poses around the drawn one (some samples hidden, some beyond the truncation). A sample left
+// out, or one the walk skips (occluded, off its edge's direction), changes them.
+TEST(ImageEdgeLines, TermsFromACountsAlignedSamplesAreTheWalksToTheBit)
+{
+	const Pair p;
+	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
+	const double truncate_px = p.images.options().truncate_px;
+	int compared = 0;
+	for (int k = 0; k < 12; ++k)
+	{
+		const double s = (k - 6) / 3.0;
+		const Eigen::Isometry3d T =
+		    Eigen::Translation3d(1.5 * s, -s, 0.5 * s) * boxPose() *
+		    Eigen::AngleAxisd(3 * s * M_PI / 180, Eigen::Vector3d(1, -2, 1).normalized());
+		const Eigen::Vector3d c_L = T.translation();
+		for (int i = 0; i < 2; ++i)
+		{
+			const EdgeImage& image = p.images.image(i);
+			const auto limbs = image.limbsSeen(samples, T);
+			std::vector<AlignedSample> aligned;
+			ASSERT_TRUE(image.count(samples, T, limbs, truncate_px, nullptr, &aligned));
+			EdgeLineTerms from_count, from_walk;
+			image.addEdgeLines(aligned, c_L, truncate_px, from_count);
+			image.addEdgeLines(samples, T, limbs, c_L, truncate_px, from_walk);
+			EXPECT_GT(from_walk.n, 50);
+			EXPECT_EQ(from_count.n, from_walk.n);
+			EXPECT_TRUE(from_count.H == from_walk.H) << k << " " << i;
+			EXPECT_TRUE(from_count.g == from_walk.g) << k << " " << i;
+			EXPECT_EQ(from_count.r2, from_walk.r2);
+			++compared;
+		}
+	}
+	EXPECT_EQ(compared, 24);
+}

@@ -49,11 +49,37 @@ bool withinRefinementReach(const Eigen::Isometry3d& T_OinL, const Eigen::Isometr
 	       angle <= kRefinementReach_deg * M_PI / 180;
 }
 
+void EdgeImage::addEdgeLine(const AlignedSample& a, const Eigen::Vector3d& c_L,
+                            double truncate_px, EdgeLineTerms& terms) const
+{
+	const cv::Point2d& px = a.px;
+	const Eigen::Vector3d& p_C = a.p_C;
+	const Pixel at = pixelOf(px);
+	if (dist_.ptr<float>(at.y)[at.x] > truncate_px) return;
+	const size_t label = static_cast<size_t>(labels_.ptr<int>(at.y)[at.x]);
+	const cv::Point2f& n = normal_[label];
+	const cv::Point2f& e = edge_px_[label];
+	const double r = n.x * (px.x - e.x) + n.y * (px.y - e.y);
+	// n·(d px / d p_C) of the pinhole (the distortion's derivative is left out: a step is kept
+	// only if the exact cost falls), then carried into L
+	const double iz = 1 / p_C.z(), fx = K_(0, 0) * iz, fy = K_(1, 1) * iz;
+	const Eigen::Vector3d dr_dpC(n.x * fx, n.y * fy,
+	                             -(n.x * fx * p_C.x() + n.y * fy * p_C.y()) * iz);
+	const Eigen::Matrix3d R_CinL = T_CcvInL_.linear();
+	const Eigen::Vector3d w = R_CinL * dr_dpC;
+	const Eigen::Vector3d arm = T_CcvInL_ * p_C - c_L;
+	Eigen::Matrix<double, 6, 1> J;
+	J << w, arm.cross(w);  // a point moves by dt + dω × arm
+	terms.H.selfadjointView<Eigen::Lower>().rankUpdate(J);
+	terms.g += J * r;
+	terms.r2 += r * r;
+	++terms.n;
+}
+
 void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
                              const std::vector<EdgeSample>& limbs, const Eigen::Vector3d& c_L,
                              double truncate_px, EdgeLineTerms& terms) const
 {
-	const Eigen::Matrix3d R_CinL = T_CcvInL_.linear();
 	forEachInView<false>(
 	    s, T_OinL, limbs,
 	    [&](const cv::Point2d& px, const cv::Point2d& tangent, bool, bool,
@@ -61,26 +87,16 @@ void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T
 	    {
 		    const Pixel at = pixelOf(px);
 		    if (occludedAt(at, p_C.z()) || !oriented(at, tangent)) return;
-		    if (dist_.ptr<float>(at.y)[at.x] > truncate_px) return;
-		    const size_t label = static_cast<size_t>(labels_.ptr<int>(at.y)[at.x]);
-		    const cv::Point2f& n = normal_[label];
-		    const cv::Point2f& e = edge_px_[label];
-		    const double r = n.x * (px.x - e.x) + n.y * (px.y - e.y);
-		    // n·(d px / d p_C) of the pinhole (the distortion's derivative is left out: a step
-		    // is kept only if the exact cost falls), then carried into L
-		    const double iz = 1 / p_C.z(), fx = K_(0, 0) * iz, fy = K_(1, 1) * iz;
-		    const Eigen::Vector3d dr_dpC(n.x * fx, n.y * fy,
-		                                 -(n.x * fx * p_C.x() + n.y * fy * p_C.y()) * iz);
-		    const Eigen::Vector3d w = R_CinL * dr_dpC;
-		    const Eigen::Vector3d a = T_CcvInL_ * p_C - c_L;
-		    Eigen::Matrix<double, 6, 1> J;
-		    J << w, a.cross(w);  // a point moves by dt + dω × a
-		    terms.H.selfadjointView<Eigen::Lower>().rankUpdate(J);
-		    terms.g += J * r;
-		    terms.r2 += r * r;
-		    ++terms.n;
+		    addEdgeLine({px, p_C}, c_L, truncate_px, terms);
 	    },
 	    [] { return false; }, nullptr);
+}
+
+void EdgeImage::addEdgeLines(const std::vector<AlignedSample>& aligned,
+                             const Eigen::Vector3d& c_L, double truncate_px,
+                             EdgeLineTerms& terms) const
+{
+	for (const AlignedSample& a : aligned) addEdgeLine(a, c_L, truncate_px, terms);
 }
 
 EdgeLineTerms ImageVerifier::edgeLines(const SightedSamples& samples,
@@ -95,6 +111,15 @@ EdgeLineTerms ImageVerifier::edgeLines(const SightedSamples& samples,
 	return t;
 }
 
+EdgeLineTerms ImageVerifier::edgeLines(const AlignedPair& aligned, const Eigen::Vector3d& c_L) const
+{
+	EdgeLineTerms t;
+	for (size_t i = 0; i < images_.size(); ++i)
+		images_[i].addEdgeLines(aligned[i], c_L, opts_.truncate_px, t);
+	t.H = t.H.selfadjointView<Eigen::Lower>();
+	return t;
+}
+
 ScoredPose ImageVerifier::edgeLineSearch(const SightedSamples& samples, const ScoredPose& start,
                                          const Eigen::Vector3d& axis_O) const
 {
@@ -103,6 +128,8 @@ ScoredPose ImageVerifier::edgeLineSearch(const SightedSamples& samples, const Sc
 	double damping = kStartDamping;
 	Eigen::Vector3d c_L = best * axis_O;
 	EdgeLineTerms t = edgeLines(samples, best, c_L);
+	// a step's score keeps the samples it found on edges: a kept step's terms come from them
+	static thread_local AlignedPair aligned;
 	for (int k = 0; k < kMaxEdgeLineSteps && damping <= kMaxDamping && t.n >= 6; ++k)
 	{
 		Eigen::Matrix<double, 6, 6> A = t.H;
@@ -110,7 +137,7 @@ ScoredPose ImageVerifier::edgeLineSearch(const SightedSamples& samples, const Sc
 		const Eigen::Matrix<double, 6, 1> d = -A.ldlt().solve(t.g);
 		const Eigen::Isometry3d T = stepped(best, c_L, d);
 		const auto s = withinRefinementReach(T, start.T, axis_O)
-		                   ? scoreIfCheaper(samples, T, best_s.cost)
+		                   ? scoreIfCheaper(samples, T, best_s.cost, &aligned)
 		                   : std::nullopt;
 		if (!s)
 		{
@@ -122,7 +149,7 @@ ScoredPose ImageVerifier::edgeLineSearch(const SightedSamples& samples, const Sc
 		if (d.head<3>().norm() < kConvergedStep_mm && d.tail<3>().norm() < kConvergedStep_rad)
 			break;
 		c_L = best * axis_O;
-		t = edgeLines(samples, best, c_L);
+		t = edgeLines(aligned, c_L);
 	}
 	return {best, best_s};
 }

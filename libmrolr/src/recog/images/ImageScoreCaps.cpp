@@ -9,9 +9,17 @@ std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& sa
                                                         const Eigen::Isometry3d& T_OinL,
                                                         double max_cost_px2) const
 {
+	return scoreIfCheaper(samples, T_OinL, max_cost_px2, nullptr);
+}
+
+std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& samples,
+                                                        const Eigen::Isometry3d& T_OinL,
+                                                        double max_cost_px2,
+                                                        AlignedPair* aligned) const
+{
 	ScoreCap cap;
 	cap.max_mean_px2 = max_cost_px2;
-	const auto s = scoreUnlessExceeded(samples, T_OinL, cap);
+	const auto s = scoreUnlessExceeded(samples, T_OinL, cap, aligned);
 	if (!s || s->cost >= max_cost_px2) return std::nullopt;
 	return s;
 }
@@ -27,7 +35,8 @@ std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& sampl
 
 std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSamples& samples,
                                                              const Eigen::Isometry3d& T_OinL,
-                                                             ScoreCap cap) const
+                                                             ScoreCap cap,
+                                                             AlignedPair* aligned) const
 {
 	// the sweep and the local search ask at every pose: the limbs' storage is kept per thread
 	static thread_local std::array<std::vector<EdgeSample>, 2> limbs;
@@ -39,7 +48,8 @@ std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSample
 	std::array<ImageCount, 2> counts;
 	for (size_t i = 0; i < images_.size(); ++i)
 	{
-		const auto c = images_[i].count(samples, T_OinL, limbs[i], opts_.truncate_px, &cap);
+		const auto c = images_[i].count(samples, T_OinL, limbs[i], opts_.truncate_px, &cap,
+		                                aligned ? &(*aligned)[i] : nullptr);
 		if (!c) return std::nullopt;
 		counts[i] = *c;
 	}

@@ -195,7 +195,24 @@ ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_
 
 std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
                                            const std::vector<EdgeSample>& limbs, double truncate_px,
-                                           ScoreCap* cap) const
+                                           ScoreCap* cap, std::vector<AlignedSample>* aligned) const
+{
+	// two instances, so that the counts that keep nothing (the sweep's) pay nothing for it
+	if (!aligned)
+		return countKeeping(s, T_OinL, limbs, truncate_px, cap,
+		                    [](const cv::Point2d&, const Eigen::Vector3d&) {});
+	aligned->clear();
+	return countKeeping(s, T_OinL, limbs, truncate_px, cap,
+	                    [aligned](const cv::Point2d& px, const Eigen::Vector3d& p_C)
+	                    { aligned->push_back({px, p_C}); });
+}
+
+template <class Keep>
+std::optional<ImageCount> EdgeImage::countKeeping(const SightedSamples& s,
+                                                  const Eigen::Isometry3d& T_OinL,
+                                                  const std::vector<EdgeSample>& limbs,
+                                                  double truncate_px, ScoreCap* cap,
+                                                  Keep keep) const
 {
 	ImageCount c;
 	bool exceeded = false;
@@ -221,12 +238,13 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen:
 			    return;
 		    }
 		    ++c.considered;
-		    const bool aligned = oriented(at, tangent);
-		    const int supported = aligned && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
+		    const bool on_edge = oriented(at, tangent);
+		    if (on_edge) keep(px, p_C);
+		    const int supported = on_edge && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
 		    c.supported += supported;
 		    if (cap) ++cap->considered, cap->supported += supported;
 		    if (truncate_px <= 0) return;
-		    const double d = aligned ? std::min(truncate_px, distanceAt(px)) : truncate_px;
+		    const double d = on_edge ? std::min(truncate_px, distanceAt(px)) : truncate_px;
 		    c.cost_px2 += d * d;
 		    if (cap) cap->sum_px2 += d * d;
 	    },

@@ -118,6 +118,15 @@ struct EdgeLineTerms
 	int n = 0;
 };
 
+/** A sample that count() considered and found on an edge of compatible direction (within
+ * orientation_tol_deg, at any distance): its pixel, and its point in the camera's frame (OpenCV
+ * axes, mm). What the edge-line terms of the same pose need of it. */
+struct AlignedSample
+{
+	cv::Point2d px;
+	Eigen::Vector3d p_C;
+};
+
 /** How far the local search of ImageVerifier::refine may take a pose from where it started (the
  * move of the refinement's axis point, and the angle): a refinement refines. Measured without
  * the bound (and before sub-pixel edges): twice the 99th percentile of the moves of the
@@ -159,10 +168,12 @@ class EdgeImage
 	ImageCount count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                 double truncate_px = 0) const;
 	/** count() with the limbs given (limbsSeen()): the counts, or empty as soon as @p cap (may be
-	 * null: never) is exceeded, the samples counted having been added to it. */
+	 * null: never) is exceeded, the samples counted having been added to it. With @p aligned
+	 * (may be null), its AlignedSamples in their order (the buffer emptied first). */
 	std::optional<ImageCount> count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                                const std::vector<EdgeSample>& limbs, double truncate_px,
-	                                ScoreCap* cap) const;
+	                                ScoreCap* cap,
+	                                std::vector<AlignedSample>* aligned = nullptr) const;
 	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
@@ -178,6 +189,9 @@ class EdgeImage
 	 * about the point @p c_L. */
 	void addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                  const std::vector<EdgeSample>& limbs, const Eigen::Vector3d& c_L,
+	                  double truncate_px, EdgeLineTerms& terms) const;
+	/** The same from the AlignedSamples a count() of the pose gave: the same terms. */
+	void addEdgeLines(const std::vector<AlignedSample>& aligned, const Eigen::Vector3d& c_L,
 	                  double truncate_px, EdgeLineTerms& terms) const;
 
 	/** Marks the image regions of @p occluders: the convex hull of each one's samples projected
@@ -211,6 +225,14 @@ class EdgeImage
 	template <bool kHiddenToo, class Fn, class Stop>
 	void forEachInView(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                   const std::vector<EdgeSample>& limbs, Fn fn, Stop stop, int* outside) const;
+	/** count(), calling @p keep(pixel, point in this camera's frame) for each AlignedSample. */
+	template <class Keep>
+	std::optional<ImageCount> countKeeping(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	                                       const std::vector<EdgeSample>& limbs,
+	                                       double truncate_px, ScoreCap* cap, Keep keep) const;
+	/** addEdgeLines()'s term of one AlignedSample (none beyond @p truncate_px of the edge). */
+	void addEdgeLine(const AlignedSample& a, const Eigen::Vector3d& c_L, double truncate_px,
+	                 EdgeLineTerms& terms) const;
 	struct Pixel
 	{
 		int x, y;
@@ -319,12 +341,20 @@ class ImageVerifier
 	/** edgeLineSearch() from @p seed, or the one of @p memo from the same seed and axis. */
 	ScoredPose searchedFrom(const SightedSamples& samples, const ScoredPose& seed,
 	                        const Eigen::Vector3d& axis_O, RefineMemo* memo) const;
+	/** Both images' AlignedSamples of a pose (count()). */
+	using AlignedPair = std::array<std::vector<AlignedSample>, 2>;
+	/** scoreIfCheaper() keeping the AlignedSamples of the pose in @p aligned. */
+	std::optional<ImageScore> scoreIfCheaper(const SightedSamples& samples,
+	                                         const Eigen::Isometry3d& T_OinL, double max_cost_px2,
+	                                         AlignedPair* aligned) const;
+	/** edgeLines() from a pose's AlignedSamples. */
+	EdgeLineTerms edgeLines(const AlignedPair& aligned, const Eigen::Vector3d& c_L) const;
 	/** The ImageScore of both images' counts (score()'s acceptance rules). */
 	ImageScore combined(const std::array<ImageCount, 2>& counts) const;
 	/** score(), or empty as soon as @p cap is exceeded. */
 	std::optional<ImageScore> scoreUnlessExceeded(const SightedSamples& samples,
-	                                              const Eigen::Isometry3d& T_OinL,
-	                                              ScoreCap cap) const;
+	                                              const Eigen::Isometry3d& T_OinL, ScoreCap cap,
+	                                              AlignedPair* aligned = nullptr) const;
 	ImageVerificationOptions opts_;
 	std::vector<EdgeImage> images_;  ///< left, right
 };
