@@ -20,10 +20,16 @@ Tolerance toleranceOf(const LevelParams& p)
 class ConsistentSetSearch
 {
  public:
-	ConsistentSetSearch(const ModelTable& m, const OrientedScene& s, const Tolerance& t,
-	                    int max_nodes)
-	    : model_(m), scene_(s), tol_(t), max_nodes_(max_nodes)
+	ConsistentSetSearch(const ModelTable& m, const IndexClique& clique, const OrientedScene& s,
+	                    const Tolerance& t, int max_nodes)
+	    : model_(m), scene_(s), tol_(t), max_nodes_(max_nodes), slots_(clique.members.size() + 1)
 	{
+		// the angle test's range of each pair of the clique's features (focus, then members)
+		const auto feature = [&](size_t slot)
+		{ return slot == 0 ? clique.focus : clique.members[slot - 1]; };
+		for (size_t a = 0; a < slots_; ++a)
+			for (size_t b = 0; b < slots_; ++b)
+				angles_.push_back(cosineRange(m.relation(feature(a), feature(b)), t));
 	}
 
 	/** Starts the candidates of a new focus match: members are then added in clique order. */
@@ -50,10 +56,11 @@ class ConsistentSetSearch
 		for (size_t k = 0; k < order_.size(); ++k) order_[k] = k;
 		std::sort(order_.begin(), order_.end(),
 		          [&](size_t a, size_t b) { return members_[a].size() < members_[b].size(); });
-		cands_.clear(), first_.clear();
+		cands_.clear(), first_.clear(), slot_.clear();
 		for (const size_t k : order_)
 		{
 			first_.push_back(cands_.size());
+			slot_.insert(slot_.end(), members_[k].size(), k + 1);
 			cands_.insert(cands_.end(), by_member_.begin() + static_cast<long>(members_[k].begin),
 			              by_member_.begin() + static_cast<long>(members_[k].end));
 		}
@@ -81,7 +88,8 @@ class ConsistentSetSearch
 		const auto ask = [&]
 		{
 			const auto& mf = model_.features();
-			return consistent(model_.relation(x.model, c.model), mf[x.model], mf[c.model],
+			return consistent(model_.relation(x.model, c.model),
+			                  angles_[slot_[a] * slots_ + slot_[b]], mf[x.model], mf[c.model],
 			                  scene_.oriented[x.oriented], scene_.oriented[c.oriented], tol_);
 		};
 		if (known_.empty()) return ask();
@@ -150,6 +158,9 @@ class ConsistentSetSearch
 	std::vector<Range> members_;
 	std::vector<size_t> order_;       ///< the members by their number of candidates
 	std::vector<FeatureMatch> cands_;  ///< the candidates in that order
+	size_t slots_;                     ///< the clique's features: focus, then members
+	std::vector<CosineRange> angles_;  ///< cosineRange of each pair of slots, slots_ × slots_
+	std::vector<size_t> slot_;         ///< each candidate's slot
 	std::vector<size_t> first_;       ///< index of each member's first candidate; then the end
 	size_t pairs_ = 0;                ///< candidates of all members
 	std::vector<std::int8_t> known_;  ///< pairConsistent's answers (kUnknown: not asked yet)
@@ -166,9 +177,10 @@ void memberCandidates(const ModelTable& model, size_t j, const std::vector<size_
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
+	const CosineRange angle = cosineRange(rel, tol);
 	for (size_t o : gated)
 		if (o / 2 != focus.scene() &&
-		    consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented],
+		    consistent(rel, angle, mf[focus.model], mf[j], scene.oriented[focus.oriented],
 		               scene.oriented[o], tol))
 			out.push_back({j, o});
 }
@@ -182,6 +194,7 @@ void memberCandidates(const ModelTable& model, size_t j, const FeatureMatch& foc
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
+	const CosineRange angle = cosineRange(rel, tol);
 	const size_t src = scene.source[focus.scene()];
 	for (const std::uint32_t code : members.of(focus.model, j, src, focus.oriented % 2 == 1))
 	{
@@ -189,7 +202,7 @@ void memberCandidates(const ModelTable& model, size_t j, const FeatureMatch& foc
 		if (k < 0) continue;
 		const size_t o = 2 * static_cast<size_t>(k) + code % 2;
 		if (o / 2 != focus.scene() && passesUnaryGate(mf[j], scene.oriented[o], p, false) &&
-		    consistent(rel, mf[focus.model], mf[j], scene.oriented[focus.oriented],
+		    consistent(rel, angle, mf[focus.model], mf[j], scene.oriented[focus.oriented],
 		               scene.oriented[o], tol))
 			out.push_back({j, o});
 	}
@@ -266,7 +279,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 	// than this have none, no set of the focus reaches clique_size
 	const int spare = static_cast<int>(clique.members.size()) + 1 - p.clique_size;
 	if (spare < 0) return out;
-	ConsistentSetSearch search(model, scene, tol, max_nodes);
+	ConsistentSetSearch search(model, clique, scene, tol, max_nodes);
 	for (size_t o : passingUnaryGate(mfocus, scene.oriented, p, true))
 	{
 		if (focus_ok && !focus_ok(clique.focus, o / 2)) continue;

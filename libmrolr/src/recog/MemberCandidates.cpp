@@ -38,10 +38,11 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	// consistent()'s first tests on the packed features at once: most pairs fail them
 	const Gated& gated = gatedFor(member);
 	mayBeConsistent(rel, mf[focus], mf[member], sa, gated.packed, loosest_, keep_);
+	const CosineRange angle = cosineRange(rel, loosest_);
 	for (size_t k = 0; k < gated.index.size(); ++k)
 	{
 		const size_t o = gated.index[k];
-		if (keep_[k] && consistent(rel, mf[focus], mf[member], sa, oriented_[o], loosest_))
+		if (keep_[k] && consistent(rel, angle, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			list.push_back(static_cast<std::uint32_t>(o));
 	}
 	return list;

@@ -159,8 +159,15 @@ bool consistentSkew(const PairRelation& m, const Feature& sa, const Feature& sb,
 MROLR_FLATTEN bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb,
                               const Feature& sa, const Feature& sb, const Tolerance& tol)
 {
+	return consistent(m, cosineRange(m, tol), ma, mb, sa, sb, tol);
+}
+
+MROLR_FLATTEN bool consistent(const PairRelation& m, const CosineRange& angle, const Feature& ma,
+                              const Feature& mb, const Feature& sa, const Feature& sb,
+                              const Tolerance& tol)
+{
 	if (sa.kind != ma.kind || sb.kind != mb.kind) return false;
-	if (!cosineRange(m, tol).contains(sa.u.dot(sb.u))) return false;
+	if (!angle.contains(sa.u.dot(sb.u))) return false;
 	if (ma.isLine() && mb.isLine() && !m.parallel) return consistentSkew(m, sa, sb, tol);
 	PairRelation s;  // the angle was checked above: no trigonometry in the matcher's inner loop
 	relateGeometry(sa, sb, m.parallel, s);

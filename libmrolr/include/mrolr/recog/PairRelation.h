@@ -73,5 +73,9 @@ CosineRange cosineRange(const PairRelation& m, const Tolerance& t);
  * each scene segment inside its model segment's interval (scene lines may be fragments). */
 bool consistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& sa,
                 const Feature& sb, const Tolerance& tol);
+/** The same with the model pair's cosineRange(m, tol) given: a caller that asks it of many scene
+ * pairs for one model pair works the range out once. */
+bool consistent(const PairRelation& m, const CosineRange& angle, const Feature& ma,
+                const Feature& mb, const Feature& sa, const Feature& sb, const Tolerance& tol);
 
 }  // namespace mrolr::recog
