@@ -74,6 +74,10 @@ std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hy
 	std::iota(order.begin(), order.end(), 0);
 	std::stable_sort(order.begin(), order.end(),
 	                 [&](size_t a, size_t b) { return hyps[a].weight > hyps[b].weight; });
+	// each hypothesis's centroid, worked out once (it is compared with every cluster's)
+	std::vector<Eigen::Vector3d> centroid_S;
+	centroid_S.reserve(hyps.size());
+	for (const auto& h : hyps) centroid_S.push_back(h.T_OinS * centroid_O);
 	std::vector<PoseCluster> clusters;
 	for (size_t i : order)
 	{
@@ -83,9 +87,10 @@ std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hy
 		    [&](const PoseCluster& c)
 		    {
 			    // the translation first: it is cheaper, and most clusters fail it
-			    const auto& S = hyps[c.members.front()].T_OinS;
-			    return (S * centroid_O - T * centroid_O).norm() <= max_translation_mm &&
-			           rotationDistanceDeg(S.linear(), T.linear()) <= max_rotation_deg;
+			    const size_t first = c.members.front();
+			    return (centroid_S[first] - centroid_S[i]).norm() <= max_translation_mm &&
+			           rotationDistanceDeg(hyps[first].T_OinS.linear(), T.linear()) <=
+			               max_rotation_deg;
 		    });
 		if (it == clusters.end()) it = clusters.insert(clusters.end(), PoseCluster{});
 		it->members.push_back(i);
