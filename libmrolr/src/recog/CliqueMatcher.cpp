@@ -156,14 +156,14 @@ class ConsistentSetSearch
 	};
 	std::vector<FeatureMatch> by_member_;  ///< the members' candidates, in clique order
 	std::vector<Range> members_;
-	std::vector<size_t> order_;       ///< the members by their number of candidates
+	std::vector<size_t> order_;        ///< the members by their number of candidates
 	std::vector<FeatureMatch> cands_;  ///< the candidates in that order
 	size_t slots_;                     ///< the clique's features: focus, then members
 	std::vector<CosineRange> angles_;  ///< cosineRange of each pair of slots, slots_ × slots_
 	std::vector<size_t> slot_;         ///< each candidate's slot
-	std::vector<size_t> first_;       ///< index of each member's first candidate; then the end
-	size_t pairs_ = 0;                ///< candidates of all members
-	std::vector<std::int8_t> known_;  ///< pairConsistent's answers (kUnknown: not asked yet)
+	std::vector<size_t> first_;        ///< index of each member's first candidate; then the end
+	size_t pairs_ = 0;                 ///< candidates of all members
+	std::vector<std::int8_t> known_;   ///< pairConsistent's answers (kUnknown: not asked yet)
 	std::vector<FeatureMatch> chosen_;
 	std::vector<size_t> chosen_index_;  ///< chosen_'s candidate indices (the focus's unused)
 	std::vector<std::vector<FeatureMatch>> best_;

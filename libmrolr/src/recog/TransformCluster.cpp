@@ -82,16 +82,14 @@ std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hy
 	for (size_t i : order)
 	{
 		const auto& T = hyps[i].T_OinS;
-		auto it = std::find_if(
-		    clusters.begin(), clusters.end(),
-		    [&](const PoseCluster& c)
-		    {
-			    // the translation first: it is cheaper, and most clusters fail it
-			    const size_t first = c.members.front();
-			    return (centroid_S[first] - centroid_S[i]).norm() <= max_translation_mm &&
-			           rotationDistanceDeg(hyps[first].T_OinS.linear(), T.linear()) <=
-			               max_rotation_deg;
-		    });
+		// the translation first: it is cheaper, and most clusters fail it
+		const auto near = [&](const PoseCluster& c)
+		{
+			const size_t first = c.members.front();
+			return (centroid_S[first] - centroid_S[i]).norm() <= max_translation_mm &&
+			       rotationDistanceDeg(hyps[first].T_OinS.linear(), T.linear()) <= max_rotation_deg;
+		};
+		auto it = std::find_if(clusters.begin(), clusters.end(), near);
 		if (it == clusters.end()) it = clusters.insert(clusters.end(), PoseCluster{});
 		it->members.push_back(i);
 		it->weight += hyps[i].weight;

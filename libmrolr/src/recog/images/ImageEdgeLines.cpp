@@ -49,8 +49,8 @@ bool withinRefinementReach(const Eigen::Isometry3d& T_OinL, const Eigen::Isometr
 	       angle <= kRefinementReach_deg * M_PI / 180;
 }
 
-void EdgeImage::addEdgeLine(const AlignedSample& a, const Eigen::Vector3d& c_L,
-                            double truncate_px, EdgeLineTerms& terms) const
+void EdgeImage::addEdgeLine(const AlignedSample& a, const Eigen::Vector3d& c_L, double truncate_px,
+                            EdgeLineTerms& terms) const
 {
 	const cv::Point2d& px = a.px;
 	const Eigen::Vector3d& p_C = a.p_C;
@@ -92,9 +92,8 @@ void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T
 	    [] { return false; }, nullptr);
 }
 
-void EdgeImage::addEdgeLines(const std::vector<AlignedSample>& aligned,
-                             const Eigen::Vector3d& c_L, double truncate_px,
-                             EdgeLineTerms& terms) const
+void EdgeImage::addEdgeLines(const std::vector<AlignedSample>& aligned, const Eigen::Vector3d& c_L,
+                             double truncate_px, EdgeLineTerms& terms) const
 {
 	for (const AlignedSample& a : aligned) addEdgeLine(a, c_L, truncate_px, terms);
 }

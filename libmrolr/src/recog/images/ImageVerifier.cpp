@@ -203,8 +203,9 @@ std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen:
 		                    [](const cv::Point2d&, const Eigen::Vector3d&) {});
 	aligned->clear();
 	return countKeeping(s, T_OinL, limbs, truncate_px, cap,
-	                    [aligned](const cv::Point2d& px, const Eigen::Vector3d& p_C)
-	                    { aligned->push_back({px, p_C}); });
+	                    [aligned](const cv::Point2d& px, const Eigen::Vector3d& p_C) {
+		                    aligned->push_back({px, p_C});
+	                    });
 }
 
 template <class Keep>

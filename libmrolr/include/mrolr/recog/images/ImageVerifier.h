@@ -228,8 +228,8 @@ class EdgeImage
 	/** count(), calling @p keep(pixel, point in this camera's frame) for each AlignedSample. */
 	template <class Keep>
 	std::optional<ImageCount> countKeeping(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
-	                                       const std::vector<EdgeSample>& limbs,
-	                                       double truncate_px, ScoreCap* cap, Keep keep) const;
+	                                       const std::vector<EdgeSample>& limbs, double truncate_px,
+	                                       ScoreCap* cap, Keep keep) const;
 	/** addEdgeLines()'s term of one AlignedSample (none beyond @p truncate_px of the edge). */
 	void addEdgeLine(const AlignedSample& a, const Eigen::Vector3d& c_L, double truncate_px,
 	                 EdgeLineTerms& terms) const;
