@@ -184,7 +184,6 @@ bool SelfOcclusion::hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const
 	const Faces nx(nx_.data(), n), ny(ny_.data(), n), nz(nz_.data(), n);
 	const Faces d(rest_offsets_.data(), n), nc(v.nc_.data(), n);
 	const Row np = nx * p_O.x() + ny * p_O.y() + nz * p_O.z();
-	if (((np > d) && (nc > d)).any()) return false;  // both ends outside one face: a miss
 	const double t1 = std::min(1.0, (np > d).select((d - nc) / (np - nc), 1.0).minCoeff());
 	if (t1 <= 0) return false;
 	return !((nc > d) && (nc - d >= t1 * (nc - np))).any();
