@@ -47,6 +47,16 @@ inline bool EdgeImage::occludedAt(const Pixel& at, double depth_mm) const
 	return depth_mm > occluder_z_.ptr<float>(at.y)[at.x] + occluder_margin_mm_;
 }
 
+inline bool EdgeImage::hiddenBy(const SelfOcclusion& occ, const SelfOcclusion::View& view,
+                                const EdgeSample& s, const SelfOcclusion::PointSight* sight) const
+{
+	// a limb is on the outline by construction: only the model's parts off its bodies (a handle)
+	// can hide it (SelfOcclusion::hiddenLimb)
+	return sight == nullptr         ? occ.hiddenLimb(view, s.p_O)
+	       : revolution_visibility_ ? occ.hiddenOnBodies(view, *sight, s.p_O)
+	                                : occ.hidden(view, *sight, s.p_O);
+}
+
 template <bool kHiddenToo, class Fn, class Stop>
 void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
                               const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
@@ -62,13 +72,8 @@ void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d&
 	                       const ProjectedRun& r, size_t j)
 	{
 		if (!r.in_view[j] && !outside) return;
-		// a limb is on the outline by construction: only the model's parts off its bodies (a
-		// handle) can hide it (SelfOcclusion::hiddenLimb)
 		const bool limb = sight == nullptr;
-		const bool hidden =
-		    occ && (limb                     ? occ->hiddenLimb(view, s.p_O)
-		            : revolution_visibility_ ? occ->hiddenOnBodies(view, *sight, s.p_O)
-		                                     : occ->hidden(view, *sight, s.p_O));
+		const bool hidden = occ && hiddenBy(*occ, view, s, sight);
 		if (!r.in_view[j])
 		{
 			*outside += hidden ? 0 : 1;

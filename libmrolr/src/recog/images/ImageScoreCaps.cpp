@@ -24,15 +24,6 @@ std::optional<ImageScore> ImageVerifier::scoreIfCheaper(const SightedSamples& sa
 	return s;
 }
 
-std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
-                                                     const Eigen::Isometry3d& T_OinL,
-                                                     int min_supported, double max_score) const
-{
-	ScoreCap cap;
-	cap.min_supported = min_supported, cap.max_fraction = max_score;
-	return scoreUnlessExceeded(samples, T_OinL, cap);
-}
-
 std::optional<ImageScore> ImageVerifier::scoreUnlessExceeded(const SightedSamples& samples,
                                                              const Eigen::Isometry3d& T_OinL,
                                                              ScoreCap cap,

@@ -81,6 +81,8 @@ struct ImageCount
 	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
 };
 
+struct Prospect;
+struct Prospects;
 struct RefineMemo;
 struct SweptCircle;
 
@@ -174,6 +176,14 @@ class EdgeImage
 	                                const std::vector<EdgeSample>& limbs, double truncate_px,
 	                                ScoreCap* cap,
 	                                std::vector<AlignedSample>* aligned = nullptr) const;
+	/** The samples of @p s (then @p limbs) at @p T_OinL that count() would consider unless the
+	 * object hid them, each with whether an edge supports it: what the yaw sweep bounds a
+	 * pose's score with before it asks the costly sight tests (Prospects.h). */
+	void prospects(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
+	               const std::vector<EdgeSample>& limbs, Prospects& out) const;
+	/** Whether the object (s.occ, seen from this camera as @p view) hides @p p: count()'s sight
+	 * test. */
+	bool hides(const SightedSamples& s, const SelfOcclusion::View& view, const Prospect& p) const;
 	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
@@ -225,6 +235,10 @@ class EdgeImage
 	template <bool kHiddenToo, class Fn, class Stop>
 	void forEachInView(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                   const std::vector<EdgeSample>& limbs, Fn fn, Stop stop, int* outside) const;
+	/** The sight test of sample @p s (@p sight: its PointSight; null for a limb) against
+	 * @p occ seen as @p view. */
+	bool hiddenBy(const SelfOcclusion& occ, const SelfOcclusion::View& view, const EdgeSample& s,
+	              const SelfOcclusion::PointSight* sight) const;
 	/** count(), calling @p keep(pixel, point in this camera's frame) for each AlignedSample. */
 	template <class Keep>
 	std::optional<ImageCount> countKeeping(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,

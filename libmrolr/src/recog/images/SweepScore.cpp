@@ -1,0 +1,118 @@
+// The yaw sweep's score (ImageVerifier::scoreIfMore): a yaw's score is wanted only when it can
+// beat the sweep's best by supported count or by supported fraction (ScoreCap). Its Prospects
+// bound both before the sight tests, and the tests are made only until the bounds rule it out.
+// The answer is the same as ScoreCap's: empty exactly when the complete count exceeds the cap,
+// else score().
+#include <mrolr/recog/images/ImageVerifier.h>
+#include <mrolr/recog/images/Prospects.h>
+
+#include "EdgeImageVisit.h"
+
+#include <array>
+
+namespace mrolr::recog
+{
+namespace
+{
+/** Below this a bound is not trusted to decide; the complete counts decide then (an early bound
+ * compares sums of a few thousand samples at most: rounding is far below it). */
+constexpr double kBoundMargin = 1e-6;
+}  // namespace
+
+void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
+                          const std::vector<EdgeSample>& limbs, Prospects& out) const
+{
+	out.on_edge.clear(), out.off_edge.clear();
+	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
+	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
+	const bool occluders = !occluder_z_.empty();
+	ProjectedRun r;
+	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
+	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights)
+	{
+		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
+		{
+			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
+			projectRun(T_OinC, K_, D_, samples.data() + first, n, r);
+			for (size_t j = 0; j < n; ++j)
+			{
+				const cv::Point2d px(r.u[j], r.v[j]);
+				if (!r.in_view[j] || !inside.contains(px)) continue;
+				const Pixel at = pixelOf(px);
+				if (occluders && occludedAt(at, r.z[j])) continue;
+				const size_t k = first + j;
+				const Prospect p{&samples[k], with_sights && ss.occ ? &ss.sights[k] : nullptr};
+				// the distance first: most samples of a yaw that fits badly are far from edges
+				const bool on_edge = dist_.ptr<float>(at.y)[at.x] <= dist_px_ &&
+				                     oriented(at, cv::Point2d(r.tu[j], r.tv[j]));
+				(on_edge ? out.on_edge : out.off_edge).push_back(p);
+			}
+		}
+	};
+	walk(ss.samples_O, true);
+	walk(limbs, false);
+}
+
+bool EdgeImage::hides(const SightedSamples& s, const SelfOcclusion::View& view,
+                      const Prospect& p) const
+{
+	return s.occ && hiddenBy(*s.occ, view, *p.sample, p.sight);
+}
+
+std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
+                                                     const Eigen::Isometry3d& T_OinL,
+                                                     int min_supported, double max_score) const
+{
+	ScoreCap cap;
+	cap.min_supported = min_supported, cap.max_fraction = max_score;
+	// the fraction's bound below holds for a fraction of at most 1
+	if (!(max_score <= 1)) return scoreUnlessExceeded(samples, T_OinL, cap);
+	static thread_local std::array<std::vector<EdgeSample>, 2> limbs;
+	static thread_local std::array<Prospects, 2> p;
+	int supported_max = 0, unhidden_off = 0;
+	for (size_t i = 0; i < 2; ++i)
+	{
+		images_[i].limbsSeen(samples, T_OinL, limbs[i]);
+		images_[i].prospects(samples, T_OinL, limbs[i], p[i]);
+		supported_max += static_cast<int>(p[i].on_edge.size());
+	}
+	const auto viewOf = [&](size_t i)
+	{
+		return samples.occ ? samples.occ->viewFrom(T_OinL.inverse() * images_[i].centre_L())
+		                   : SelfOcclusion::View();
+	};
+	const std::array<SelfOcclusion::View, 2> views{viewOf(0), viewOf(1)};
+	// ScoreCap's fraction test, S <= max_score·C·(1 − 1e-12) with C = S + the unhidden ones off
+	// the edges: it holds for the complete counts once it holds here (by the margin), since S
+	// can only fall to its final value and the unhidden ones only rise to theirs
+	const auto fractionRuledOut = [&]
+	{
+		return supported_max <=
+		       max_score * (supported_max + unhidden_off) * (1 - 1e-12) - kBoundMargin;
+	};
+	// the supported ones are tested until too few are left to beat min_supported ...
+	std::array<size_t, 2> tested = {0, 0};
+	for (size_t i = 0; i < 2 && supported_max >= min_supported; ++i)
+		for (; tested[i] < p[i].on_edge.size() && supported_max >= min_supported; ++tested[i])
+			supported_max -= images_[i].hides(samples, views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
+	if (supported_max >= min_supported) return score(samples, T_OinL);
+	// ... then the others until the fraction is ruled out, then the rest of the supported ones
+	for (size_t i = 0; i < 2; ++i)
+		for (const Prospect& q : p[i].off_edge)
+		{
+			unhidden_off += images_[i].hides(samples, views[i], q) ? 0 : 1;
+			if (fractionRuledOut()) return std::nullopt;
+		}
+	for (size_t i = 0; i < 2; ++i)
+		for (; tested[i] < p[i].on_edge.size(); ++tested[i])
+		{
+			supported_max -= images_[i].hides(samples, views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
+			if (fractionRuledOut()) return std::nullopt;
+		}
+	// every sight tested: the complete counts, decided as ScoreCap decides them
+	cap.supported = supported_max, cap.considered = supported_max + unhidden_off;
+	if (cap.exceeded()) return std::nullopt;
+	return score(samples, T_OinL);
+}
+
+}  // namespace mrolr::recog
