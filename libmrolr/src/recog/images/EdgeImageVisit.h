@@ -43,7 +43,7 @@ inline bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) 
 
 inline bool EdgeImage::occludedAt(const Pixel& at, double depth_mm) const
 {
-	if (occluder_z_.empty()) return false;
+	if (!occluder_z_.data) return false;  // none (cv::Mat::empty() is a call per sample)
 	return depth_mm > occluder_z_.ptr<float>(at.y)[at.x] + occluder_margin_mm_;
 }
 

@@ -25,7 +25,6 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 	out.on_edge.clear(), out.off_edge.clear();
 	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
-	const bool occluders = !occluder_z_.empty();
 	ProjectedRun r;
 	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
 	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights)
@@ -39,7 +38,7 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 				const cv::Point2d px(r.u[j], r.v[j]);
 				if (!r.in_view[j] || !inside.contains(px)) continue;
 				const Pixel at = pixelOf(px);
-				if (occluders && occludedAt(at, r.z[j])) continue;
+				if (occludedAt(at, r.z[j])) continue;
 				const size_t k = first + j;
 				const Prospect p{&samples[k], with_sights && ss.occ ? &ss.sights[k] : nullptr};
 				// the distance first: most samples of a yaw that fits badly are far from edges
