@@ -83,3 +83,36 @@ TEST(ProjectedRun, RefusesARunLongerThanItsArrays)
 	                        samples.data(), samples.size(), run),
 	             std::invalid_argument);
 }
+
+// A model's samples transposed once (sampleBlocksOf, what SightedSamples keeps): blocks of kMax in
+// order, the last one shorter, each projected to the bits of the same samples projected directly.
+TEST(ProjectedRun, SampleBlocksHoldTheSamplesInOrderAndProjectTheSame)
+{
+	std::mt19937 rng(11);
+	const cv::Matx33d K(812.5, 0, 321.25, 0, 809.75, 238.5, 0, 0, 1);
+	const cv::Vec<double, 5> D(-0.31, 0.12, 0.0013, -0.0021, -0.02);
+	const Eigen::Isometry3d T_OinC =
+	    Eigen::Translation3d(5, -8, 600) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitY());
+	for (const int n : {0, 1, 16, 17, 40})
+	{
+		const auto samples = randomSamples(rng, n);
+		const auto blocks = sampleBlocksOf(samples);
+		ASSERT_EQ(blocks.size(), (samples.size() + ProjectedRun::kMax - 1) / ProjectedRun::kMax);
+		for (size_t b = 0; b < blocks.size(); ++b)
+		{
+			const size_t first = b * ProjectedRun::kMax;
+			ASSERT_EQ(blocks[b].n, std::min(ProjectedRun::kMax, samples.size() - first));
+			ProjectedRun from_block, direct;
+			projectRun(T_OinC, K, D, blocks[b], from_block);
+			projectRun(T_OinC, K, D, samples.data() + first, blocks[b].n, direct);
+			for (size_t k = 0; k < blocks[b].n; ++k)
+			{
+				EXPECT_EQ(blocks[b].p[2][k], samples[first + k].p_O.z());
+				EXPECT_EQ(blocks[b].d[0][k], samples[first + k].t_O.x());
+				EXPECT_EQ(from_block.u[k], direct.u[k]);
+				EXPECT_EQ(from_block.tv[k], direct.tv[k]);
+				EXPECT_EQ(from_block.z[k], direct.z[k]);
+			}
+		}
+	}
+}

@@ -89,13 +89,17 @@ void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d&
 	};
 	static const SelfOcclusion::PointSight kNoSight;
 	ProjectedRun run;
-	// each run is projected at once; the stop is asked after each sample, as before
+	// each run is projected at once (the model's samples from their blocks); the stop is asked
+	// after each sample, as before
 	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights)
 	{
 		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 		{
 			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			projectRun(T_OinC, K_, D_, samples.data() + first, n, run);
+			if (with_sights)
+				projectRun(T_OinC, K_, D_, ss.blocks[first / ProjectedRun::kMax], run);
+			else
+				projectRun(T_OinC, K_, D_, samples.data() + first, n, run);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const size_t k = first + j;

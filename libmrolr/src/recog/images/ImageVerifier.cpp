@@ -162,7 +162,7 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 }
 
 SightedSamples::SightedSamples(std::vector<EdgeSample> samples, const SelfOcclusion* occlusion)
-    : samples_O(std::move(samples)), occ(occlusion)
+    : samples_O(std::move(samples)), occ(occlusion), blocks(sampleBlocksOf(samples_O))
 {
 	if (!occ) return;
 	sights.reserve(samples_O.size());

@@ -1,6 +1,7 @@
 #include <mrolr/recog/images/ProjectedRun.h>
 #include <mrolr/util/SimdClones.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <stdexcept>
@@ -53,10 +54,31 @@ MROLR_SIMD_CLONES void projectArrays(const std::array<double, 9> R, const std::a
 }
 }  // namespace
 
-void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
-                const EdgeSample* first, size_t n, ProjectedRun& out)
+namespace
+{
+SampleBlock blockOf(const EdgeSample* first, size_t n)
 {
 	if (n > ProjectedRun::kMax) throw std::invalid_argument("projectRun: more than kMax samples");
+	SampleBlock b;
+	b.n = n;
+	for (size_t k = 0; k < n; ++k)
+		for (int i = 0; i < 3; ++i) b.p[i][k] = first[k].p_O[i], b.d[i][k] = first[k].t_O[i];
+	return b;
+}
+}  // namespace
+
+std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples)
+{
+	std::vector<SampleBlock> out;
+	for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
+		out.push_back(
+		    blockOf(samples.data() + first, std::min(ProjectedRun::kMax, samples.size() - first)));
+	return out;
+}
+
+void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+                const SampleBlock& block, ProjectedRun& out)
+{
 	std::array<double, 9> R;  // column-major: R[3 j + i] = R(i, j)
 	std::array<double, 3> t;
 	for (int i = 0; i < 3; ++i)
@@ -65,11 +87,14 @@ void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv:
 		for (int j = 0; j < 3; ++j) R[3 * j + i] = T_OinC.linear()(i, j);
 	}
 	const Lens L{K(0, 0), K(1, 1), K(0, 2), K(1, 2), D[0], D[1], D[2], D[3], D[4]};
-	double p[3][ProjectedRun::kMax], d[3][ProjectedRun::kMax];
-	for (size_t k = 0; k < n; ++k)
-		for (int i = 0; i < 3; ++i) p[i][k] = first[k].p_O[i], d[i][k] = first[k].t_O[i];
-	out.n = n;
-	projectArrays(R, t, L, p, d, n, out);
+	out.n = block.n;
+	projectArrays(R, t, L, block.p, block.d, block.n, out);
+}
+
+void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+                const EdgeSample* first, size_t n, ProjectedRun& out)
+{
+	projectRun(T_OinC, K, D, blockOf(first, n), out);
 }
 
 }  // namespace mrolr::recog

@@ -32,7 +32,10 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 		{
 			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			projectRun(T_OinC, K_, D_, samples.data() + first, n, r);
+			if (with_sights)
+				projectRun(T_OinC, K_, D_, ss.blocks[first / ProjectedRun::kMax], r);
+			else
+				projectRun(T_OinC, K_, D_, samples.data() + first, n, r);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const cv::Point2d px(r.u[j], r.v[j]);

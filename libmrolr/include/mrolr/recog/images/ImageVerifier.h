@@ -11,6 +11,7 @@
 #include <mrolr/recog/SelfOcclusion.h>
 #include <mrolr/recog/images/ImageVerificationOptions.h>
 #include <mrolr/recog/images/Limbs.h>
+#include <mrolr/recog/images/ProjectedRun.h>
 #include <mrolr/stereo/StereoCalibration.h>
 
 #include <opencv2/core.hpp>
@@ -50,6 +51,7 @@ struct SightedSamples
 	std::vector<EdgeSample> samples_O;
 	const SelfOcclusion* occ = nullptr;
 	std::vector<SelfOcclusion::PointSight> sights;  ///< per sample; empty without occ
+	std::vector<SampleBlock> blocks;                ///< samples_O as projectRun reads them
 };
 
 /** Result of one hypothesis in the images. */

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace mrolr::recog
 {
@@ -36,9 +37,25 @@ inline bool inView(double x, double y, double z)
 	return (z > 1) & (std::abs(x) < z) & (std::abs(y) < z);
 }
 
+/** Up to ProjectedRun::kMax samples laid out as projectRun reads them (one array per
+ * coordinate): a model's samples are projected at every pose a score asks about, and transposed
+ * once (SightedSamples). */
+struct SampleBlock
+{
+	size_t n = 0;
+	double p[3][ProjectedRun::kMax];  ///< the samples' points p_O by coordinate (mm)
+	double d[3][ProjectedRun::kMax];  ///< their tangents t_O by coordinate
+};
+
+/** @p samples in blocks of ProjectedRun::kMax (the last one shorter). */
+std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples);
+
 /** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first, seen by the camera
  * with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC. */
 void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
                 const EdgeSample* first, size_t n, ProjectedRun& out);
+/** The same for the samples of @p block. */
+void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
+                const SampleBlock& block, ProjectedRun& out);
 
 }  // namespace mrolr::recog
