@@ -96,6 +96,9 @@ class SelfOcclusion
 	bool hiddenOnBodies(const View& v, const Eigen::Vector3d& p_O) const;
 	bool hiddenOnBodies(const View& v, const PointSight& ps, const Eigen::Vector3d& p_O) const;
 	bool hiddenLimb(const View& v, const Eigen::Vector3d& p_O) const;
+	/** True when the point (@p ps) lies outside a face of the polytope that the camera of @p v
+	 * is outside of too: hidden() says it is not hidden at its first, bitwise step. */
+	static bool sharesOutsideFace(const View& v, const PointSight& ps);
 
 	/** The model's bodies of revolution (revolutionBodiesOf the constructor's features), whose
 	 * limbs the verification in the images adds at each pose (Limbs.h); the 3D verification
@@ -132,12 +135,17 @@ class SelfOcclusion
 
 // The per-sample tests, inline: the image verification asks them of every sample at every pose,
 // and a sample that shares an outside face with the camera (most of those in view) needs no call.
+inline bool SelfOcclusion::sharesOutsideFace(const View& v, const PointSight& ps)
+{
+	const auto& out = ps.outside_all;
+	return (out[0] & v.all_.outside[0]) | (out[1] & v.all_.outside[1]);
+}
+
 inline bool SelfOcclusion::hidden(const View& v, const PointSight& ps,
                                   const Eigen::Vector3d& p_O) const
 {
-	const auto& out = ps.outside_all;
-	if ((out[0] & v.all_.outside[0]) | (out[1] & v.all_.outside[1])) return false;
-	return crossesPolytope(v, p_O, out);
+	if (sharesOutsideFace(v, ps)) return false;
+	return crossesPolytope(v, p_O, ps.outside_all);
 }
 
 inline bool SelfOcclusion::hiddenOnBodies(const View& v, const PointSight& ps,

@@ -61,6 +61,15 @@ bool EdgeImage::hides(const SightedSamples& s, const SelfOcclusion::View& view,
 	return s.occ && hiddenBy(*s.occ, view, *p.sample, p.sight);
 }
 
+bool EdgeImage::seenAtOnce(const SightedSamples& s, const SelfOcclusion::View& view,
+                           const Prospect& p) const
+{
+	if (!s.occ) return true;
+	// a limb's test and one against the bodies of revolution have no such first step
+	if (!p.sight || (revolution_visibility_ && p.sight->on_bodies)) return false;
+	return SelfOcclusion::sharesOutsideFace(view, *p.sight);
+}
+
 std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
                                                      const Eigen::Isometry3d& T_OinL,
                                                      int min_supported, double max_score) const
@@ -98,11 +107,27 @@ std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& sampl
 		for (; tested[i] < p[i].on_edge.size() && supported_max >= min_supported; ++tested[i])
 			supported_max -= images_[i].hides(samples, views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
 	if (supported_max >= min_supported) return score(samples, T_OinL);
-	// ... then the others until the fraction is ruled out, then the rest of the supported ones
+	// ... then the others until the fraction is ruled out (those seen at once first), then the
+	// rest of the supported ones
+	static thread_local std::array<std::vector<const Prospect*>, 2> later;
 	for (size_t i = 0; i < 2; ++i)
+	{
+		later[i].clear();
 		for (const Prospect& q : p[i].off_edge)
 		{
-			unhidden_off += images_[i].hides(samples, views[i], q) ? 0 : 1;
+			if (!images_[i].seenAtOnce(samples, views[i], q))
+			{
+				later[i].push_back(&q);
+				continue;
+			}
+			++unhidden_off;
+			if (fractionRuledOut()) return std::nullopt;
+		}
+	}
+	for (size_t i = 0; i < 2; ++i)
+		for (const Prospect* q : later[i])
+		{
+			unhidden_off += images_[i].hides(samples, views[i], *q) ? 0 : 1;
 			if (fractionRuledOut()) return std::nullopt;
 		}
 	for (size_t i = 0; i < 2; ++i)

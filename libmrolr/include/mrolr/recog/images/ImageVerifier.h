@@ -186,6 +186,10 @@ class EdgeImage
 	/** Whether the object (s.occ, seen from this camera as @p view) hides @p p: count()'s sight
 	 * test. */
 	bool hides(const SightedSamples& s, const SelfOcclusion::View& view, const Prospect& p) const;
+	/** Whether hides() says no at once, without its costly part (SelfOcclusion::
+	 * sharesOutsideFace); false when it cannot tell. */
+	bool seenAtOnce(const SightedSamples& s, const SelfOcclusion::View& view,
+	                const Prospect& p) const;
 	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
