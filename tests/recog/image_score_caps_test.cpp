@@ -74,8 +74,9 @@ std::vector<Feature> mug()
 
 // scoreIfMore is empty exactly when the pose's complete counts cannot beat what it is asked to,
 // else score() itself, whatever order it tests the samples' sights in: on the box (sights against
-// its polytope) and on a mug (limbs, sights against its body and handle), at poses on and off the
-// drawn box, asked to beat counts below, at and above each pose's own.
+// its polytope), on a mug (limbs, sights against its body and handle) and on the box without
+// self-occlusion, at poses on and off the drawn box, asked to beat counts below, at and above
+// each pose's own.
 TEST(ImageVerifier, AScoreAskedToBeatABestIsEmptyExactlyWhenItCannot)
 {
 	const Pair p;
@@ -84,7 +85,8 @@ TEST(ImageVerifier, AScoreAskedToBeatABestIsEmptyExactlyWhenItCannot)
 	ASSERT_EQ(cup_occ.revolutionBodies().size(), 1u);
 	int empty = 0, asked = 0;
 	for (const SightedSamples& samples : {SightedSamples(edgeSamplesOf(p.box, 3), &p.occ),
-	                                      SightedSamples(edgeSamplesOf(cup, 3), &cup_occ)})
+	                                      SightedSamples(edgeSamplesOf(cup, 3), &cup_occ),
+	                                      SightedSamples(edgeSamplesOf(p.box, 3), nullptr)})
 	{
 		const ImageScore best = p.images.score(samples, boxPose());
 		for (int k = 0; k < 60; ++k)
