@@ -27,7 +27,7 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
 	ProjectedRun r;
 	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
-	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights)
+	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights, size_t offset)
 	{
 		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 		{
@@ -42,32 +42,36 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 				if (!r.in_view[j] || !inside.contains(px)) continue;
 				const Pixel at = pixelOf(px);
 				if (occludedAt(at, r.z[j])) continue;
-				const size_t k = first + j;
-				const Prospect p{&samples[k], with_sights && ss.occ ? &ss.sights[k] : nullptr};
+				const auto k = static_cast<std::uint32_t>(offset + first + j);
 				// the distance first: most samples of a yaw that fits badly are far from edges
 				const bool on_edge = dist_.ptr<float>(at.y)[at.x] <= dist_px_ &&
 				                     oriented(at, cv::Point2d(r.tu[j], r.tv[j]));
-				(on_edge ? out.on_edge : out.off_edge).push_back(p);
+				(on_edge ? out.on_edge : out.off_edge).push_back(k);
 			}
 		}
 	};
-	walk(ss.samples_O, true);
-	walk(limbs, false);
+	walk(ss.samples_O, true, 0);
+	walk(limbs, false, ss.samples_O.size());
 }
 
-bool EdgeImage::hides(const SightedSamples& s, const SelfOcclusion::View& view,
-                      const Prospect& p) const
+bool EdgeImage::hides(const SightedSamples& s, const std::vector<EdgeSample>& limbs,
+                      const SelfOcclusion::View& view, std::uint32_t k) const
 {
-	return s.occ && hiddenBy(*s.occ, view, *p.sample, p.sight);
+	if (!s.occ) return false;
+	const size_t n = s.samples_O.size();
+	return k < n ? hiddenBy(*s.occ, view, s.samples_O[k], &s.sights[k])
+	             : hiddenBy(*s.occ, view, limbs[k - n], nullptr);
 }
 
 bool EdgeImage::seenAtOnce(const SightedSamples& s, const SelfOcclusion::View& view,
-                           const Prospect& p) const
+                           std::uint32_t k) const
 {
 	if (!s.occ) return true;
 	// a limb's test and one against the bodies of revolution have no such first step
-	if (!p.sight || (revolution_visibility_ && p.sight->on_bodies)) return false;
-	return SelfOcclusion::sharesOutsideFace(view, *p.sight);
+	if (k >= s.samples_O.size()) return false;
+	const SelfOcclusion::PointSight& sight = s.sights[k];
+	if (revolution_visibility_ && sight.on_bodies) return false;
+	return SelfOcclusion::sharesOutsideFace(view, sight);
 }
 
 std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& samples,
@@ -105,19 +109,20 @@ std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& sampl
 	std::array<size_t, 2> tested = {0, 0};
 	for (size_t i = 0; i < 2 && supported_max >= min_supported; ++i)
 		for (; tested[i] < p[i].on_edge.size() && supported_max >= min_supported; ++tested[i])
-			supported_max -= images_[i].hides(samples, views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
+			supported_max -=
+			    images_[i].hides(samples, limbs[i], views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
 	if (supported_max >= min_supported) return score(samples, T_OinL);
 	// ... then the others until the fraction is ruled out (those seen at once first), then the
 	// rest of the supported ones
-	static thread_local std::array<std::vector<const Prospect*>, 2> later;
+	static thread_local std::array<std::vector<std::uint32_t>, 2> later;
 	for (size_t i = 0; i < 2; ++i)
 	{
 		later[i].clear();
-		for (const Prospect& q : p[i].off_edge)
+		for (const std::uint32_t q : p[i].off_edge)
 		{
 			if (!images_[i].seenAtOnce(samples, views[i], q))
 			{
-				later[i].push_back(&q);
+				later[i].push_back(q);
 				continue;
 			}
 			++unhidden_off;
@@ -125,15 +130,16 @@ std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& sampl
 		}
 	}
 	for (size_t i = 0; i < 2; ++i)
-		for (const Prospect* q : later[i])
+		for (const std::uint32_t q : later[i])
 		{
-			unhidden_off += images_[i].hides(samples, views[i], *q) ? 0 : 1;
+			unhidden_off += images_[i].hides(samples, limbs[i], views[i], q) ? 0 : 1;
 			if (fractionRuledOut()) return std::nullopt;
 		}
 	for (size_t i = 0; i < 2; ++i)
 		for (; tested[i] < p[i].on_edge.size(); ++tested[i])
 		{
-			supported_max -= images_[i].hides(samples, views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
+			supported_max -=
+			    images_[i].hides(samples, limbs[i], views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
 			if (fractionRuledOut()) return std::nullopt;
 		}
 	// every sight tested: the complete counts, decided as ScoreCap decides them

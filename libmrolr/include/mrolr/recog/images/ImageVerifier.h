@@ -83,7 +83,6 @@ struct ImageCount
 	double cost_px2 = 0;  ///< sum of the considered samples' squared truncated distances
 };
 
-struct Prospect;
 struct Prospects;
 struct RefineMemo;
 struct SweptCircle;
@@ -183,13 +182,14 @@ class EdgeImage
 	 * pose's score with before it asks the costly sight tests (Prospects.h). */
 	void prospects(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	               const std::vector<EdgeSample>& limbs, Prospects& out) const;
-	/** Whether the object (s.occ, seen from this camera as @p view) hides @p p: count()'s sight
-	 * test. */
-	bool hides(const SightedSamples& s, const SelfOcclusion::View& view, const Prospect& p) const;
+	/** Whether the object (s.occ, seen from this camera as @p view) hides prospect @p k (an
+	 * index of Prospects, @p limbs those of the pose): count()'s sight test. */
+	bool hides(const SightedSamples& s, const std::vector<EdgeSample>& limbs,
+	           const SelfOcclusion::View& view, std::uint32_t k) const;
 	/** Whether hides() says no at once, without its costly part (SelfOcclusion::
 	 * sharesOutsideFace); false when it cannot tell. */
 	bool seenAtOnce(const SightedSamples& s, const SelfOcclusion::View& view,
-	                const Prospect& p) const;
+	                std::uint32_t k) const;
 	/** The limbs of the bodies of revolution of s.occ seen from this camera with the object at
 	 * @p T_OinL (empty without limbs or s.occ). */
 	std::vector<EdgeSample> limbsSeen(const SightedSamples& s,
