@@ -1,12 +1,12 @@
 // Verification in the stereo images (ImageVerifier.h): a model drawn into a synthetic stereo pair
 // scores high at its pose and low when shifted, turned or replaced by another object; the
 // refinement moves a perturbed pose towards the drawn one; bad input is reported.
-#include "recog_test_util.h"
 #include "drawn_box_pair.h"
+#include "recog_test_util.h"
 #include "synthetic_rig.h"
 
-#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/recog/Recognizer.h>
+#include <mrolr/recog/images/ImageVerifier.h>
 #include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/util/Cli.h>
 #include <mrolr/util/Config.h>
@@ -152,7 +152,8 @@ TEST(ImageVerifier, OptionsNameTheBadKey)
 		EXPECT_NE(std::string(e.what()).find("canny_high"), std::string::npos) << e.what();
 	}
 	// a fresh file: CConfigFileMemory::setContent keeps the keys of earlier contents
-	const mrpt::config::CConfigFileMemory partial(std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
+	const mrpt::config::CConfigFileMemory partial(
+	    std::string("[iv]\nblur_sigma_px = 1\ncanny_low = 20\n"));
 	EXPECT_THROW(o.loadFromConfigFile(partial, "iv"), mrolr::util::ConfigError);
 	// every key as dumped, one key out of range
 	std::ostringstream all;
@@ -276,4 +277,35 @@ TEST(ImageVerifier, APoseMostlyOutsideTheImagesScoresZero)
 	EXPECT_GT(ImageVerifier(l, r, calibration(), lenient).score(p.box, aside, &p.occ).score, 0.8);
 	// at the drawn pose in view nothing is outside
 	EXPECT_EQ(p.images.score(p.box, boxPose(), &p.occ).outside, 0);
+}
+
+// count() leaves out the direction of the nearest edge from 2 px past the cost's cap on
+// (ImageVerifier.cpp's kFar_px): that holds because the distance to the edges changes by at most
+// √2 px from a pixel to any of its eight neighbours. Checked on the drawn pair and on noise,
+// whose edges are everywhere.
+TEST(ImageVerifier, DistanceChangesByAtMostRootTwoToANeighbour)
+{
+	cv::Mat noise(480, 640, CV_8U);
+	cv::randu(noise, 0, 256);
+	cv::Mat sparse = cv::Mat::zeros(480, 640, CV_8U);  // a few edges far apart
+	cv::circle(sparse, {100, 100}, 30, cv::Scalar(255), 3);
+	cv::line(sparse, {400, 50}, {600, 430}, cv::Scalar(200), 2);
+	const Pair p;
+	const ImageVerifier others(noise, sparse, calibration(), ImageVerificationOptions());
+	double worst = 0;
+	for (const ImageVerifier* v : {&p.images, &others})
+		for (int i = 0; i < 2; ++i)
+		{
+			const cv::Mat& d = v->image(i).distance();
+			for (int y = 0; y + 1 < d.rows; ++y)
+				for (int x = 0; x + 1 < d.cols; ++x)
+					for (const auto& [dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}})
+					{
+						if (y + dy < 0) continue;
+						worst = std::max(worst, std::abs(static_cast<double>(d.at<float>(y, x)) -
+						                                 d.at<float>(y + dy, x + dx)));
+					}
+		}
+	EXPECT_LE(worst, std::sqrt(2.0) + 1e-6);
+	EXPECT_GT(worst, 0.9) << "the images have edges and distances";
 }

@@ -14,6 +14,13 @@ namespace mrolr::recog
 {
 namespace
 {
+/** count()'s bilinear distance at a sample is at least its pixel's distance less √2 px: the
+ * distance transform changes by at most that from a pixel to a neighbour (1.4 with DIST_MASK_5;
+ * test ImageVerifier.DistanceChangesByAtMostRootTwoToANeighbour), and the four pixels
+ * interpolated are the sample's and three of its neighbours. So from the cap (truncate_px) plus
+ * this on, a sample costs the cap whatever the direction of its nearest edge. */
+constexpr double kFar_px = 2;
+
 cv::Mat greyOf(const cv::Mat& img, const char* which)
 {
 	if (img.empty()) throw std::invalid_argument(std::string("image verification: empty ") + which);
@@ -239,9 +246,13 @@ std::optional<ImageCount> EdgeImage::countKeeping(const SightedSamples& s,
 			    return;
 		    }
 		    ++c.considered;
-		    const bool on_edge = oriented(at, tangent);
+		    // the nearest edge's direction (a look-up that misses the cache) matters only where
+		    // the sample may be supported or cost less than the cap
+		    const float d_at = dist_.ptr<float>(at.y)[at.x];
+		    const bool near = d_at <= dist_px_ || (truncate_px > 0 && d_at < truncate_px + kFar_px);
+		    const bool on_edge = near && oriented(at, tangent);
 		    if (on_edge) keep(px, p_C);
-		    const int supported = on_edge && dist_.ptr<float>(at.y)[at.x] <= dist_px_ ? 1 : 0;
+		    const int supported = on_edge && d_at <= dist_px_ ? 1 : 0;
 		    c.supported += supported;
 		    if (cap) ++cap->considered, cap->supported += supported;
 		    if (truncate_px <= 0) return;

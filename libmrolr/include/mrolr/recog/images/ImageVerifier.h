@@ -122,8 +122,9 @@ struct EdgeLineTerms
 };
 
 /** A sample that count() considered and found on an edge of compatible direction (within
- * orientation_tol_deg, at any distance): its pixel, and its point in the camera's frame (OpenCV
- * axes, mm). What the edge-line terms of the same pose need of it. */
+ * orientation_tol_deg) near enough to count: within edge_distance_px, or 2 px past the cap
+ * truncate_px (the edge-line terms take those within the cap). Its pixel, and its point in the
+ * camera's frame (OpenCV axes, mm): what the edge-line terms of the same pose need of it. */
 struct AlignedSample
 {
 	cv::Point2d px;
