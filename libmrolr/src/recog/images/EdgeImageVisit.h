@@ -57,6 +57,17 @@ inline bool EdgeImage::hiddenBy(const SelfOcclusion& occ, const SelfOcclusion::V
 	                                : occ.hidden(view, *sight, s.p_O);
 }
 
+inline void EdgeImage::projectRunOf(const SightedSamples& s, const std::vector<EdgeSample>& samples,
+                                    size_t first, const Eigen::Isometry3d& T_OinC,
+                                    ProjectedRun& run) const
+{
+	if (&samples == &s.samples_O)
+		projectRun(T_OinC, K_, D_, s.blocks[first / ProjectedRun::kMax], run);
+	else
+		projectRun(T_OinC, K_, D_, samples.data() + first,
+		           std::min(ProjectedRun::kMax, samples.size() - first), run);
+}
+
 template <bool kHiddenToo, class Fn, class Stop>
 void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
                               const std::vector<EdgeSample>& limbs, Fn fn, Stop stop,
@@ -96,10 +107,7 @@ void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d&
 		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 		{
 			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			if (with_sights)
-				projectRun(T_OinC, K_, D_, ss.blocks[first / ProjectedRun::kMax], run);
-			else
-				projectRun(T_OinC, K_, D_, samples.data() + first, n, run);
+			projectRunOf(ss, samples, first, T_OinC, run);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const size_t k = first + j;

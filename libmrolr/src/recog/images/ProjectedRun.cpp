@@ -52,10 +52,7 @@ MROLR_SIMD_CLONES void projectArrays(const std::array<double, 9> R, const std::a
 		out.u[k] = u, out.v[k] = v, out.tu[k] = qu - u, out.tv[k] = qv - v;
 	}
 }
-}  // namespace
 
-namespace
-{
 SampleBlock blockOf(const EdgeSample* first, size_t n)
 {
 	if (n > ProjectedRun::kMax) throw std::invalid_argument("projectRun: more than kMax samples");

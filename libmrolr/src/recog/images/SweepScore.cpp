@@ -17,6 +17,93 @@ namespace
 /** Below this a bound is not trusted to decide; the complete counts decide then (an early bound
  * compares sums of a few thousand samples at most: rounding is far below it). */
 constexpr double kBoundMargin = 1e-6;
+
+/** A yaw's counts in both images as its prospects' sight tests narrow them: at most
+ * supportedMax() samples supported, at least unhidden_off_ considered and unsupported. */
+class YawBound
+{
+ public:
+	using Limbs = std::array<std::vector<EdgeSample>, 2>;
+	using Both = std::array<Prospects, 2>;
+	using Views = std::array<SelfOcclusion::View, 2>;
+
+	YawBound(const std::vector<EdgeImage>& images, const SightedSamples& s, const Limbs& limbs,
+	         const Both& p, const Views& views)
+	    : images_(images), s_(s), limbs_(limbs), p_(p), views_(views)
+	{
+		for (const Prospects& q : p) supported_max_ += static_cast<int>(q.on_edge.size());
+	}
+
+	/** Tests the supported ones until fewer than @p min_supported can be left: false when all are
+	 * tested and as many are left (the yaw beats the count). */
+	bool countRuledOut(int min_supported)
+	{
+		for (size_t i = 0; i < 2 && supported_max_ >= min_supported; ++i)
+			for (; tested_[i] < p_[i].on_edge.size() && supported_max_ >= min_supported;
+			     ++tested_[i])
+				supported_max_ -= hides(i, p_[i].on_edge[tested_[i]]) ? 1 : 0;
+		return supported_max_ < min_supported;
+	}
+
+	/** Tests the others until ScoreCap's fraction test, S <= @p max_score (at most 1) · C ·
+	 * (1 − 1e-12) with C = S + the unhidden ones off the edges, holds for the complete counts
+	 * (it does once it holds here by the margin: S can only fall to its final value and the
+	 * unhidden ones only rise to theirs); those seen at once first, then the rest of the
+	 * supported ones. False when every sight is tested and it does not hold by the margin. */
+	bool fractionRuledOut(double max_score)
+	{
+		const auto holds = [&]
+		{
+			return supported_max_ <=
+			       max_score * (supported_max_ + unhidden_off_) * (1 - 1e-12) - kBoundMargin;
+		};
+		static thread_local std::array<std::vector<std::uint32_t>, 2> later;
+		for (size_t i = 0; i < 2; ++i)
+		{
+			later[i].clear();
+			for (const std::uint32_t q : p_[i].off_edge)
+			{
+				if (!images_[i].seenAtOnce(s_, views_[i], q))
+				{
+					later[i].push_back(q);
+					continue;
+				}
+				++unhidden_off_;
+				if (holds()) return true;
+			}
+		}
+		for (size_t i = 0; i < 2; ++i)
+			for (const std::uint32_t q : later[i])
+			{
+				unhidden_off_ += hides(i, q) ? 0 : 1;
+				if (holds()) return true;
+			}
+		for (size_t i = 0; i < 2; ++i)
+			for (; tested_[i] < p_[i].on_edge.size(); ++tested_[i])
+			{
+				supported_max_ -= hides(i, p_[i].on_edge[tested_[i]]) ? 1 : 0;
+				if (holds()) return true;
+			}
+		return false;
+	}
+
+	int supportedMax() const { return supported_max_; }
+	int consideredMin() const { return supported_max_ + unhidden_off_; }
+
+ private:
+	bool hides(size_t i, std::uint32_t k) const
+	{
+		return images_[i].hides(s_, limbs_[i], views_[i], k);
+	}
+
+	const std::vector<EdgeImage>& images_;
+	const SightedSamples& s_;
+	const Limbs& limbs_;
+	const Both& p_;
+	const Views& views_;
+	int supported_max_ = 0, unhidden_off_ = 0;
+	std::array<size_t, 2> tested_ = {0, 0};  ///< the supported ones tested, per image
+};
 }  // namespace
 
 void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
@@ -27,15 +114,12 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
 	ProjectedRun r;
 	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
-	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights, size_t offset)
+	const auto walk = [&](const std::vector<EdgeSample>& samples, size_t offset)
 	{
 		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 		{
 			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			if (with_sights)
-				projectRun(T_OinC, K_, D_, ss.blocks[first / ProjectedRun::kMax], r);
-			else
-				projectRun(T_OinC, K_, D_, samples.data() + first, n, r);
+			projectRunOf(ss, samples, first, T_OinC, r);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const cv::Point2d px(r.u[j], r.v[j]);
@@ -50,8 +134,8 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 			}
 		}
 	};
-	walk(ss.samples_O, true, 0);
-	walk(limbs, false, ss.samples_O.size());
+	walk(ss.samples_O, 0);
+	walk(limbs, ss.samples_O.size());
 }
 
 bool EdgeImage::hides(const SightedSamples& s, const std::vector<EdgeSample>& limbs,
@@ -80,70 +164,26 @@ std::optional<ImageScore> ImageVerifier::scoreIfMore(const SightedSamples& sampl
 {
 	ScoreCap cap;
 	cap.min_supported = min_supported, cap.max_fraction = max_score;
-	// the fraction's bound below holds for a fraction of at most 1
+	// the fraction's bound holds for a fraction of at most 1 (YawBound)
 	if (!(max_score <= 1)) return scoreUnlessExceeded(samples, T_OinL, cap);
-	static thread_local std::array<std::vector<EdgeSample>, 2> limbs;
-	static thread_local std::array<Prospects, 2> p;
-	int supported_max = 0, unhidden_off = 0;
+	static thread_local YawBound::Limbs limbs;
+	static thread_local YawBound::Both prospects;
 	for (size_t i = 0; i < 2; ++i)
 	{
 		images_[i].limbsSeen(samples, T_OinL, limbs[i]);
-		images_[i].prospects(samples, T_OinL, limbs[i], p[i]);
-		supported_max += static_cast<int>(p[i].on_edge.size());
+		images_[i].prospects(samples, T_OinL, limbs[i], prospects[i]);
 	}
 	const auto viewOf = [&](size_t i)
 	{
 		return samples.occ ? samples.occ->viewFrom(T_OinL.inverse() * images_[i].centre_L())
 		                   : SelfOcclusion::View();
 	};
-	const std::array<SelfOcclusion::View, 2> views{viewOf(0), viewOf(1)};
-	// ScoreCap's fraction test, S <= max_score·C·(1 − 1e-12) with C = S + the unhidden ones off
-	// the edges: it holds for the complete counts once it holds here (by the margin), since S
-	// can only fall to its final value and the unhidden ones only rise to theirs
-	const auto fractionRuledOut = [&]
-	{
-		return supported_max <=
-		       max_score * (supported_max + unhidden_off) * (1 - 1e-12) - kBoundMargin;
-	};
-	// the supported ones are tested until too few are left to beat min_supported ...
-	std::array<size_t, 2> tested = {0, 0};
-	for (size_t i = 0; i < 2 && supported_max >= min_supported; ++i)
-		for (; tested[i] < p[i].on_edge.size() && supported_max >= min_supported; ++tested[i])
-			supported_max -=
-			    images_[i].hides(samples, limbs[i], views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
-	if (supported_max >= min_supported) return score(samples, T_OinL);
-	// ... then the others until the fraction is ruled out (those seen at once first), then the
-	// rest of the supported ones
-	static thread_local std::array<std::vector<std::uint32_t>, 2> later;
-	for (size_t i = 0; i < 2; ++i)
-	{
-		later[i].clear();
-		for (const std::uint32_t q : p[i].off_edge)
-		{
-			if (!images_[i].seenAtOnce(samples, views[i], q))
-			{
-				later[i].push_back(q);
-				continue;
-			}
-			++unhidden_off;
-			if (fractionRuledOut()) return std::nullopt;
-		}
-	}
-	for (size_t i = 0; i < 2; ++i)
-		for (const std::uint32_t q : later[i])
-		{
-			unhidden_off += images_[i].hides(samples, limbs[i], views[i], q) ? 0 : 1;
-			if (fractionRuledOut()) return std::nullopt;
-		}
-	for (size_t i = 0; i < 2; ++i)
-		for (; tested[i] < p[i].on_edge.size(); ++tested[i])
-		{
-			supported_max -=
-			    images_[i].hides(samples, limbs[i], views[i], p[i].on_edge[tested[i]]) ? 1 : 0;
-			if (fractionRuledOut()) return std::nullopt;
-		}
+	const YawBound::Views views{viewOf(0), viewOf(1)};
+	YawBound bound(images_, samples, limbs, prospects, views);
+	if (!bound.countRuledOut(min_supported)) return score(samples, T_OinL);
+	if (bound.fractionRuledOut(max_score)) return std::nullopt;
 	// every sight tested: the complete counts, decided as ScoreCap decides them
-	cap.supported = supported_max, cap.considered = supported_max + unhidden_off;
+	cap.supported = bound.supportedMax(), cap.considered = bound.consideredMin();
 	if (cap.exceeded()) return std::nullopt;
 	return score(samples, T_OinL);
 }
