@@ -12,6 +12,41 @@ using namespace mrolr::recog;
 using test::boxPose;
 using test::Pair;
 
+namespace
+{
+/** Every figure of the two scores is the same. */
+void expectSame(const ImageScore& a, const ImageScore& b)
+{
+	EXPECT_EQ(a.cost, b.cost);
+	EXPECT_EQ(a.score, b.score);
+	EXPECT_EQ(a.supported, b.supported);
+	EXPECT_EQ(a.considered, b.considered);
+	EXPECT_EQ(a.outside, b.outside);
+	EXPECT_EQ(a.occluded, b.occluded);
+	EXPECT_EQ(a.per_image, b.per_image);
+}
+
+/** ScoreCap's rule on a pose's complete counts: it cannot beat @p min_supported and @p max_score
+ * when it has fewer supported samples and no higher supported fraction. */
+bool cannotBeat(const ImageScore& full, int min_supported, double max_score)
+{
+	return full.supported < min_supported &&
+	       full.supported <= max_score * full.considered * (1 - 1e-12);
+}
+
+/** A mug: a body of revolution (its rims, whose limbs the images add) and a handle that hides
+ * part of it (SelfOcclusion::hiddenOnBodies, hiddenLimb). */
+std::vector<Feature> mug()
+{
+	WireFrameBuilder b("mug");
+	b.circle({0, 0, 0}, 40).circle({0, 0, 55}, 40);
+	for (const double y : {-8.0, 8.0})
+		b.arc({-40, y, 28}, Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitX(), 20, -M_PI / 2,
+		      M_PI / 2);
+	return featuresOf(b.build());
+}
+}  // namespace
+
 // scoreIfCheaper is score() when the cost is below the cap and empty when it is not, whatever the
 // pose (on the box, moved off it, mostly out of view) and the cap (between the costs seen).
 TEST(ImageVerifier, AScoreAskedBelowACostIsTheScoreOrNothing)
@@ -37,40 +72,12 @@ TEST(ImageVerifier, AScoreAskedBelowACostIsTheScoreOrNothing)
 			if (!capped) ++above;
 			if (!capped) continue;
 			++below;
-			EXPECT_EQ(capped->cost, full.cost);
-			EXPECT_EQ(capped->score, full.score);
-			EXPECT_EQ(capped->supported, full.supported);
-			EXPECT_EQ(capped->considered, full.considered);
-			EXPECT_EQ(capped->outside, full.outside);
-			EXPECT_EQ(capped->per_image, full.per_image);
+			expectSame(*capped, full);
 		}
 	}
 	EXPECT_GT(below, 100);
 	EXPECT_GT(above, 100);
 }
-
-namespace
-{
-/** ScoreCap's rule on a pose's complete counts: it cannot beat @p min_supported and @p max_score
- * when it has fewer supported samples and no higher supported fraction. */
-bool cannotBeat(const ImageScore& full, int min_supported, double max_score)
-{
-	return full.supported < min_supported &&
-	       full.supported <= max_score * full.considered * (1 - 1e-12);
-}
-
-/** A mug: a body of revolution (its rims, whose limbs the images add) and a handle that hides
- * part of it (SelfOcclusion::hiddenOnBodies, hiddenLimb). */
-std::vector<Feature> mug()
-{
-	WireFrameBuilder b("mug");
-	b.circle({0, 0, 0}, 40).circle({0, 0, 55}, 40);
-	for (const double y : {-8.0, 8.0})
-		b.arc({-40, y, 28}, Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitX(), 20, -M_PI / 2,
-		      M_PI / 2);
-	return featuresOf(b.build());
-}
-}  // namespace
 
 // scoreIfMore is empty exactly when the pose's complete counts cannot beat what it is asked to,
 // else score() itself, whatever order it tests the samples' sights in: on the box (sights against
@@ -113,12 +120,7 @@ TEST(ImageVerifier, AScoreAskedToBeatABestIsEmptyExactlyWhenItCannot)
 					++empty;
 					continue;
 				}
-				EXPECT_EQ(s->cost, full.cost);
-				EXPECT_EQ(s->score, full.score);
-				EXPECT_EQ(s->supported, full.supported);
-				EXPECT_EQ(s->considered, full.considered);
-				EXPECT_EQ(s->outside, full.outside);
-				EXPECT_EQ(s->occluded, full.occluded);
+				expectSame(*s, full);
 			}
 		}
 	}

@@ -57,15 +57,21 @@ inline bool EdgeImage::hiddenBy(const SelfOcclusion& occ, const SelfOcclusion::V
 	                                : occ.hidden(view, *sight, s.p_O);
 }
 
-inline void EdgeImage::projectRunOf(const SightedSamples& s, const std::vector<EdgeSample>& samples,
-                                    size_t first, const Eigen::Isometry3d& T_OinC,
-                                    ProjectedRun& run) const
+template <class Fn>
+bool EdgeImage::forEachRun(const SightedSamples& s, const std::vector<EdgeSample>& samples,
+                           const Eigen::Isometry3d& T_OinC, Fn fn) const
 {
-	if (&samples == &s.samples_O)
-		projectRun(T_OinC, K_, D_, s.blocks[first / ProjectedRun::kMax], run);
-	else
-		projectRun(T_OinC, K_, D_, samples.data() + first,
-		           std::min(ProjectedRun::kMax, samples.size() - first), run);
+	ProjectedRun run;
+	for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
+	{
+		const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
+		if (&samples == &s.samples_O)
+			projectRun(T_OinC, K_, D_, s.blocks[first / ProjectedRun::kMax], run);
+		else
+			projectRun(T_OinC, K_, D_, samples.data() + first, n, run);
+		if (!fn(run, first, n)) return false;
+	}
+	return true;
 }
 
 template <bool kHiddenToo, class Fn, class Stop>
@@ -99,23 +105,20 @@ void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d&
 			++*outside;
 	};
 	static const SelfOcclusion::PointSight kNoSight;
-	ProjectedRun run;
-	// each run is projected at once (the model's samples from their blocks); the stop is asked
-	// after each sample, as before
+	// each run is projected at once; the stop is asked after each sample, as before
 	const auto walk = [&](const std::vector<EdgeSample>& samples, bool with_sights)
 	{
-		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
+		const auto each = [&](const ProjectedRun& run, size_t first, size_t n)
 		{
-			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			projectRunOf(ss, samples, first, T_OinC, run);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const size_t k = first + j;
 				visit(samples[k], !with_sights ? nullptr : occ ? &ss.sights[k] : &kNoSight, run, j);
 				if (stop()) return false;
 			}
-		}
-		return true;
+			return true;
+		};
+		return forEachRun(ss, samples, T_OinC, each);
 	};
 	if (walk(ss.samples_O, true)) walk(limbs, false);
 }

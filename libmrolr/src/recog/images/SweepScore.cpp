@@ -112,14 +112,11 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 	out.on_edge.clear(), out.off_edge.clear();
 	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
-	ProjectedRun r;
 	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
 	const auto walk = [&](const std::vector<EdgeSample>& samples, size_t offset)
 	{
-		for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
+		const auto each = [&](const ProjectedRun& r, size_t first, size_t n)
 		{
-			const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
-			projectRunOf(ss, samples, first, T_OinC, r);
 			for (size_t j = 0; j < n; ++j)
 			{
 				const cv::Point2d px(r.u[j], r.v[j]);
@@ -132,7 +129,9 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 				                     oriented(at, cv::Point2d(r.tu[j], r.tv[j]));
 				(on_edge ? out.on_edge : out.off_edge).push_back(k);
 			}
-		}
+			return true;
+		};
+		forEachRun(ss, samples, T_OinC, each);
 	};
 	walk(ss.samples_O, 0);
 	walk(limbs, ss.samples_O.size());

@@ -242,10 +242,11 @@ class EdgeImage
 	template <bool kHiddenToo, class Fn, class Stop>
 	void forEachInView(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
 	                   const std::vector<EdgeSample>& limbs, Fn fn, Stop stop, int* outside) const;
-	/** Projects the run of @p samples (those of @p s, or a pose's limbs) from @p first at
-	 * @p T_OinC: the model's samples from their blocks. */
-	void projectRunOf(const SightedSamples& s, const std::vector<EdgeSample>& samples, size_t first,
-	                  const Eigen::Isometry3d& T_OinC, ProjectedRun& run) const;
+	/** Calls @p fn(run, first, n) for each run of @p samples (those of @p s, from their blocks,
+	 * or a pose's limbs) projected at @p T_OinC, while it returns true; false if it stopped. */
+	template <class Fn>
+	bool forEachRun(const SightedSamples& s, const std::vector<EdgeSample>& samples,
+	                const Eigen::Isometry3d& T_OinC, Fn fn) const;
 	/** The sight test of sample @p s (@p sight: its PointSight; null for a limb) against
 	 * @p occ seen as @p view. */
 	bool hiddenBy(const SelfOcclusion& occ, const SelfOcclusion::View& view, const EdgeSample& s,
