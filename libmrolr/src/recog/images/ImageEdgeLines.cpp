@@ -86,7 +86,10 @@ void EdgeImage::addEdgeLines(const SightedSamples& s, const Eigen::Isometry3d& T
 	        const Eigen::Vector3d& p_C)
 	    {
 		    const Pixel at = pixelOf(px);
-		    if (occludedAt(at, p_C.z()) || !oriented(at, tangent)) return;
+		    // the distance before the edge's direction (that look-up misses the cache), as count()
+		    if (occludedAt(at, p_C.z()) || dist_.ptr<float>(at.y)[at.x] > truncate_px ||
+		        !oriented(at, tangent))
+			    return;
 		    addEdgeLine({px, p_C}, c_L, truncate_px, terms);
 	    },
 	    [] { return false; }, nullptr);
