@@ -280,7 +280,7 @@ TEST(ImageVerifier, APoseMostlyOutsideTheImagesScoresZero)
 }
 
 // count() leaves out the direction of the nearest edge from 2 px past the cost's cap on
-// (ImageVerifier.cpp's kFar_px): that holds because the distance to the edges changes by at most
+// (EdgeImageVisit.h's kFar_px): that holds because the distance to the edges changes by at most
 // √2 px from a pixel to any of its eight neighbours. Checked on the drawn pair and on noise,
 // whose edges are everywhere.
 TEST(ImageVerifier, DistanceChangesByAtMostRootTwoToANeighbour)
@@ -308,4 +308,36 @@ TEST(ImageVerifier, DistanceChangesByAtMostRootTwoToANeighbour)
 		}
 	EXPECT_LE(worst, std::sqrt(2.0) + 1e-6);
 	EXPECT_GT(worst, 0.9) << "the images have edges and distances";
+}
+
+// count() reads the class of a sample's distance (supported, under the cost's cap, beyond it)
+// from a byte map drawn for the options' cap, and computes it from the distance for any other
+// cap: with the options' cap and with the next larger number the counts are the same and the
+// costs differ by no more than the caps, at poses on and off the drawn box.
+TEST(ImageVerifier, CountsWithTheOptionsCapAsWithAnyOther)
+{
+	const Pair p;
+	const double cap_px = ImageVerificationOptions().truncate_px;
+	const double other_px = std::nextafter(cap_px, 1e9);
+	const SightedSamples samples(edgeSamplesOf(p.box, 3), &p.occ);
+	int supported = 0, below_cap = 0;
+	for (int k = 0; k < 40; ++k)
+	{
+		const Eigen::Isometry3d T = Eigen::Translation3d(0.3 * k - 6, 0.1 * k, 0) * boxPose() *
+		                            Eigen::AngleAxisd(0.02 * k, Eigen::Vector3d::UnitZ());
+		for (int i = 0; i < 2; ++i)
+		{
+			const ImageCount a = p.images.image(i).count(samples, T, cap_px);
+			const ImageCount b = p.images.image(i).count(samples, T, other_px);
+			EXPECT_EQ(a.considered, b.considered);
+			EXPECT_EQ(a.supported, b.supported);
+			EXPECT_EQ(a.occluded, b.occluded);
+			EXPECT_EQ(a.outside, b.outside);
+			EXPECT_NEAR(a.cost_px2, b.cost_px2, 1e-9 * (1 + b.cost_px2)) << k << " " << i;
+			supported += a.supported;
+			below_cap += a.cost_px2 < a.considered * cap_px * cap_px ? 1 : 0;
+		}
+	}
+	EXPECT_GT(supported, 1000);
+	EXPECT_GT(below_cap, 40);
 }

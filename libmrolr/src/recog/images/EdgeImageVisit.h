@@ -5,9 +5,30 @@
 #include <mrolr/recog/images/ProjectedRun.h>
 
 #include <algorithm>
+#include <cstdint>
 
 namespace mrolr::recog
 {
+/** count()'s bilinear distance at a sample is at least its pixel's distance less √2 px: the
+ * distance transform changes by at most that from a pixel to a neighbour (1.4 with DIST_MASK_5;
+ * test ImageVerifier.DistanceChangesByAtMostRootTwoToANeighbour), and the four pixels
+ * interpolated are the sample's and three of its neighbours. So from the cap (truncate_px) plus
+ * this on, a sample costs the cap whatever the direction of its nearest edge. */
+inline constexpr double kFar_px = 2;
+
+/** What count() asks of a pixel's distance d to the nearest edge: d <= edge_distance_px (a
+ * sample there may be supported), else d < the cap truncate_px + kFar_px (it may cost less than
+ * the cap), else neither. */
+enum Reach : std::uint8_t
+{
+	kClose,
+	kNear,
+	kBeyond
+};
+
+/** The Reach of each pixel of the distance map @p dist (CV_32F, px), as a CV_8U map. */
+cv::Mat reachOf(const cv::Mat& dist, double dist_px, double truncate_px);
+
 // the per-sample look-ups, inline: every score and edge-line term calls them per sample
 inline EdgeImage::Pixel EdgeImage::pixelOf(const cv::Point2d& px)
 {
@@ -31,6 +52,14 @@ inline double EdgeImage::distanceAt(const cv::Point2d& px) const
 	const auto d = [](const float* row, int x) { return static_cast<double>(row[x]); };
 	return (1 - fy) * ((1 - fx) * d(r0, x0) + fx * d(r0, x0 + 1)) +
 	       fy * ((1 - fx) * d(r1, x0) + fx * d(r1, x0 + 1));
+}
+
+inline std::uint8_t EdgeImage::reachAt(const Pixel& at, double truncate_px) const
+{
+	if (truncate_px == reach_truncate_px_) return reach_.ptr<std::uint8_t>(at.y)[at.x];
+	// another cap than reach_'s (or none: 0), from the distance itself
+	const float d = dist_.ptr<float>(at.y)[at.x];
+	return d <= dist_px_ ? kClose : truncate_px > 0 && d < truncate_px + kFar_px ? kNear : kBeyond;
 }
 
 inline bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) const

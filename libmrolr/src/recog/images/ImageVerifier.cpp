@@ -14,13 +14,6 @@ namespace mrolr::recog
 {
 namespace
 {
-/** count()'s bilinear distance at a sample is at least its pixel's distance less √2 px: the
- * distance transform changes by at most that from a pixel to a neighbour (1.4 with DIST_MASK_5;
- * test ImageVerifier.DistanceChangesByAtMostRootTwoToANeighbour), and the four pixels
- * interpolated are the sample's and three of its neighbours. So from the cap (truncate_px) plus
- * this on, a sample costs the cap whatever the direction of its nearest edge. */
-constexpr double kFar_px = 2;
-
 cv::Mat greyOf(const cv::Mat& img, const char* which)
 {
 	if (img.empty()) throw std::invalid_argument(std::string("image verification: empty ") + which);
@@ -141,6 +134,7 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 	cv::distanceTransform(edges_ == 0, dist_, labels_, cv::DIST_L2, cv::DIST_MASK_5,
 	                      cv::DIST_LABEL_PIXEL);
 	if (cv::countNonZero(edges_) == 0) dist_.setTo(1e9);
+	reach_ = reachOf(dist_, dist_px_, o.truncate_px), reach_truncate_px_ = o.truncate_px;
 	for (int y = 0; y < edges_.rows; ++y)
 		for (int x = 0; x < edges_.cols; ++x)
 		{
@@ -166,6 +160,22 @@ EdgeImage::EdgeImage(const cv::Mat& grey, const cv::Matx33d& K, const cv::Vec<do
 			    k < normal_.size() ? cv::Vec2f(normal_[k].x, normal_[k].y) : cv::Vec2f(none, none);
 		}
 	}
+}
+
+cv::Mat reachOf(const cv::Mat& dist, double dist_px, double truncate_px)
+{
+	// in double, as count() compares (cv::compare would round the bounds to float)
+	cv::Mat reach(dist.size(), CV_8U);
+	for (int y = 0; y < dist.rows; ++y)
+	{
+		const float* d = dist.ptr<float>(y);
+		auto* out = reach.ptr<std::uint8_t>(y);
+		for (int x = 0; x < dist.cols; ++x)
+			out[x] = d[x] <= dist_px                                   ? kClose
+			         : truncate_px > 0 && d[x] < truncate_px + kFar_px ? kNear
+			                                                           : kBeyond;
+	}
+	return reach;
 }
 
 SightedSamples::SightedSamples(std::vector<EdgeSample> samples, const SelfOcclusion* occlusion)
@@ -248,11 +258,10 @@ std::optional<ImageCount> EdgeImage::countKeeping(const SightedSamples& s,
 		    ++c.considered;
 		    // the nearest edge's direction (a look-up that misses the cache) matters only where
 		    // the sample may be supported or cost less than the cap
-		    const float d_at = dist_.ptr<float>(at.y)[at.x];
-		    const bool near = d_at <= dist_px_ || (truncate_px > 0 && d_at < truncate_px + kFar_px);
-		    const bool on_edge = near && oriented(at, tangent);
+		    const std::uint8_t reach = reachAt(at, truncate_px);
+		    const bool on_edge = reach != kBeyond && oriented(at, tangent);
 		    if (on_edge) keep(px, p_C);
-		    const int supported = on_edge && d_at <= dist_px_ ? 1 : 0;
+		    const int supported = on_edge && reach == kClose ? 1 : 0;
 		    c.supported += supported;
 		    if (cap) ++cap->considered, cap->supported += supported;
 		    if (truncate_px <= 0) return;

@@ -125,7 +125,7 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 				if (occludedAt(at, r.z[j])) continue;
 				const auto k = static_cast<std::uint32_t>(offset + first + j);
 				// the distance first: most samples of a yaw that fits badly are far from edges
-				const bool on_edge = dist_.ptr<float>(at.y)[at.x] <= dist_px_ &&
+				const bool on_edge = reach_.ptr<std::uint8_t>(at.y)[at.x] == kClose &&
 				                     oriented(at, cv::Point2d(r.tu[j], r.tv[j]));
 				(on_edge ? out.on_edge : out.off_edge).push_back(k);
 			}

@@ -267,6 +267,7 @@ class EdgeImage
 	static Pixel pixelOf(const cv::Point2d& px);
 	bool occludedAt(const Pixel& at, double depth_mm) const;
 	bool supports(const cv::Point2d& px, const cv::Point2d& tangent_px) const;
+	std::uint8_t reachAt(const Pixel& at, double truncate_px) const;  ///< a Reach
 	/** The nearest edge at @p at runs within orientation_tol_deg of @p tangent_px. */
 	bool oriented(const Pixel& at, const cv::Point2d& tangent_px) const;
 	double distanceAt(const cv::Point2d& px) const;  ///< bilinear (px)
@@ -277,8 +278,12 @@ class EdgeImage
 	double dist_px_, sin_tol_;
 	bool limbs_, revolution_visibility_;
 	double limb_spacing_mm_;
-	cv::Mat edges_;                     ///< CV_8U, 255 on edges
-	cv::Mat dist_;                      ///< CV_32F, px to the nearest edge pixel
+	cv::Mat edges_;  ///< CV_8U, 255 on edges
+	cv::Mat dist_;   ///< CV_32F, px to the nearest edge pixel
+	/** CV_8U, the Reach of each pixel's dist_ for the cap reach_truncate_px_ (EdgeImageVisit.h):
+	 * most samples look up a byte, not a float. */
+	cv::Mat reach_;
+	double reach_truncate_px_;
 	cv::Mat labels_;                    ///< CV_32S, label of the nearest edge pixel
 	std::vector<cv::Point2f> normal_;   ///< unit gradient at each label's edge pixel
 	std::vector<cv::Point2f> edge_px_;  ///< each label's edge pixel
