@@ -91,13 +91,14 @@ bool EdgeImage::forEachRun(const SightedSamples& s, const std::vector<EdgeSample
                            const Eigen::Isometry3d& T_OinC, Fn fn) const
 {
 	ProjectedRun run;
+	const RunProjection projection(T_OinC, K_, D_);
 	for (size_t first = 0; first < samples.size(); first += ProjectedRun::kMax)
 	{
 		const size_t n = std::min(ProjectedRun::kMax, samples.size() - first);
 		if (&samples == &s.samples_O)
-			projectRun(T_OinC, K_, D_, s.blocks[first / ProjectedRun::kMax], run);
+			projection.project(s.blocks[first / ProjectedRun::kMax], run);
 		else
-			projectRun(T_OinC, K_, D_, samples.data() + first, n, run);
+			projection.project(samples.data() + first, n, run);
 		if (!fn(run, first, n)) return false;
 	}
 	return true;

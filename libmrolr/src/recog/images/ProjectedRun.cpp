@@ -15,11 +15,20 @@ struct Lens
 	double fx, fy, cx, cy, k1, k2, p1, p2, k3;
 };
 
-/** cv::projectPoints of one point of the camera frame, in OpenCV's order of operations. */
+/** cv::projectPoints of one point of the camera frame, in OpenCV's order of operations; without
+ * the distortion's terms when @p kDistorted is false (all of them 0: then the same bits for a
+ * point in view, where r2 < 2 is finite, since x · 1 + 0 + 0 is x up to the sign of a zero, which
+ * u = x fx + cx does not keep). */
+template <bool kDistorted>
 inline void project(const Lens& L, double X, double Y, double Z, double& u, double& v)
 {
 	const double iz = 1. / (Z + static_cast<double>(Z == 0));  // 1 when Z is 0, as OpenCV's
 	const double x = X * iz, y = Y * iz;
+	if constexpr (!kDistorted)
+	{
+		u = x * L.fx + L.cx, v = y * L.fy + L.cy;
+		return;
+	}
 	const double r2 = x * x + y * y, r4 = r2 * r2, r6 = r4 * r2;
 	const double a1 = 2 * x * y, a2 = r2 + 2 * x * x, a3 = r2 + 2 * y * y;
 	const double cdist = 1 + L.k1 * r2 + L.k2 * r4 + L.k3 * r6;
@@ -28,13 +37,12 @@ inline void project(const Lens& L, double X, double Y, double Z, double& u, doub
 	u = xd * L.fx + L.cx, v = yd * L.fy + L.cy;
 }
 
-/** The run's arithmetic on arrays (structure of arrays), vectorised. */
-MROLR_SIMD_CLONES void projectArrays(const std::array<double, 9> R, const std::array<double, 3> t,
-                                     const Lens L, const double (*p)[ProjectedRun::kMax],
-                                     const double (*d)[ProjectedRun::kMax], size_t n,
-                                     ProjectedRun& out)
+/** The run's arithmetic on arrays (structure of arrays), to be vectorised. */
+template <bool kDistorted>
+inline void projectBody(const std::array<double, 9>& R, const std::array<double, 3>& t,
+                        const Lens& L, const double (*p)[ProjectedRun::kMax],
+                        const double (*d)[ProjectedRun::kMax], size_t n, ProjectedRun& out)
 {
-	// R, t and L by value: the stores to out cannot change them, so that the loop vectorises
 	for (size_t k = 0; k < n; ++k)
 	{
 		// Isometry3d * p: the linear part's rows, summed in Eigen's order, then the translation
@@ -47,10 +55,28 @@ MROLR_SIMD_CLONES void projectArrays(const std::array<double, 9> R, const std::a
 		out.x[k] = X, out.y[k] = Y, out.z[k] = Z;
 		out.in_view[k] = static_cast<std::int64_t>(inView(X, Y, Z) & inView(QX, QY, QZ));
 		double u, v, qu, qv;
-		project(L, X, Y, Z, u, v);
-		project(L, QX, QY, QZ, qu, qv);
+		project<kDistorted>(L, X, Y, Z, u, v);
+		project<kDistorted>(L, QX, QY, QZ, qu, qv);
 		out.u[k] = u, out.v[k] = v, out.tu[k] = qu - u, out.tv[k] = qv - v;
 	}
+}
+
+// R, t and L by value: the stores to out cannot change them, so that the loops vectorise
+MROLR_SIMD_CLONES void projectArrays(const std::array<double, 9> R, const std::array<double, 3> t,
+                                     const Lens L, const double (*p)[ProjectedRun::kMax],
+                                     const double (*d)[ProjectedRun::kMax], size_t n,
+                                     ProjectedRun& out)
+{
+	projectBody<true>(R, t, L, p, d, n, out);
+}
+
+MROLR_SIMD_CLONES void projectPinholeArrays(const std::array<double, 9> R,
+                                            const std::array<double, 3> t, const Lens L,
+                                            const double (*p)[ProjectedRun::kMax],
+                                            const double (*d)[ProjectedRun::kMax], size_t n,
+                                            ProjectedRun& out)
+{
+	projectBody<false>(R, t, L, p, d, n, out);
 }
 
 SampleBlock blockOf(const EdgeSample* first, size_t n)
@@ -73,25 +99,44 @@ std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples)
 	return out;
 }
 
+RunProjection::RunProjection(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K,
+                             const cv::Vec<double, 5>& D)
+    : lens_{K(0, 0), K(1, 1), K(0, 2), K(1, 2), D[0], D[1], D[2], D[3], D[4]},
+      distorted_(D != cv::Vec<double, 5>::all(0))
+{
+	for (int i = 0; i < 3; ++i)
+	{
+		t_[i] = T_OinC.translation()[i];
+		for (int j = 0; j < 3; ++j) R_[3 * j + i] = T_OinC.linear()(i, j);
+	}
+}
+
+void RunProjection::project(const SampleBlock& block, ProjectedRun& out) const
+{
+	const Lens L{lens_[0], lens_[1], lens_[2], lens_[3], lens_[4],
+	             lens_[5], lens_[6], lens_[7], lens_[8]};
+	out.n = block.n;
+	if (distorted_)
+		projectArrays(R_, t_, L, block.p, block.d, block.n, out);
+	else
+		projectPinholeArrays(R_, t_, L, block.p, block.d, block.n, out);
+}
+
+void RunProjection::project(const EdgeSample* first, size_t n, ProjectedRun& out) const
+{
+	project(blockOf(first, n), out);
+}
+
 void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
                 const SampleBlock& block, ProjectedRun& out)
 {
-	std::array<double, 9> R;  // column-major: R[3 j + i] = R(i, j)
-	std::array<double, 3> t;
-	for (int i = 0; i < 3; ++i)
-	{
-		t[i] = T_OinC.translation()[i];
-		for (int j = 0; j < 3; ++j) R[3 * j + i] = T_OinC.linear()(i, j);
-	}
-	const Lens L{K(0, 0), K(1, 1), K(0, 2), K(1, 2), D[0], D[1], D[2], D[3], D[4]};
-	out.n = block.n;
-	projectArrays(R, t, L, block.p, block.d, block.n, out);
+	RunProjection(T_OinC, K, D).project(block, out);
 }
 
 void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
                 const EdgeSample* first, size_t n, ProjectedRun& out)
 {
-	projectRun(T_OinC, K, D, blockOf(first, n), out);
+	RunProjection(T_OinC, K, D).project(first, n, out);
 }
 
 }  // namespace mrolr::recog

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -50,8 +51,30 @@ struct SampleBlock
 /** @p samples in blocks of ProjectedRun::kMax (the last one shorter). */
 std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples);
 
+/** A pose of the camera and its lens as projectRun reads them: built once for a walk over a
+ * pose's samples, then asked for each run. A lens without distortion (D all 0: an ideal or a
+ * rectified camera) is projected without the polynomial, to the same bits: its terms are then 1
+ * and 0 exactly for every point in view. */
+class RunProjection
+{
+ public:
+	/** The camera with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC. */
+	RunProjection(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K,
+	              const cv::Vec<double, 5>& D);
+	/** Fills @p out for the samples of @p block. */
+	void project(const SampleBlock& block, ProjectedRun& out) const;
+	/** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first. */
+	void project(const EdgeSample* first, size_t n, ProjectedRun& out) const;
+
+ private:
+	std::array<double, 9> R_;     ///< column-major: R_[3 j + i] = R(i, j)
+	std::array<double, 3> t_;     ///< mm
+	std::array<double, 9> lens_;  ///< fx fy cx cy k1 k2 p1 p2 k3
+	bool distorted_;
+};
+
 /** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first, seen by the camera
- * with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC. */
+ * with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC (RunProjection). */
 void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
                 const EdgeSample* first, size_t n, ProjectedRun& out);
 /** The same for the samples of @p block. */
