@@ -70,9 +70,8 @@ class ConsistentSetSearch
 		// a table of n² answers; beyond kMaxKnown (a scene of thousands of candidates) every pair
 		// is asked afresh instead
 		known_.assign(n * n <= kMaxKnown ? n * n : 0, kUnknown);
-		chosen_ = {focus};
-		chosen_index_ = {0};
-		best_ = {chosen_};
+		chosen_.assign(1, focus), chosen_index_.assign(1, 0);
+		best_.resize(1), best_.front() = chosen_;  // the buffers kept from the last focus match
 		dfs(0);
 		return best_;
 	}
@@ -116,7 +115,7 @@ class ConsistentSetSearch
 	void record()
 	{
 		if (chosen_.size() > best_.front().size())
-			best_ = {chosen_};
+			best_.resize(1), best_.front() = chosen_;
 		else if (chosen_.size() == best_.front().size() && chosen_.size() > 1 &&
 		         best_.size() < kAlternatives && chosen_ != best_.back())
 			best_.push_back(chosen_);

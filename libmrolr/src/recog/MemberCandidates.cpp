@@ -31,7 +31,8 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 	std::int32_t& index = by_pair_[static_cast<size_t>(slot)][o_focus];
 	if (index >= 0) return lists_[static_cast<size_t>(index)];
 	index = static_cast<std::int32_t>(lists_.size());
-	std::vector<std::uint32_t>& list = lists_.emplace_back();
+	static thread_local std::vector<std::uint32_t> list;  // then copied at its size: one allocation
+	list.clear();
 	const auto& mf = model_.features();
 	const auto& rel = model_.relation(focus, member);
 	const Feature& sa = oriented_[o_focus];
@@ -45,7 +46,7 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 		if (keep_[k] && consistent(rel, angle, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			list.push_back(static_cast<std::uint32_t>(o));
 	}
-	return list;
+	return lists_.emplace_back(list);
 }
 
 const MemberCandidates::Gated& MemberCandidates::gatedFor(size_t member)

@@ -147,8 +147,9 @@ std::optional<Eigen::Matrix3d> rotationFromDirections(const std::vector<Eigen::V
 
 std::optional<Eigen::Isometry3d> faugerasHebertPose(const std::vector<Correspondence>& cs)
 {
-	std::vector<Eigen::Vector3d> a, b;
-	std::vector<double> w;
+	static thread_local std::vector<Eigen::Vector3d> a, b;  // kept per thread: a pose per clique
+	static thread_local std::vector<double> w;
+	a.clear(), b.clear(), w.clear();
 	addDirections(cs, a, b, w);
 	const auto R = rotationFromDirections(a, b, w);
 	if (!R) return std::nullopt;

@@ -207,7 +207,9 @@ void EdgeImage::limbsSeen(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 ImageCount EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
                             double truncate_px) const
 {
-	return *count(s, T_OinL, limbsSeen(s, T_OinL), truncate_px, nullptr);
+	static thread_local std::vector<EdgeSample> limbs;  // kept per thread: a score per pose
+	limbsSeen(s, T_OinL, limbs);
+	return *count(s, T_OinL, limbs, truncate_px, nullptr);
 }
 
 std::optional<ImageCount> EdgeImage::count(const SightedSamples& s, const Eigen::Isometry3d& T_OinL,
