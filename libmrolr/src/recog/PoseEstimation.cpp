@@ -81,7 +81,8 @@ std::optional<Eigen::Vector3d> translationFor(const std::vector<Correspondence>&
 		A += P;
 		rhs += P * (c.scene.m - R * c.model.m);
 	}
-	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(A);
+	// the eigenvalues alone: the same QR steps on the same tridiagonal form, without the vectors
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(A, Eigen::EigenvaluesOnly);
 	if (es.eigenvalues()(0) < 1e-3) return std::nullopt;
 	return Eigen::Vector3d(A.ldlt().solve(rhs));
 }
@@ -118,7 +119,8 @@ bool spansPlane(const opengv::points_t& pts)
 	for (const auto& p : pts) mean += p / static_cast<double>(pts.size());
 	Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
 	for (const auto& p : pts) C += (p - mean) * (p - mean).transpose();
-	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C / static_cast<double>(pts.size()));
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C / static_cast<double>(pts.size()),
+	                                                        Eigen::EigenvaluesOnly);
 	return es.eigenvalues()(1) > 1.0;
 }
 
