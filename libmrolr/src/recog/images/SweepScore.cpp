@@ -109,25 +109,37 @@ class YawBound
 void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_OinL,
                           const std::vector<EdgeSample>& limbs, Prospects& out) const
 {
-	out.on_edge.clear(), out.off_edge.clear();
+	// written through raw pointers, with every bound and map in a local (the writes through a
+	// vector or a capture would have them reloaded at each sample), then cut to length
+	const size_t total = ss.samples_O.size() + limbs.size();
+	out.on_edge.resize(total), out.off_edge.resize(total);
+	std::uint32_t *on = out.on_edge.data(), *off = out.off_edge.data();
+	size_t n_on = 0, n_off = 0;
 	const Eigen::Isometry3d T_OinC = T_LinCcv_ * T_OinL;
-	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
+	// cv::Rect2d(0, 0, cols − 1, rows − 1).contains
+	const double max_u = edges_.cols - 1, max_v = edges_.rows - 1;
+	const std::uint8_t* const reach = reach_.data;
+	const size_t reach_step = reach_.step[0];
+	const bool occluders = occluder_z_.data != nullptr;
 	// forEachInView's walk without the sight tests: in view, inside the image, not occluded
 	const auto walk = [&](const std::vector<EdgeSample>& samples, size_t offset)
 	{
 		const auto each = [&](const ProjectedRun& r, size_t first, size_t n)
 		{
+			const auto base = static_cast<std::uint32_t>(offset + first);
 			for (size_t j = 0; j < n; ++j)
 			{
-				const cv::Point2d px(r.u[j], r.v[j]);
-				if (!r.in_view[j] || !inside.contains(px)) continue;
-				const Pixel at = pixelOf(px);
-				if (occludedAt(at, r.z[j])) continue;
-				const auto k = static_cast<std::uint32_t>(offset + first + j);
+				const double u = r.u[j], v = r.v[j];
+				if (!r.in_view[j] || !(u >= 0 && u < max_u && v >= 0 && v < max_v)) continue;
+				const Pixel at = pixelOf(cv::Point2d(u, v));
+				if (occluders && occludedAt(at, r.z[j])) continue;
+				const auto k = base + static_cast<std::uint32_t>(j);
 				// the distance first: most samples of a yaw that fits badly are far from edges
-				const bool on_edge = reach_.ptr<std::uint8_t>(at.y)[at.x] == kClose &&
-				                     oriented(at, cv::Point2d(r.tu[j], r.tv[j]));
-				(on_edge ? out.on_edge : out.off_edge).push_back(k);
+				if (reach[at.y * reach_step + at.x] == kClose &&
+				    oriented(at, cv::Point2d(r.tu[j], r.tv[j])))
+					on[n_on++] = k;
+				else
+					off[n_off++] = k;
 			}
 			return true;
 		};
@@ -135,6 +147,7 @@ void EdgeImage::prospects(const SightedSamples& ss, const Eigen::Isometry3d& T_O
 	};
 	walk(ss.samples_O, 0);
 	walk(limbs, ss.samples_O.size());
+	out.on_edge.resize(n_on), out.off_edge.resize(n_off);
 }
 
 bool EdgeImage::hides(const SightedSamples& s, const std::vector<EdgeSample>& limbs,
