@@ -117,7 +117,9 @@ SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
 {
 	View v;
 	v.c_O_ = c_O;
-	for (size_t i = 0; i < normals_.size(); ++i) v.nc_[i] = normals_[i].dot(c_O);
+	// n·c over the face directions' arrays, in Vector3d::dot's order: (x + y) + z
+	const double cx = c_O.x(), cy = c_O.y(), cz = c_O.z();
+	for (size_t i = 0; i < nx_.size(); ++i) v.nc_[i] = nx_[i] * cx + ny_[i] * cy + nz_[i] * cz;
 	v.all_ = facesFrom(offsets_, v.nc_);
 	v.balls_ = ballsSeenFrom(balls_, c_O);
 	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
