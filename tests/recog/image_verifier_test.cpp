@@ -313,7 +313,8 @@ TEST(ImageVerifier, DistanceChangesByAtMostRootTwoToANeighbour)
 // count() reads the class of a sample's distance (supported, under the cost's cap, beyond it)
 // from a byte map drawn for the options' cap, and computes it from the distance for any other
 // cap: with the options' cap and with the next larger number the counts are the same and the
-// costs differ by no more than the caps, at poses on and off the drawn box.
+// costs differ by no more than the caps, at poses on and off the drawn box. Without a cap (0,
+// what a score without its cost asks) the counts are the same too.
 TEST(ImageVerifier, CountsWithTheOptionsCapAsWithAnyOther)
 {
 	const Pair p;
@@ -334,6 +335,12 @@ TEST(ImageVerifier, CountsWithTheOptionsCapAsWithAnyOther)
 			EXPECT_EQ(a.occluded, b.occluded);
 			EXPECT_EQ(a.outside, b.outside);
 			EXPECT_NEAR(a.cost_px2, b.cost_px2, 1e-9 * (1 + b.cost_px2)) << k << " " << i;
+			const ImageCount c = p.images.image(i).count(samples, T, 0);
+			EXPECT_EQ(c.considered, a.considered);
+			EXPECT_EQ(c.supported, a.supported);
+			EXPECT_EQ(c.occluded, a.occluded);
+			EXPECT_EQ(c.outside, a.outside);
+			EXPECT_EQ(c.cost_px2, 0);
 			supported += a.supported;
 			below_cap += a.cost_px2 < a.considered * cap_px * cap_px ? 1 : 0;
 		}

@@ -56,8 +56,10 @@ inline double EdgeImage::distanceAt(const cv::Point2d& px) const
 
 inline std::uint8_t EdgeImage::reachAt(const Pixel& at, double truncate_px) const
 {
-	if (truncate_px == reach_truncate_px_) return reach_.ptr<std::uint8_t>(at.y)[at.x];
-	// another cap than reach_'s (or none: 0), from the distance itself
+	const std::uint8_t reach = reach_.ptr<std::uint8_t>(at.y)[at.x];
+	if (truncate_px == reach_truncate_px_) return reach;
+	if (truncate_px <= 0) return reach == kClose ? kClose : kBeyond;  // no cap: no kNear
+	// another cap than reach_'s, from the distance itself
 	const float d = dist_.ptr<float>(at.y)[at.x];
 	return d <= dist_px_ ? kClose : truncate_px > 0 && d < truncate_px + kFar_px ? kNear : kBeyond;
 }

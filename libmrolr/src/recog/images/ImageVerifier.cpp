@@ -318,12 +318,14 @@ ImageScore ImageVerifier::score(const std::vector<EdgeSample>& samples_O,
 	return score(SightedSamples(samples_O, occ), T_OinL);
 }
 
-ImageScore ImageVerifier::score(const SightedSamples& samples,
-                                const Eigen::Isometry3d& T_OinL) const
+ImageScore ImageVerifier::score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
+                                bool with_cost) const
 {
+	// without the cost's cap, count() looks up the nearest edge's direction only for the samples
+	// that may be supported, and no distance at all
 	std::array<ImageCount, 2> counts;
 	for (size_t i = 0; i < images_.size(); ++i)
-		counts[i] = images_[i].count(samples, T_OinL, opts_.truncate_px);
+		counts[i] = images_[i].count(samples, T_OinL, with_cost ? opts_.truncate_px : 0);
 	return combined(counts);
 }
 

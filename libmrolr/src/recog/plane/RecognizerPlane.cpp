@@ -63,7 +63,8 @@ RecognitionResult Recognizer::onPlane(const std::vector<Feature>& scene, const S
 		const detail::StageTimer timer(best.times.plane_ms);
 		hyps = plane_gen_->generate(scene, plane);
 		const SightedSamples& coarse = sightedSamples(po.prerank_spacing_mm);
-		for (const auto& h : hyps) quick.push_back(images.score(coarse, h.T_OinS).score);
+		// the score alone: the cost is not asked
+		for (const auto& h : hyps) quick.push_back(images.score(coarse, h.T_OinS, false).score);
 	}
 	const Eigen::Vector3d* up_S = &plane.n_S;
 	const LevelParams& p = opts_.levels.back();
@@ -79,7 +80,9 @@ RecognitionResult Recognizer::onPlane(const std::vector<Feature>& scene, const S
 			poses.push_back({T,
 			                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
 			                            occlusionFor(up_S)),
-			                 std::nullopt, k, {}});
+			                 std::nullopt,
+			                 k,
+			                 {}});
 		}
 	}
 	judgeInImages(poses, images, os.features, p, up_S, refined, best.times);

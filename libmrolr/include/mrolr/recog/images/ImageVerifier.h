@@ -280,9 +280,7 @@ class EdgeImage
 	double limb_spacing_mm_;
 	cv::Mat edges_;  ///< CV_8U, 255 on edges
 	cv::Mat dist_;   ///< CV_32F, px to the nearest edge pixel
-	/** CV_8U, the Reach of each pixel's dist_ for the cap reach_truncate_px_ (EdgeImageVisit.h):
-	 * most samples look up a byte, not a float. */
-	cv::Mat reach_;
+	cv::Mat reach_;  ///< CV_8U: each pixel's Reach for the cap reach_truncate_px_ (a byte to read)
 	double reach_truncate_px_;
 	cv::Mat labels_;                    ///< CV_32S, label of the nearest edge pixel
 	std::vector<cv::Point2f> normal_;   ///< unit gradient at each label's edge pixel
@@ -313,8 +311,10 @@ class ImageVerifier
 	/** The same on samples already taken (edgeSamplesOf with options().sample_spacing_mm). */
 	ImageScore score(const std::vector<EdgeSample>& samples_O, const Eigen::Isometry3d& T_OinL,
 	                 const SelfOcclusion* occ) const;
-	/** The same on samples whose sight is known (what the Recognizer scores with). */
-	ImageScore score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL) const;
+	/** The same on samples whose sight is known (what the Recognizer scores with). Without the
+	 * cost when not @p with_cost (0): the same counts and score, for less (a quick ranking). */
+	ImageScore score(const SightedSamples& samples, const Eigen::Isometry3d& T_OinL,
+	                 bool with_cost = true) const;
 	/** score() when its cost is below @p max_cost_px2, else empty: gives up as soon as the
 	 * samples counted prove that it is not (ScoreCap). What the local search asks of a step. */
 	std::optional<ImageScore> scoreIfCheaper(const SightedSamples& samples,
