@@ -61,7 +61,7 @@ inline std::uint8_t EdgeImage::reachAt(const Pixel& at, double truncate_px) cons
 	if (truncate_px <= 0) return reach == kClose ? kClose : kBeyond;  // no cap: no kNear
 	// another cap than reach_'s, from the distance itself
 	const float d = dist_.ptr<float>(at.y)[at.x];
-	return d <= dist_px_ ? kClose : truncate_px > 0 && d < truncate_px + kFar_px ? kNear : kBeyond;
+	return d <= dist_px_ ? kClose : d < truncate_px + kFar_px ? kNear : kBeyond;
 }
 
 inline bool EdgeImage::oriented(const Pixel& at, const cv::Point2d& tangent_px) const

@@ -10,10 +10,7 @@ namespace mrolr::recog
 {
 namespace
 {
-struct Lens
-{
-	double fx, fy, cx, cy, k1, k2, p1, p2, k3;
-};
+using Lens = RunProjection::Lens;
 
 /** cv::projectPoints of one point of the camera frame, in OpenCV's order of operations; without
  * the distortion's terms when @p kDistorted is false (all of them 0: then the same bits for a
@@ -113,13 +110,11 @@ RunProjection::RunProjection(const Eigen::Isometry3d& T_OinC, const cv::Matx33d&
 
 void RunProjection::project(const SampleBlock& block, ProjectedRun& out) const
 {
-	const Lens L{lens_[0], lens_[1], lens_[2], lens_[3], lens_[4],
-	             lens_[5], lens_[6], lens_[7], lens_[8]};
 	out.n = block.n;
 	if (distorted_)
-		projectArrays(R_, t_, L, block.p, block.d, block.n, out);
+		projectArrays(R_, t_, lens_, block.p, block.d, block.n, out);
 	else
-		projectPinholeArrays(R_, t_, L, block.p, block.d, block.n, out);
+		projectPinholeArrays(R_, t_, lens_, block.p, block.d, block.n, out);
 }
 
 void RunProjection::project(const EdgeSample* first, size_t n, ProjectedRun& out) const

@@ -58,6 +58,12 @@ std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples);
 class RunProjection
 {
  public:
+	/** The lens: intrinsics (px) and distortion. */
+	struct Lens
+	{
+		double fx, fy, cx, cy, k1, k2, p1, p2, k3;
+	};
+
 	/** The camera with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC. */
 	RunProjection(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K,
 	              const cv::Vec<double, 5>& D);
@@ -67,9 +73,9 @@ class RunProjection
 	void project(const EdgeSample* first, size_t n, ProjectedRun& out) const;
 
  private:
-	std::array<double, 9> R_;     ///< column-major: R_[3 j + i] = R(i, j)
-	std::array<double, 3> t_;     ///< mm
-	std::array<double, 9> lens_;  ///< fx fy cx cy k1 k2 p1 p2 k3
+	std::array<double, 9> R_;  ///< column-major: R_[3 j + i] = R(i, j)
+	std::array<double, 3> t_;  ///< mm
+	Lens lens_;
 	bool distorted_;
 };
 
