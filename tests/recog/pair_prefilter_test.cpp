@@ -74,5 +74,6 @@ TEST(PairPrefilter, KeepsEveryPairConsistentAcceptsAndSetsMostOthersAside)
 			}
 	}
 	EXPECT_GT(accepted, 1000);
-	EXPECT_GT(set_aside, rejected / 2);
+	// the angle and h alone set aside 93 % of them; with the intervals too, more than 95 %
+	EXPECT_GT(set_aside, rejected * 0.95);
 }

@@ -1,6 +1,7 @@
 #include <mrolr/recog/PairPrefilter.h>
 #include <mrolr/util/SimdClones.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrolr::recog
@@ -16,25 +17,37 @@ struct Quick
 {
 	double ax, ay, az, amx, amy, amz;  ///< the matched scene feature a
 	double cos_lo, cos_hi;             ///< the angle test's range, widened
-	bool skew;                         ///< test h too
+	bool skew;                         ///< test h and the intervals too
 	double h, h_tol;                   ///< the model's h and its tolerance, widened
+	/// consistentLineLine's bounds on the scene pair's intervals (lineLineSkew), widened, as
+	/// bounds on q1 and, less half the scene segment's length, on q2
+	double q1_min, q1_max, q2_min, q2_max;
 };
 
-MROLR_SIMD_CLONES void quickTest(const Quick q, const double* ux, const double* uy,
-                                 const double* uz, const double* mx, const double* my,
-                                 const double* mz, size_t n, std::int64_t* keep)
+MROLR_SIMD_CLONES void quickTest(const Quick q, const PackedFeatures::Arrays p, size_t n,
+                                 std::int64_t* keep)
 {
 	for (size_t k = 0; k < n; ++k)
 	{
-		const double c = q.ax * ux[k] + q.ay * uy[k] + q.az * uz[k];
+		const double c = q.ax * p.ux[k] + q.ay * p.uy[k] + q.az * p.uz[k];
 		const bool angle = (c >= q.cos_lo) & (c <= q.cos_hi);
 		// h = (m_b − m_a) · (u_a × u_b) / |u_a × u_b|, compared without the division
-		const double cx = q.ay * uz[k] - q.az * uy[k], cy = q.az * ux[k] - q.ax * uz[k],
-		             cz = q.ax * uy[k] - q.ay * ux[k];
+		const double cx = q.ay * p.uz[k] - q.az * p.uy[k], cy = q.az * p.ux[k] - q.ax * p.uz[k],
+		             cz = q.ax * p.uy[k] - q.ay * p.ux[k];
 		const double r = std::sqrt(cx * cx + cy * cy + cz * cz);
-		const double h_r = (mx[k] - q.amx) * cx + (my[k] - q.amy) * cy + (mz[k] - q.amz) * cz;
+		const double h_r = (p.mx[k] - q.amx) * cx + (p.my[k] - q.amy) * cy + (p.mz[k] - q.amz) * cz;
 		const bool near = std::abs(h_r - q.h * r) <= q.h_tol * r;
-		keep[k] = static_cast<std::int64_t>(angle & (!q.skew | near));
+		// the common perpendicular's feet q1 = x1 / den, q2 = x2 / den (lineLineSkew) within
+		// their bounds, compared without the division (den > 0; at 0 the pair is kept)
+		const double wx = q.amx - p.mx[k], wy = q.amy - p.my[k], wz = q.amz - p.mz[k];
+		const double d1 = q.ax * wx + q.ay * wy + q.az * wz;
+		const double e = p.ux[k] * wx + p.uy[k] * wy + p.uz[k] * wz;
+		const double den = 1 - c * c, x1 = c * e - d1, x2 = e - c * d1, half = 0.5 * p.len[k];
+		const bool inside =
+		    (den <= 0) | ((x1 >= q.q1_min * den) & (x1 <= q.q1_max * den) &
+		                  (x2 >= (q.q2_min + half) * den) & (x2 <= (q.q2_max - half) * den));
+		const bool skew_ok = near & inside;
+		keep[k] = static_cast<std::int64_t>(angle & (!q.skew | skew_ok));
 	}
 }
 }  // namespace
@@ -43,6 +56,12 @@ void PackedFeatures::push_back(const Feature& f)
 {
 	ux.push_back(f.u.x()), uy.push_back(f.u.y()), uz.push_back(f.u.z());
 	mx.push_back(f.m.x()), my.push_back(f.m.y()), mz.push_back(f.m.z());
+	len.push_back(f.len_mm);
+}
+
+PackedFeatures::Arrays PackedFeatures::arrays() const
+{
+	return {ux.data(), uy.data(), uz.data(), mx.data(), my.data(), mz.data(), len.data()};
 }
 
 void mayBeConsistent(const PairRelation& m, const Feature& ma, const Feature& mb, const Feature& a,
@@ -50,22 +69,25 @@ void mayBeConsistent(const PairRelation& m, const Feature& ma, const Feature& mb
                      std::vector<std::int64_t>& keep)
 {
 	const CosineRange angle = cosineRange(m, tol);
-	Quick q{a.u.x(),
-	        a.u.y(),
-	        a.u.z(),
-	        a.m.x(),
-	        a.m.y(),
-	        a.m.z(),
-	        angle.lo - kCosSlack,
-	        angle.hi + kCosSlack,
-	        ma.isLine() && mb.isLine() && !m.parallel,
-	        m.h,
-	        0};
-	// consistentLineLine's bound on h for two skew lines
-	q.h_tol = 2 * tol.beta_mm + (std::abs(m.q1) + std::abs(m.q2)) * tol.tan_theta + kHSlack_mm;
+	Quick q{};
+	q.ax = a.u.x(), q.ay = a.u.y(), q.az = a.u.z();
+	q.amx = a.m.x(), q.amy = a.m.y(), q.amz = a.m.z();
+	q.cos_lo = angle.lo - kCosSlack, q.cos_hi = angle.hi + kCosSlack;
+	q.skew = ma.isLine() && mb.isLine() && !m.parallel;
+	// consistentLineLine's bounds for two skew lines: on h, then on the intervals
+	const double tanT = tol.tan_theta, b2 = 2 * tol.beta_mm;
+	q.h = m.h;
+	q.h_tol = b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT + kHSlack_mm;
+	const double sinA = std::max(m.sin_alpha, 1e-3);
+	const double tol1 = b2 + std::abs(m.q2) * tanT / sinA;
+	const double tol2 = b2 + std::abs(m.q1) * tanT / sinA;
+	// −len/2 − q >= lo − tol and len/2 − q <= hi + tol, for the scene's first and second segment
+	q.q1_min = 0.5 * a.len_mm - (m.hi1 + tol1) - kHSlack_mm;
+	q.q1_max = -0.5 * a.len_mm - (m.lo1 - tol1) + kHSlack_mm;
+	q.q2_min = -(m.hi2 + tol2) - kHSlack_mm;
+	q.q2_max = -(m.lo2 - tol2) + kHSlack_mm;
 	keep.resize(packed.size());
-	quickTest(q, packed.ux.data(), packed.uy.data(), packed.uz.data(), packed.mx.data(),
-	          packed.my.data(), packed.mz.data(), packed.size(), keep.data());
+	quickTest(q, packed.arrays(), packed.size(), keep.data());
 }
 
 }  // namespace mrolr::recog
