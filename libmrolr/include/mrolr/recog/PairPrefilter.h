@@ -3,9 +3,8 @@
  * many, on packed arrays so that the compiler vectorises it (MROLR_SIMD_CLONES): the angle test
  * and, for two skew model lines, the tests of their common perpendicular's length h and of the
  * intervals of the two segments from its feet (paper 3.2), each widened by far more than rounding
- * can move them. It never rejects a pair that consistent()
- * accepts; consistent() then decides for those it keeps. Most scene pairs fail one of these two
- * tests (MemberCandidates::of). */
+ * can move them. It never rejects a pair that consistent() accepts; consistent() then decides for
+ * those it keeps. Most scene pairs fail one of these tests (MemberCandidates::of). */
 
 #include <mrolr/recog/Feature.h>
 #include <mrolr/recog/PairRelation.h>
