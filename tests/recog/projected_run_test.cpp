@@ -1,4 +1,4 @@
-// projectRun, the image verification's arithmetic a run of samples at a time: the same bits as
+// RunProjection, the image verification's arithmetic a run of samples at a time: the same bits as
 // one sample at a time through Eigen (the pose) and cv::projectPoints (the lens), so that
 // vectorising it leaves every image score as it was.
 #include <mrolr/recog/images/ProjectedRun.h>
@@ -53,7 +53,7 @@ TEST(ProjectedRun, GivesTheSameBitsAsEigenAndProjectPointsOneSampleAtATime)
 			const size_t n = 1 + static_cast<size_t>(pose) % ProjectedRun::kMax;
 			const auto samples = randomSamples(rng, static_cast<int>(n));
 			ProjectedRun run;
-			projectRun(T_OinC, K, D, samples.data(), n, run);
+			RunProjection(T_OinC, K, D).project(samples.data(), n, run);
 			ASSERT_EQ(run.n, n);
 			for (size_t k = 0; k < n; ++k)
 			{
@@ -81,9 +81,10 @@ TEST(ProjectedRun, RefusesARunLongerThanItsArrays)
 {
 	const std::vector<EdgeSample> samples(ProjectedRun::kMax + 1);
 	ProjectedRun run;
-	EXPECT_THROW(projectRun(Eigen::Isometry3d::Identity(), cv::Matx33d::eye(), cv::Vec<double, 5>(),
-	                        samples.data(), samples.size(), run),
-	             std::invalid_argument);
+	EXPECT_THROW(
+	    RunProjection(Eigen::Isometry3d::Identity(), cv::Matx33d::eye(), cv::Vec<double, 5>())
+	        .project(samples.data(), samples.size(), run),
+	    std::invalid_argument);
 }
 
 // A model's samples transposed once (sampleBlocksOf, what SightedSamples keeps): blocks of kMax in
@@ -105,8 +106,8 @@ TEST(ProjectedRun, SampleBlocksHoldTheSamplesInOrderAndProjectTheSame)
 			const size_t first = b * ProjectedRun::kMax;
 			ASSERT_EQ(blocks[b].n, std::min(ProjectedRun::kMax, samples.size() - first));
 			ProjectedRun from_block, direct;
-			projectRun(T_OinC, K, D, blocks[b], from_block);
-			projectRun(T_OinC, K, D, samples.data() + first, blocks[b].n, direct);
+			RunProjection(T_OinC, K, D).project(blocks[b], from_block);
+			RunProjection(T_OinC, K, D).project(samples.data() + first, blocks[b].n, direct);
 			for (size_t k = 0; k < blocks[b].n; ++k)
 			{
 				EXPECT_EQ(blocks[b].p[2][k], samples[first + k].p_O.z());

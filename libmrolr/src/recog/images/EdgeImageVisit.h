@@ -116,7 +116,7 @@ void EdgeImage::forEachInView(const SightedSamples& ss, const Eigen::Isometry3d&
 	const Eigen::Vector3d c_O = T_OinL.inverse() * centre_L();
 	const SelfOcclusion::View view = occ ? occ->viewFrom(c_O) : SelfOcclusion::View();
 	const cv::Rect2d inside(0, 0, edges_.cols - 1, edges_.rows - 1);
-	// sample j of run r (projectRun: its point and pixels, computed for the run at once)
+	// sample j of run r (RunProjection: its point and pixels, computed for the run at once)
 	const auto visit = [&](const EdgeSample& s, const SelfOcclusion::PointSight* sight,
 	                       const ProjectedRun& r, size_t j)
 	{

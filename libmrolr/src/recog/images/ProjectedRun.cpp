@@ -78,7 +78,8 @@ MROLR_SIMD_CLONES void projectPinholeArrays(const std::array<double, 9> R,
 
 SampleBlock blockOf(const EdgeSample* first, size_t n)
 {
-	if (n > ProjectedRun::kMax) throw std::invalid_argument("projectRun: more than kMax samples");
+	if (n > ProjectedRun::kMax)
+		throw std::invalid_argument("RunProjection: more than kMax samples");
 	SampleBlock b;
 	b.n = n;
 	for (size_t k = 0; k < n; ++k)
@@ -120,18 +121,6 @@ void RunProjection::project(const SampleBlock& block, ProjectedRun& out) const
 void RunProjection::project(const EdgeSample* first, size_t n, ProjectedRun& out) const
 {
 	project(blockOf(first, n), out);
-}
-
-void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
-                const SampleBlock& block, ProjectedRun& out)
-{
-	RunProjection(T_OinC, K, D).project(block, out);
-}
-
-void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
-                const EdgeSample* first, size_t n, ProjectedRun& out)
-{
-	RunProjection(T_OinC, K, D).project(first, n, out);
 }
 
 }  // namespace mrolr::recog

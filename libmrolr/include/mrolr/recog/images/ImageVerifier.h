@@ -51,7 +51,7 @@ struct SightedSamples
 	std::vector<EdgeSample> samples_O;
 	const SelfOcclusion* occ = nullptr;
 	std::vector<SelfOcclusion::PointSight> sights;  ///< per sample; empty without occ
-	std::vector<SampleBlock> blocks;                ///< samples_O as projectRun reads them
+	std::vector<SampleBlock> blocks;                ///< samples_O as RunProjection reads them
 };
 
 /** Result of one hypothesis in the images. */

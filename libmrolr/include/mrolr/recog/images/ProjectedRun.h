@@ -38,7 +38,7 @@ inline bool inView(double x, double y, double z)
 	return (z > 1) & (std::abs(x) < z) & (std::abs(y) < z);
 }
 
-/** Up to ProjectedRun::kMax samples laid out as projectRun reads them (one array per
+/** Up to ProjectedRun::kMax samples laid out as RunProjection reads them (one array per
  * coordinate): a model's samples are projected at every pose a score asks about, and transposed
  * once (SightedSamples). */
 struct SampleBlock
@@ -51,8 +51,8 @@ struct SampleBlock
 /** @p samples in blocks of ProjectedRun::kMax (the last one shorter). */
 std::vector<SampleBlock> sampleBlocksOf(const std::vector<EdgeSample>& samples);
 
-/** A pose of the camera and its lens as projectRun reads them: built once for a walk over a
- * pose's samples, then asked for each run. A lens without distortion (D all 0: an ideal or a
+/** A pose of the camera and its lens as the projection of a run reads them: built once for a walk
+ * over a pose's samples, then asked for each run. A lens without distortion (D all 0: an ideal or a
  * rectified camera) is projected without the polynomial, to the same bits: its terms are then 1
  * and 0 exactly for every point in view. */
 class RunProjection
@@ -69,7 +69,8 @@ class RunProjection
 	              const cv::Vec<double, 5>& D);
 	/** Fills @p out for the samples of @p block. */
 	void project(const SampleBlock& block, ProjectedRun& out) const;
-	/** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first. */
+	/** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first (more: throws
+	 * std::invalid_argument). */
 	void project(const EdgeSample* first, size_t n, ProjectedRun& out) const;
 
  private:
@@ -78,13 +79,5 @@ class RunProjection
 	Lens lens_;
 	bool distorted_;
 };
-
-/** Fills @p out for the @p n <= ProjectedRun::kMax samples from @p first, seen by the camera
- * with intrinsics @p K and distortion @p D (k1 k2 p1 p2 k3) at @p T_OinC (RunProjection). */
-void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
-                const EdgeSample* first, size_t n, ProjectedRun& out);
-/** The same for the samples of @p block. */
-void projectRun(const Eigen::Isometry3d& T_OinC, const cv::Matx33d& K, const cv::Vec<double, 5>& D,
-                const SampleBlock& block, ProjectedRun& out);
 
 }  // namespace mrolr::recog
