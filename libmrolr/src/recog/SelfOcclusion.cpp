@@ -98,10 +98,10 @@ std::vector<double> SelfOcclusion::offsetsOf(const std::vector<std::vector<Eigen
 	return out;
 }
 
-SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& offsets,
-                                                    const View::PerFace& nc) const
+void SelfOcclusion::facesFrom(const std::vector<double>& offsets, const View::PerFace& nc,
+                              View::Faces& f) const
 {
-	View::Faces f;
+	f.outside = {0, 0}, f.n = 0;
 	for (size_t i = 0; i < offsets.size(); ++i)
 	{
 		if (nc[i] <= offsets[i]) continue;
@@ -110,7 +110,6 @@ SelfOcclusion::View::Faces SelfOcclusion::facesFrom(const std::vector<double>& o
 		f.nc[f.n] = nc[i], f.gap[f.n] = nc[i] - offsets[i], f.offset[f.n] = offsets[i];
 		++f.n;
 	}
-	return f;
 }
 
 SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
@@ -120,9 +119,9 @@ SelfOcclusion::View SelfOcclusion::viewFrom(const Eigen::Vector3d& c_O) const
 	// n·c over the face directions' arrays, in Vector3d::dot's order: (x + y) + z
 	const double cx = c_O.x(), cy = c_O.y(), cz = c_O.z();
 	for (size_t i = 0; i < nx_.size(); ++i) v.nc_[i] = nx_[i] * cx + ny_[i] * cy + nz_[i] * cz;
-	v.all_ = facesFrom(offsets_, v.nc_);
+	facesFrom(offsets_, v.nc_, v.all_);
 	v.balls_ = ballsSeenFrom(balls_, c_O);
-	if (!rest_offsets_.empty()) v.rest_ = facesFrom(rest_offsets_, v.nc_);
+	if (!rest_offsets_.empty()) facesFrom(rest_offsets_, v.nc_, v.rest_);
 	v.bodies_.reserve(bodies_.size());
 	for (const auto& b : bodies_) v.bodies_.push_back(bodySight(b, c_O));
 	return v;

@@ -108,7 +108,10 @@ class SelfOcclusion
  private:
 	std::vector<double> offsetsOf(const std::vector<std::vector<Eigen::Vector3d>>& pts,
 	                              double margin_mm) const;
-	View::Faces facesFrom(const std::vector<double>& offsets, const View::PerFace& nc) const;
+	/** Writes into @p f the faces of @p offsets the camera is outside of, from its n·c @p nc (in
+	 * place: a Faces is 6 kB, and viewFrom copied two of them per View). */
+	void facesFrom(const std::vector<double>& offsets, const View::PerFace& nc,
+	               View::Faces& f) const;
 	std::array<std::uint64_t, 2> outsideFaces(const std::vector<double>& offsets,
 	                                          const Eigen::Vector3d& p_O) const;
 	/** True when the segment from the camera to @p p_O enters one of the faces the camera is
