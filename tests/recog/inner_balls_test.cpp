@@ -102,3 +102,29 @@ TEST(InnerBalls, ThroughBallIsTheSegmentsDistanceToACentreWithinItsRadius)
 	EXPECT_GT(through, 50);
 	EXPECT_GT(missed, 50);
 }
+
+// A point's own ball (ownBall): inside every face by the margin, like the inner balls, and found
+// for most of a model's samples (the lab objects' samples, 8 per feature).
+TEST(InnerBalls, APointsOwnBallLiesInsideEveryFaceByTheMargin)
+{
+	const auto normals = sphereDirections(100);
+	for (const auto& wf : mrolr::sim::makeLabObjects())
+	{
+		const auto pts = pointsOf(wf);
+		const auto offsets = offsetsAbout(normals, pts);
+		const InnerBalls balls = innerBalls(normals, offsets, pts);
+		size_t with_ball = 0;
+		for (const auto& p : pts)
+		{
+			const OwnBall b = ownBall(normals, offsets, balls, p, 0.5);
+			if (b.r2 < 0) continue;
+			++with_ball;
+			const Eigen::Vector3d c(b.x, b.y, b.z);
+			const double r = std::sqrt(b.r2);
+			EXPECT_GE(r, 0.5) << wf.name;
+			for (size_t i = 0; i < normals.size(); ++i)
+				ASSERT_LE(normals[i].dot(c) + r, offsets[i] - 0.5 + 1e-9) << wf.name << " " << i;
+		}
+		EXPECT_GT(with_ball, pts.size() / 2) << wf.name;
+	}
+}

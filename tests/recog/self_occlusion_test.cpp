@@ -74,6 +74,38 @@ TEST(SelfOcclusion, ViewAndPointSightAnswerAsTheOneShotCalls)
 	}
 }
 
+// The samples' own balls (PointSight::own, tried before the clipping) change no answer of the
+// clipping alone (hidden(c, p) has no own ball), and prove most hidden samples: cameras 400 to
+// 900 mm away, every lab object's samples.
+TEST(SelfOcclusion, OwnBallsChangeNoAnswerAndProveMostHiddenSamples)
+{
+	std::mt19937 rng(5);
+	std::uniform_real_distribution<double> u(-1, 1);
+	int hidden = 0, proved = 0;
+	for (const auto& wf : makeLabObjects())
+	{
+		const auto fs = featuresOf(wf);
+		const SelfOcclusion occ(fs);
+		for (int k = 0; k < 12; ++k)
+		{
+			const Eigen::Vector3d c =
+			    (650 + 250 * u(rng)) * Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+			const SelfOcclusion::View v = occ.viewFrom(c);
+			for (const auto& f : fs)
+				for (const auto& p : samplesOf(f, 8))
+				{
+					const auto ps = occ.pointSight(p);
+					const bool h = occ.hidden(c, p);
+					ASSERT_EQ(occ.hidden(v, ps, p), h) << wf.name << " " << k;
+					hidden += h;
+					proved += h && ps.own.r2 > 0 && throughOwnBall(ps.own, c, p);
+				}
+		}
+	}
+	ASSERT_GT(hidden, 1000);
+	EXPECT_GT(proved, hidden / 2);
+}
+
 TEST(SelfOcclusion, ALimbIsHiddenExactlyByThePolytopeOfTheFeaturesOffTheBodies)
 {
 	// hiddenLimb clips against every face at once; the polytope of the cup's features off its

@@ -11,7 +11,9 @@ namespace
 {
 constexpr int kGrid = 9;             // candidate centres per axis of the points' box
 constexpr double kMinRadius_mm = 1;  // smaller balls catch next to nothing
-constexpr double kSpread = 0.7;      // a next centre lies beyond this fraction of a chosen radius
+constexpr double kMinOwnRadius_mm =
+    0.5;                         // a point's own ball (ownBall) is near it: smaller ones help
+constexpr double kSpread = 0.7;  // a next centre lies beyond this fraction of a chosen radius
 
 struct Ball
 {
@@ -65,6 +67,39 @@ InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
 		out.r2[out.n] = b.r * b.r;
 		++out.n;
 	}
+	return out;
+}
+
+OwnBall ownBall(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& offsets,
+                const InnerBalls& balls, const Eigen::Vector3d& p_O, double margin_mm)
+{
+	OwnBall out;
+	double widest = 0;  // radius over distance from p_O
+	const auto consider = [&](const Eigen::Vector3d& c)
+	{
+		const double q = (c - p_O).norm();
+		if (!(q > 0)) return;
+		// radiusAt's minimum, given up once below what would be kept
+		const double need = std::max(kMinOwnRadius_mm, widest * q) + margin_mm;
+		double r = std::numeric_limits<double>::infinity();
+		for (size_t i = 0; i < normals.size() && r >= need; ++i)
+			r = std::min(r, offsets[i] - normals[i].dot(c));
+		r -= margin_mm;
+		if (r < kMinOwnRadius_mm || r / q <= widest) return;
+		widest = r / q;
+		out = {c.x(), c.y(), c.z(), r * r};
+	};
+	if (balls.n > 0)
+	{
+		const Eigen::Vector3d g(balls.x[0], balls.y[0], balls.z[0]);
+		for (int k = 1; k <= 16; ++k) consider(p_O + (g - p_O) * (k / 16.0));
+	}
+	Eigen::Vector3d outward = Eigen::Vector3d::Zero();
+	for (size_t i = 0; i < normals.size(); ++i)
+		if (offsets[i] - normals[i].dot(p_O) < 1) outward += normals[i];
+	if (outward.norm() > 0)
+		for (double s_mm = 0.5; s_mm <= 128; s_mm *= M_SQRT2)
+			consider(p_O - outward.normalized() * s_mm);
 	return out;
 }
 

@@ -144,6 +144,7 @@ SelfOcclusion::PointSight SelfOcclusion::pointSight(const Eigen::Vector3d& p_O) 
 	if (!rest_offsets_.empty()) ps.outside_rest = outsideFaces(rest_offsets_, p_O);
 	for (size_t k = 0; k < bodies_.size(); ++k)
 		if (onSurface(bodies_[k], p_O, margin_mm_)) ps.on_bodies |= std::uint64_t{1} << k;
+	ps.own = ownBall(normals_, offsets_, balls_, p_O);
 	return ps;
 }
 
@@ -205,7 +206,8 @@ MROLR_SIMD_CLONES bool SelfOcclusion::enteredLate(const View::Faces& f, double t
 }
 
 bool SelfOcclusion::crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
-                                    const std::array<std::uint64_t, 2>& p_outside) const
+                                    const std::array<std::uint64_t, 2>& p_outside,
+                                    const OwnBall& own) const
 {
 	const View::Faces& f = v.all_;
 	const View::PerFace& nc = v.nc_;
@@ -216,7 +218,9 @@ bool SelfOcclusion::crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
 	// (t1, the least of their t) and crosses when it has entered all those only c is outside of
 	// by then.
 	if ((p_outside[0] & f.outside[0]) | (p_outside[1] & f.outside[1])) return false;
-	// a sight line through a ball inside the polytope crosses it: no clipping needed
+	// a sight line through a ball inside the polytope crosses it: no clipping needed. The point's
+	// own ball first: it proves most hidden points (OwnBall)
+	if (own.r2 > 0 && throughOwnBall(own, v.c_O_, p_O)) return true;
 	if (throughBall(v.balls_, p_O - v.c_O_)) return true;
 	const auto np = [&](int i) { return nx_[i] * p_O.x() + ny_[i] * p_O.y() + nz_[i] * p_O.z(); };
 	double t1 = 1;

@@ -85,6 +85,7 @@ class SelfOcclusion
 	{
 		std::array<std::uint64_t, 2> outside_all = {0, 0}, outside_rest = {0, 0};
 		std::uint64_t on_bodies = 0;  ///< bit k: on the surface of revolutionBodies()[k]
+		OwnBall own;                  ///< inside the whole polytope, near the point (ownBall)
 	};
 	/** The PointSight of @p p_O (model frame, mm): computed once per model sample. */
 	PointSight pointSight(const Eigen::Vector3d& p_O) const;
@@ -123,7 +124,8 @@ class SelfOcclusion
 	/** True when the segment from the camera of @p v to @p p_O (outside the faces @p p_outside)
 	 * crosses the shrunk polytope. */
 	bool crossesPolytope(const View& v, const Eigen::Vector3d& p_O,
-	                     const std::array<std::uint64_t, 2>& p_outside) const;
+	                     const std::array<std::uint64_t, 2>& p_outside,
+	                     const OwnBall& own = OwnBall()) const;
 
 	std::vector<Eigen::Vector3d> normals_;  ///< at most View::kMaxFaces
 	std::vector<double> nx_, ny_, nz_;      ///< the same, one array per coordinate
@@ -148,7 +150,7 @@ inline bool SelfOcclusion::hidden(const View& v, const PointSight& ps,
                                   const Eigen::Vector3d& p_O) const
 {
 	if (sharesOutsideFace(v, ps)) return false;
-	return crossesPolytope(v, p_O, ps.outside_all);
+	return crossesPolytope(v, p_O, ps.outside_all, ps.own);
 }
 
 inline bool SelfOcclusion::hiddenOnBodies(const View& v, const PointSight& ps,
