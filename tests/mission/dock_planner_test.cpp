@@ -62,11 +62,14 @@ TEST(DockPlanner, CandidatesFaceTheTableFromTheStandoffWithTheObjectAheadOfTheCo
 			EXPECT_NEAR(to_obj.x() * ahead.y() - to_obj.y() * ahead.x(), 0, 1e-6) << d.side;
 			EXPECT_GT(to_obj.dot(ahead), 0) << d.side;
 		}
-		EXPECT_GE(on_line, 3) << "a candidate on the object's line per side in front of it, yaw " << yaw;
+		EXPECT_GE(on_line, 3) << "a candidate on the object's line per side in front of it, yaw "
+		                      << yaw;
 		// by side, and on a side nearest the object's line first
 		for (size_t i = 1; i < c.size(); ++i)
 			if (c[i].side == c[i - 1].side)
+			{
 				EXPECT_LE(std::abs(c[i - 1].lateral_m), std::abs(c[i].lateral_m) + 1e-9);
+			}
 	}
 }
 

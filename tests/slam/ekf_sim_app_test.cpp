@@ -58,7 +58,10 @@ TEST(EkfSimApp, JsonOutputsAndRawlog)
 		EXPECT_LT((truth[k].xv_zxphi.head<2>() - run0[k].truth.head<2>()).norm(), 1e-9);
 		EXPECT_LT((estimate[k].xv_zxphi.head<2>() - run0[k].estimate.head<2>()).norm(), 1e-9);
 		EXPECT_EQ(truth[k].time_s, estimate[k].time_s);
-		if (k > 0) EXPECT_GT(truth[k].time_s, truth[k - 1].time_s);
+		if (k > 0)
+		{
+			EXPECT_GT(truth[k].time_s, truth[k - 1].time_s);
+		}
 	}
 	// The rawlog alternates odometry actions and sensory frames with bearing-range observations.
 	mrpt::obs::CRawlog rawlog;

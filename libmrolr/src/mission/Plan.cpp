@@ -76,7 +76,7 @@ PlanTable parseTable(const IniDocument& doc, const IniSection& s, const std::str
 	util::rejectUnknownKeys(doc, s, {"centre_m", "yaw_deg", "size_m"});
 	const auto c = util::requireNumbers(doc, s, "centre_m", 2);
 	const auto size = util::requireNumbers(doc, s, "size_m", 3);
-	PlanTable t{name, c[0], c[1], util::optionalNumbers(doc, s, "yaw_deg", {0})[0],
+	PlanTable t{name,    c[0],    c[1],   util::optionalNumbers(doc, s, "yaw_deg", {0})[0],
 	            size[0], size[1], size[2]};
 	if (t.length_m <= 0 || t.depth_m <= 0 || t.top_height_m <= 0)
 		doc.fail(s, util::require(doc, s, "size_m"), "sizes must be positive");
@@ -180,11 +180,11 @@ Plan Plan::load(const std::string& path, const std::vector<PlanOverride>& overri
 	return fromDocument(doc);
 }
 
-void Plan::save(const std::string& path) const
+void Plan::save(const std::string& file) const
 {
-	const fs::path dir = fs::path(path).parent_path();
-	std::ofstream out(path);
-	if (!out) throw std::runtime_error(path + ": cannot write the plan");
+	const fs::path dir = fs::path(file).parent_path();
+	std::ofstream out(file);
+	if (!out) throw std::runtime_error(file + ": cannot write the plan");
 	out << "# The robot's plan of this place (docs/mission.md \"Plan and map\"). W: x left, y up, "
 	       "z forward, metres.\n[plan]\nroute = "
 	    << names(route) << "\nstations = " << names(stations) << "\nhome = " << home.name
@@ -199,8 +199,8 @@ void Plan::save(const std::string& path) const
 		if (!cv::imwrite((dir / k.patch_file).string(), k.patch))
 			throw std::runtime_error((dir / k.patch_file).string() + ": cannot write the patch");
 		out << k.id << " = " << k.p_FinW.x() << " " << k.p_FinW.y() << " " << k.p_FinW.z() << " "
-		    << k.patch_file << " " << k.sigma_m.x() << " " << k.sigma_m.y() << " "
-		    << k.sigma_m.z() << "\n";
+		    << k.patch_file << " " << k.sigma_m.x() << " " << k.sigma_m.y() << " " << k.sigma_m.z()
+		    << "\n";
 	}
 	out << "\n# the head centre each patch was saved from, X Y Z (m)\n[known_feature_views]\n";
 	for (const auto& k : known_features)
@@ -209,12 +209,13 @@ void Plan::save(const std::string& path) const
 			    << k.p_viewinW->z() << "\n";
 	for (const auto& t : tables)
 		out << "\n[table." << t.name << "]\ncentre_m = " << t.x_m << " " << t.z_m
-		    << "\nyaw_deg = " << t.yaw_deg << "\nsize_m = " << t.length_m << " " << t.depth_m
-		    << " " << t.top_height_m << "\n";
+		    << "\nyaw_deg = " << t.yaw_deg << "\nsize_m = " << t.length_m << " " << t.depth_m << " "
+		    << t.top_height_m << "\n";
 	if (room)
-		out << "\n# the walls: the floor's corners, x z (m)\n[room]\nmin_m = " << room->min_x_m << " "
-		    << room->min_z_m << "\nmax_m = " << room->max_x_m << " " << room->max_z_m << "\n";
-	if (!out) throw std::runtime_error(path + ": cannot write the plan");
+		out << "\n# the walls: the floor's corners, x z (m)\n[room]\nmin_m = " << room->min_x_m
+		    << " " << room->min_z_m << "\nmax_m = " << room->max_x_m << " " << room->max_z_m
+		    << "\n";
+	if (!out) throw std::runtime_error(file + ": cannot write the plan");
 }
 
 }  // namespace mrolr::mission

@@ -103,9 +103,9 @@ struct Plan
 	 * util::IniError naming file, line, section and key of the first problem. */
 	static Plan load(const std::string& path, const std::vector<PlanOverride>& overrides = {});
 	static Plan fromDocument(const util::IniDocument& doc);
-	/** Writes the plan to @p path and each feature's patch PNG next to it (patch_file, relative
+	/** Writes the plan to @p file and each feature's patch PNG next to it (patch_file, relative
 	 * to the plan's folder). */
-	void save(const std::string& path) const;
+	void save(const std::string& file) const;
 };
 
 }  // namespace mrolr::mission
