@@ -2,6 +2,7 @@
 // every level exactly the matches it finds alone.
 #include <mrolr/recog/CliqueMatcher.h>
 #include <mrolr/recog/MemberCandidates.h>
+#include <mrolr/sim/SyntheticObjects.h>
 #include "noisy_table_scenes.h"
 
 #include <gtest/gtest.h>
@@ -22,18 +23,22 @@ bool sameMatches(const std::vector<CliqueMatch>& a, const std::vector<CliqueMatc
 }  // namespace
 
 // Noisy, fragmented table scenes of the lab objects, every clique of three models at every level:
-// the same matches with and without the shared candidates, and some matches at all.
+// the same matches with and without the shared candidates, and some matches at all. The levels
+// run tightest first, then loosest first, so that the remembered retests answer both ways.
 TEST(MemberCandidates, EveryLevelFindsTheMatchesItFindsAlone)
 {
 	const auto opts = RecognitionOptions::defaults();
+	std::vector<LevelParams> both_ways = opts.levels;
+	both_ways.insert(both_ways.end(), opts.levels.rbegin(), opts.levels.rend());
 	size_t matches = 0;
 	test::forNoisyTableScenes(
 	    {0, 1, 5}, 600,
 	    [&](const std::string& name, const ModelTable& table, const std::vector<Feature>& scene)
 	    {
-		    MemberCandidates members(table, scene, loosestTolerance(opts.levels));
-		    for (const auto& p : opts.levels)
+		    MemberCandidates members(table, scene, opts.levels);
+		    for (const auto& p : both_ways)
 		    {
+			    ASSERT_GE(members.rankOf(levelTolerance(p)), 0);  // the retests are remembered
 			    const OrientedScene os = orientScene(scene, p.length_threshold_mm);
 			    for (size_t c = 0; c < table.cliques().size(); ++c)
 			    {
@@ -61,4 +66,37 @@ TEST(MemberCandidates, LoosestToleranceCoversEveryLevel)
 	}
 	EXPECT_NEAR(t.beta_mm, 15, 1e-5);
 	EXPECT_NEAR(t.theta_rad, 10 * M_PI / 180, 1e-5);
+}
+
+// The retests are remembered only along a chain of tolerances: levels whose position error grows
+// while their rotation shrinks are not one, nor are two that differ by less than the 1e-6 that
+// keeps rounding out.
+TEST(MemberCandidates, RemembersRetestsOnlyAlongAChainOfTolerances)
+{
+	const auto opts = RecognitionOptions::defaults();
+	const ModelTable table(mrolr::sim::makeCup(), 3, 3);
+	const std::vector<Feature> scene = featuresOf(mrolr::sim::makeCup());
+	const auto levels = [&](std::vector<std::pair<double, double>> mm_deg)
+	{
+		std::vector<LevelParams> out;
+		for (const auto& [mm, deg] : mm_deg)
+		{
+			LevelParams p = opts.levels.front();
+			p.position_error_mm = mm, p.rotation_deg = deg;
+			out.push_back(p);
+		}
+		return out;
+	};
+	const auto ranks = [&](const std::vector<LevelParams>& ls)
+	{
+		const MemberCandidates m(table, scene, ls);
+		std::vector<int> r;
+		for (const auto& p : ls) r.push_back(m.rankOf(levelTolerance(p)));
+		return r;
+	};
+	EXPECT_EQ(ranks(levels({{3, 2}, {2, 1}, {3, 2}, {5, 2}})), (std::vector<int>{1, 0, 1, 2}));
+	EXPECT_EQ(ranks(levels({{2, 3}, {3, 2}})), (std::vector<int>{-1, -1}));
+	EXPECT_EQ(ranks(levels({{2, 1}, {2 + 1e-9, 1}})), (std::vector<int>{-1, -1}));
+	const MemberCandidates alone(table, scene, loosestTolerance(opts.levels));
+	EXPECT_EQ(alone.rankOf(levelTolerance(opts.levels.front())), -1);
 }

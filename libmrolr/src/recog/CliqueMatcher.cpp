@@ -10,11 +10,6 @@ namespace
 {
 constexpr size_t kAlternatives = 3;  // equally large consistent sets kept per focus match
 
-Tolerance toleranceOf(const LevelParams& p)
-{
-	return Tolerance(p.position_error_mm, p.rotation_deg * M_PI / 180.0);
-}
-
 /** Depth-first search for the largest pairwise-consistent choice of one candidate (or none) per
  * clique member, with a node budget. */
 class ConsistentSetSearch
@@ -185,25 +180,32 @@ void memberCandidates(const ModelTable& model, size_t j, const std::vector<size_
 }
 
 /** The same, seeking them among the scene features @p members lists for the focus match
- * (@p kept_index: each scene feature's index among the level's kept ones, -1 if not kept). */
+ * (@p kept_index: each scene feature's index among the level's kept ones, -1 if not kept; @p rank:
+ * the level's in @p members, for its remembered retests). */
 void memberCandidates(const ModelTable& model, size_t j, const FeatureMatch& focus,
                       const OrientedScene& scene, const LevelParams& p, const Tolerance& tol,
-                      MemberCandidates& members, const std::vector<int>& kept_index,
+                      MemberCandidates& members, int rank, const std::vector<int>& kept_index,
                       std::vector<FeatureMatch>& out)
 {
 	const auto& mf = model.features();
 	const auto& rel = model.relation(focus.model, j);
 	const CosineRange angle = cosineRange(rel, tol);
 	const size_t src = scene.source[focus.scene()];
-	for (const std::uint32_t code : members.of(focus.model, j, src, focus.oriented % 2 == 1))
+	MemberCandidates::List& list = members.of(focus.model, j, src, focus.oriented % 2 == 1);
+	for (size_t e = 0; e < list.codes.size(); ++e)
 	{
+		const std::uint32_t code = list.codes[e];
 		const int k = kept_index[code / 2];
 		if (k < 0) continue;
 		const size_t o = 2 * static_cast<size_t>(k) + code % 2;
-		if (o / 2 != focus.scene() && passesUnaryGate(mf[j], scene.oriented[o], p, false) &&
-		    consistent(rel, angle, mf[focus.model], mf[j], scene.oriented[focus.oriented],
-		               scene.oriented[o], tol))
-			out.push_back({j, o});
+		if (o / 2 == focus.scene() || !passesUnaryGate(mf[j], scene.oriented[o], p, false))
+			continue;
+		const auto test = [&]
+		{
+			return consistent(rel, angle, mf[focus.model], mf[j], scene.oriented[focus.oriented],
+			                  scene.oriented[o], tol);
+		};
+		if (members.retest(list, e, rank, test)) out.push_back({j, o});
 	}
 }
 
@@ -264,10 +266,11 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
                                      MemberCandidates* members)
 {
 	const auto& clique = model.cliques().at(clique_index);
-	const Tolerance tol = toleranceOf(p);
+	const Tolerance tol = levelTolerance(p);
 	const Feature& mfocus = model.features()[clique.focus];
 	std::vector<std::vector<size_t>> gated;
 	std::vector<int> kept_index;
+	const int rank = members ? members->rankOf(tol) : -1;  // the level's, for retest()
 	if (members)
 		kept_index = keptIndex(scene, members->sceneSize());
 	else
@@ -288,7 +291,7 @@ std::vector<CliqueMatch> matchClique(const ModelTable& model, size_t clique_inde
 		for (size_t k = 0; k < clique.members.size() && without <= spare; ++k)
 		{
 			if (members)
-				memberCandidates(model, clique.members[k], focus, scene, p, tol, *members,
+				memberCandidates(model, clique.members[k], focus, scene, p, tol, *members, rank,
 				                 kept_index, search.candidates());
 			else
 				memberCandidates(model, clique.members[k], gated[k], focus, scene, tol,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace mrolr::recog
 {
@@ -18,8 +19,46 @@ MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Fe
 	for (const auto& f : scene) oriented_.push_back(f), oriented_.push_back(f.flipped());
 }
 
-const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t member,
-                                                       size_t focus_scene, bool focus_flipped)
+namespace
+{
+/** @p levels' distinct tolerances, tightest first, or none when they are not a chain (each at
+ * least as loose as the one before in both terms, by 1e-6 where it differs). */
+std::vector<Tolerance> chainOf(const std::vector<LevelParams>& levels)
+{
+	std::vector<Tolerance> t;
+	for (const auto& p : levels) t.push_back(levelTolerance(p));
+	std::sort(t.begin(), t.end(),
+	          [](const Tolerance& a, const Tolerance& b)
+	          { return std::tie(a.beta_mm, a.theta_rad) < std::tie(b.beta_mm, b.theta_rad); });
+	const auto same = [](const Tolerance& a, const Tolerance& b)
+	{ return a.beta_mm == b.beta_mm && a.theta_rad == b.theta_rad; };
+	t.erase(std::unique(t.begin(), t.end(), same), t.end());
+	const auto apart = [](double a, double b) { return a == b || b >= a + 1e-6; };
+	for (size_t k = 1; k < t.size(); ++k)
+		if (!apart(t[k - 1].beta_mm, t[k].beta_mm) || !apart(t[k - 1].theta_rad, t[k].theta_rad))
+			return {};
+	if (t.size() > INT8_MAX) return {};
+	return t;
+}
+}  // namespace
+
+MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Feature>& scene,
+                                   const std::vector<LevelParams>& levels)
+    : MemberCandidates(model, scene, loosestTolerance(levels))
+{
+	chain_ = chainOf(levels);
+}
+
+int MemberCandidates::rankOf(const Tolerance& t) const
+{
+	for (size_t k = 0; k < chain_.size(); ++k)
+		if (chain_[k].beta_mm == t.beta_mm && chain_[k].theta_rad == t.theta_rad)
+			return static_cast<int>(k);
+	return -1;
+}
+
+MemberCandidates::List& MemberCandidates::of(size_t focus, size_t member, size_t focus_scene,
+                                             bool focus_flipped)
 {
 	const size_t n = model_.features().size();
 	const size_t o_focus = 2 * focus_scene + (focus_flipped ? 1 : 0);
@@ -46,7 +85,7 @@ const std::vector<std::uint32_t>& MemberCandidates::of(size_t focus, size_t memb
 		if (keep_[k] && consistent(rel, angle, mf[focus], mf[member], sa, oriented_[o], loosest_))
 			list.push_back(static_cast<std::uint32_t>(o));
 	}
-	return lists_.emplace_back(list);
+	return lists_.emplace_back(List{list, {}});
 }
 
 const MemberCandidates::Gated& MemberCandidates::gatedFor(size_t member)
@@ -61,6 +100,11 @@ const MemberCandidates::Gated& MemberCandidates::gatedFor(size_t member)
 	g.index = passingUnaryGate(model_.features()[member], oriented_, loosest, false);
 	for (const size_t o : g.index) g.packed.push_back(oriented_[o]);
 	return g;
+}
+
+Tolerance levelTolerance(const LevelParams& p)
+{
+	return Tolerance(p.position_error_mm, p.rotation_deg * M_PI / 180.0);
 }
 
 Tolerance loosestTolerance(const std::vector<LevelParams>& levels)

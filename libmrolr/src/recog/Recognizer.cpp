@@ -248,8 +248,7 @@ Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
 		// (bench_recog: one model 2.7 against 1.5-2.2 ms, the 10-model database 131-172 against
 		// 87-127 ms)
 		if (images && (!bounds.members || &bounds.members->table() != &table))
-			bounds.members =
-			    std::make_shared<MemberCandidates>(table, scene, loosestTolerance(opts_.levels));
+			bounds.members = std::make_shared<MemberCandidates>(table, scene, opts_.levels);
 		const auto hyps =
 		    hypothesesAt(table, os, opts_, p, focusFilter(scene, os, level, bounds, up_S, images),
 		                 images ? bounds.members.get() : nullptr);
