@@ -11,9 +11,9 @@ namespace
 {
 constexpr int kGrid = 9;             // candidate centres per axis of the points' box
 constexpr double kMinRadius_mm = 1;  // smaller balls catch next to nothing
-constexpr double kMinOwnRadius_mm =
-    0.5;                         // a point's own ball (ownBall) is near it: smaller ones help
-constexpr double kSpread = 0.7;  // a next centre lies beyond this fraction of a chosen radius
+constexpr double kSpread = 0.7;      // a next centre lies beyond this fraction of a chosen radius
+/** A point's own ball (ownBall) lies next to it, so that smaller ones still catch sight lines. */
+constexpr double kMinOwnRadius_mm = 0.5;
 
 struct Ball
 {

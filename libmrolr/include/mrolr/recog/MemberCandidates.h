@@ -80,9 +80,8 @@ class MemberCandidates
 	std::vector<std::int32_t> pair_slot_;             ///< per focus × member: into by_pair_, or -1
 	std::vector<std::vector<std::int32_t>> by_pair_;  ///< per oriented scene feature: into lists_
 	std::deque<List> lists_;                          ///< a deque: of()'s references stay valid
-	/** The levels' distinct tolerances, tightest first, when each is at least as loose as the one
-	 * before in both terms (by 1e-6 mm and rad where they differ: rounding kept out); else empty.
-	 */
+	/** The levels' distinct tolerances, tightest first, when they form a chain (chainOf); else
+	 * empty, and every retest is made. */
 	std::vector<Tolerance> chain_;
 	/** The oriented scene features passing a model feature's gate, also packed for
 	 * mayBeConsistent (PairPrefilter.h). */
