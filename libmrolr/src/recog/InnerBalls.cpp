@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
 
 namespace mrolr::recog
 {
@@ -22,17 +21,8 @@ struct Ball
 	double r;
 };
 
-/** The radius of the largest ball about @p c inside every face, less @p margin_mm. */
-double radiusAt(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& offsets,
-                const Eigen::Vector3d& c, double margin_mm)
-{
-	double r = std::numeric_limits<double>::infinity();
-	for (size_t i = 0; i < normals.size(); ++i) r = std::min(r, offsets[i] - normals[i].dot(c));
-	return r - margin_mm;
-}
-
 /** min over i of offsets[i] − n_i·c (n_i·c in Vector3d::dot's order), four faces at a time (GCC's
- * vector extension: AVX in the AVX2 clone): ownBall asks it of some thirty centres per sample. */
+ * vector extension: AVX in the AVX2 clone): the balls' searches ask it of hundreds of centres. */
 MROLR_SIMD_CLONES double leastSlack(const double* nx, const double* ny, const double* nz,
                                     const double* offsets, size_t n, double cx, double cy,
                                     double cz)
@@ -53,6 +43,29 @@ MROLR_SIMD_CLONES double leastSlack(const double* nx, const double* ny, const do
 	for (; i < n; ++i) r = std::min(r, offsets[i] - (nx[i] * cx + ny[i] * cy + nz[i] * cz));
 	return r;
 }
+
+/** The polytope's faces by coordinate, as leastSlack reads them. */
+class Faces
+{
+ public:
+	Faces(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& offsets)
+	    : offsets_(offsets)
+	{
+		for (const auto& n : normals)
+			nx_.push_back(n.x()), ny_.push_back(n.y()), nz_.push_back(n.z());
+	}
+	/** The radius of the largest ball about @p c inside every face, less @p margin_mm. */
+	double radiusAt(const Eigen::Vector3d& c, double margin_mm) const
+	{
+		return leastSlack(nx_.data(), ny_.data(), nz_.data(), offsets_.data(), nx_.size(), c.x(),
+		                  c.y(), c.z()) -
+		       margin_mm;
+	}
+
+ private:
+	std::vector<double> nx_, ny_, nz_;
+	const std::vector<double>& offsets_;
+};
 }  // namespace
 
 InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
@@ -64,6 +77,7 @@ InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
 	if (points.empty() || normals.empty()) return out;
 	Eigen::Vector3d lo = points.front(), hi = points.front();
 	for (const auto& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+	const Faces faces(normals, offsets);
 	std::vector<Ball> candidates;
 	for (int i = 0; i < kGrid; ++i)
 		for (int j = 0; j < kGrid; ++j)
@@ -71,7 +85,7 @@ InnerBalls innerBalls(const std::vector<Eigen::Vector3d>& normals,
 			{
 				const Eigen::Vector3d f = (Eigen::Vector3d(i, j, k).array() + 0.5) / kGrid;
 				const Eigen::Vector3d c = lo + (hi - lo).cwiseProduct(f);
-				const double r = radiusAt(normals, offsets, c, margin_mm);
+				const double r = faces.radiusAt(c, margin_mm);
 				if (r >= kMinRadius_mm) candidates.push_back({c, r});
 			}
 	std::stable_sort(candidates.begin(), candidates.end(),
@@ -98,16 +112,13 @@ OwnBall ownBall(const std::vector<Eigen::Vector3d>& normals, const std::vector<d
                 const InnerBalls& balls, const Eigen::Vector3d& p_O, double margin_mm)
 {
 	OwnBall out;
-	std::vector<double> nx, ny, nz;  // the normals by coordinate, for leastSlack
-	for (const auto& n : normals) nx.push_back(n.x()), ny.push_back(n.y()), nz.push_back(n.z());
+	const Faces faces(normals, offsets);
 	double widest = 0;  // radius over distance from p_O
 	const auto consider = [&](const Eigen::Vector3d& c)
 	{
 		const double q = (c - p_O).norm();
 		if (!(q > 0)) return;
-		const double r = leastSlack(nx.data(), ny.data(), nz.data(), offsets.data(), nx.size(),
-		                            c.x(), c.y(), c.z()) -
-		                 margin_mm;
+		const double r = faces.radiusAt(c, margin_mm);
 		if (r < kMinOwnRadius_mm || r / q <= widest) return;
 		widest = r / q;
 		out = {c.x(), c.y(), c.z(), r * r};
