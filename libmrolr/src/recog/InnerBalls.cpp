@@ -160,13 +160,8 @@ MROLR_SIMD_CLONES bool throughBall(const BallsSeen& seen, const Eigen::Vector3d&
 	long hit = 0;
 	for (size_t b = 0; b < InnerBalls::kMax; ++b)
 	{
-		// o the centre and d the point, both from the camera: the point inside the ball
-		// (|o − d|² <= r²), or the segment's point nearest the centre (0 < t < 1) inside it
 		const double od = seen.ox[b] * dx + seen.oy[b] * dy + seen.oz[b] * dz;
-		const double oo = seen.oo[b], r2 = seen.r2[b];
-		const bool end = oo - 2 * od + dd <= r2;
-		const bool between = (od > 0) & (od < dd) & (oo * dd - od * od <= r2 * dd);
-		hit += static_cast<long>(end | between);
+		hit += static_cast<long>(segmentMeetsBall(od, seen.oo[b], dd, seen.r2[b]));
 	}
 	return seen.camera_inside || hit != 0;
 }

@@ -43,6 +43,16 @@ BallsSeen ballsSeenFrom(const InnerBalls& balls, const Eigen::Vector3d& c_O);
  * through one of the balls. */
 bool throughBall(const BallsSeen& seen, const Eigen::Vector3d& d_O);
 
+/** The test of one ball, without a branch: with o its centre and d the point, both from the
+ * camera (od = o·d, oo = |o|², dd = |d|²), the point inside the ball (|o − d|² <= r²), or the
+ * segment's point nearest the centre (0 < t < 1) inside it. */
+inline bool segmentMeetsBall(double od, double oo, double dd, double r2)
+{
+	const bool end = oo - 2 * od + dd <= r2;
+	const bool between = (od > 0) & (od < dd) & (oo * dd - od * od <= r2 * dd);
+	return end | between;
+}
+
 /** A point's own ball inside the polytope (SelfOcclusion::PointSight): near the point, so that a
  * sight line that reaches the point through the object's inside, as it does to most hidden points,
  * passes through it, where it misses the inner balls about the middle (on the bench sweep it proved
@@ -61,17 +71,14 @@ struct OwnBall
 OwnBall ownBall(const std::vector<Eigen::Vector3d>& normals, const std::vector<double>& offsets,
                 const InnerBalls& balls, const Eigen::Vector3d& p_O, double margin_mm = 0.01);
 
-/** True when the segment from the camera at @p c_O to @p p_O passes through @p b (throughBall's
- * test for one ball). */
+/** True when the segment from the camera at @p c_O to @p p_O passes through @p b
+ * (segmentMeetsBall). */
 inline bool throughOwnBall(const OwnBall& b, const Eigen::Vector3d& c_O, const Eigen::Vector3d& p_O)
 {
 	const double dx = p_O.x() - c_O.x(), dy = p_O.y() - c_O.y(), dz = p_O.z() - c_O.z();
 	const double ox = b.x - c_O.x(), oy = b.y - c_O.y(), oz = b.z - c_O.z();
 	const double dd = dx * dx + dy * dy + dz * dz, od = ox * dx + oy * dy + oz * dz;
-	const double oo = ox * ox + oy * oy + oz * oz;
-	const bool end = oo - 2 * od + dd <= b.r2;
-	const bool between = (od > 0) & (od < dd) & (oo * dd - od * od <= b.r2 * dd);
-	return end | between;
+	return segmentMeetsBall(od, ox * ox + oy * oy + oz * oz, dd, b.r2);
 }
 
 }  // namespace mrolr::recog
