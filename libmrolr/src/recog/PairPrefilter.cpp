@@ -75,17 +75,14 @@ void mayBeConsistent(const PairRelation& m, const Feature& ma, const Feature& mb
 	q.cos_lo = angle.lo - kCosSlack, q.cos_hi = angle.hi + kCosSlack;
 	q.skew = ma.isLine() && mb.isLine() && !m.parallel;
 	// consistentLineLine's bounds for two skew lines: on h, then on the intervals
-	const double tanT = tol.tan_theta, b2 = 2 * tol.beta_mm;
+	const SkewIntervalTolerances t = skewIntervalTolerances(m, tol);
 	q.h = m.h;
-	q.h_tol = b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT + kHSlack_mm;
-	const double sinA = std::max(m.sin_alpha, 1e-3);
-	const double tol1 = b2 + std::abs(m.q2) * tanT / sinA;
-	const double tol2 = b2 + std::abs(m.q1) * tanT / sinA;
+	q.h_tol = skewHTolerance_mm(m, tol) + kHSlack_mm;
 	// −len/2 − q >= lo − tol and len/2 − q <= hi + tol, for the scene's first and second segment
-	q.q1_min = 0.5 * a.len_mm - (m.hi1 + tol1) - kHSlack_mm;
-	q.q1_max = -0.5 * a.len_mm - (m.lo1 - tol1) + kHSlack_mm;
-	q.q2_min = -(m.hi2 + tol2) - kHSlack_mm;
-	q.q2_max = -(m.lo2 - tol2) + kHSlack_mm;
+	q.q1_min = 0.5 * a.len_mm - (m.hi1 + t.first_mm) - kHSlack_mm;
+	q.q1_max = -0.5 * a.len_mm - (m.lo1 - t.first_mm) + kHSlack_mm;
+	q.q2_min = -(m.hi2 + t.second_mm) - kHSlack_mm;
+	q.q2_max = -(m.lo2 - t.second_mm) + kHSlack_mm;
 	keep.resize(packed.size());
 	quickTest(q, packed.arrays(), packed.size(), keep.data());
 }

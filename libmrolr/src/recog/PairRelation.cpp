@@ -82,13 +82,11 @@ bool inside(double slo, double shi, double mlo, double mhi, double tol)
 
 bool consistentLineLine(const PairRelation& m, const PairRelation& s, const Tolerance& t)
 {
-	const double tanT = t.tan_theta, b2 = 2 * t.beta_mm;
-	if (m.parallel) return within(s.h, m.h, b2 + std::abs(m.q1) * tanT);
-	if (!within(s.h, m.h, b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT)) return false;
-	const double sinA = std::max(m.sin_alpha, 1e-3);
-	const double tol1 = b2 + std::abs(m.q2) * tanT / sinA;
-	const double tol2 = b2 + std::abs(m.q1) * tanT / sinA;
-	return inside(s.lo1, s.hi1, m.lo1, m.hi1, tol1) && inside(s.lo2, s.hi2, m.lo2, m.hi2, tol2);
+	if (m.parallel) return within(s.h, m.h, 2 * t.beta_mm + std::abs(m.q1) * t.tan_theta);
+	if (!within(s.h, m.h, skewHTolerance_mm(m, t))) return false;
+	const SkewIntervalTolerances tol = skewIntervalTolerances(m, t);
+	return inside(s.lo1, s.hi1, m.lo1, m.hi1, tol.first_mm) &&
+	       inside(s.lo2, s.hi2, m.lo2, m.hi2, tol.second_mm);
 }
 
 bool consistentLineConic(const PairRelation& m, const PairRelation& s, const Tolerance& t)
@@ -137,13 +135,11 @@ namespace
 {
 /** consistentLineLine for two skew lines, computing the scene pair's h first and the rest only
  * when h agrees (the same values as relateGeometry: most pairs fail on h). */
-bool consistentSkew(const PairRelation& m, const Feature& sa, const Feature& sb,
-                    const Tolerance& t)
+bool consistentSkew(const PairRelation& m, const Feature& sa, const Feature& sb, const Tolerance& t)
 {
-	const double tanT = t.tan_theta, b2 = 2 * t.beta_mm;
 	PairRelation s;
 	s.h = (sb.m - sa.m).dot(sa.u.cross(sb.u).normalized());
-	if (!within(s.h, m.h, b2 + (std::abs(m.q1) + std::abs(m.q2)) * tanT)) return false;
+	if (!within(s.h, m.h, skewHTolerance_mm(m, t))) return false;
 	lineLineSkew(sa, sb, s);
 	return consistentLineLine(m, s, t);
 }

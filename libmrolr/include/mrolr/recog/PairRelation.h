@@ -9,6 +9,7 @@
 
 #include <mrolr/recog/Feature.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mrolr::recog
@@ -66,6 +67,26 @@ struct CosineRange
 	bool contains(double cos_s) const { return cos_s >= lo - 1e-12 && cos_s <= hi + 1e-12; }
 };
 CosineRange cosineRange(const PairRelation& m, const Tolerance& t);
+
+/** consistent()'s tolerance for two skew model lines @p m (paper 3.2) on the common
+ * perpendicular's length h, at tolerance @p t (mm). */
+inline double skewHTolerance_mm(const PairRelation& m, const Tolerance& t)
+{
+	return 2 * t.beta_mm + (std::abs(m.q1) + std::abs(m.q2)) * t.tan_theta;
+}
+/** consistent()'s tolerances for two skew model lines on the intervals of the first and second
+ * segment from the common perpendicular's feet. */
+struct SkewIntervalTolerances
+{
+	double first_mm, second_mm;
+};
+/** The SkewIntervalTolerances of the skew model pair @p m at tolerance @p t. */
+inline SkewIntervalTolerances skewIntervalTolerances(const PairRelation& m, const Tolerance& t)
+{
+	const double tanT = t.tan_theta, b2 = 2 * t.beta_mm;
+	const double sinA = std::max(m.sin_alpha, 1e-3);
+	return {b2 + std::abs(m.q2) * tanT / sinA, b2 + std::abs(m.q1) * tanT / sinA};
+}
 
 /** True when the scene pair (sa, sb) — oriented as hypothesised — lies within the error intervals
  * of the model relation @p m of the pair (ma, mb): orientation within 2·theta, distances within the
