@@ -117,9 +117,12 @@ const char* originName(Origin origin)
 {
 	switch (origin)
 	{
-		case Origin::Clique: return "clique";
-		case Origin::SupportPlane: return "support_plane";
-		case Origin::None: break;
+		case Origin::Clique:
+			return "clique";
+		case Origin::SupportPlane:
+			return "support_plane";
+		case Origin::None:
+			break;
 	}
 	return "none";
 }
@@ -280,12 +283,14 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	size_t last = opts_.levels.size();
 	int skipped = 0;
 	RecognitionTimes times;
-	FocusBounds bounds;   // shared by the levels: computed for the coarsest tolerances
-	Refinements refined;  // shared by the levels and the plane hypotheses
-	const double bound_mm = opts_.skip_hopeless_levels ? supportBound_mm(scene) : 1e300;
+	FocusBounds bounds;              // shared by the levels: computed for the coarsest tolerances
+	Refinements refined;             // shared by the levels and the plane hypotheses
+	std::optional<double> bound_mm;  // computed when a level needs some support
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
-		if (bound_mm < minScore(l, up_S, images) * visibleShare(up_S) * modelLength_mm(l))
+		const double need_mm = supportNeeded_mm(l, up_S, images);
+		if (opts_.skip_hopeless_levels && need_mm > 0 &&
+		    *(bound_mm ? bound_mm : (bound_mm = supportBound_mm(scene))) < need_mm)
 		{
 			++skipped;
 			continue;
@@ -330,7 +335,8 @@ FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const Ori
                                     size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
                                     const ImageVerifier* images) const
 {
-	if (!opts_.skip_hopeless_levels) return {};
+	const double need_mm = supportNeeded_mm(level, up_S, images);
+	if (!opts_.skip_hopeless_levels || need_mm <= 0) return {};
 	if (!bounds.bound)
 	{
 		double beta = 0, theta = 0;
@@ -340,8 +346,6 @@ FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const Ori
 			bounds.match_beta_mm = std::max(bounds.match_beta_mm, p.position_error_mm);
 		bounds.bound = std::make_shared<SupportBound>(table_, beta, theta);
 	}
-	const double need_mm =
-	    minScore(level, up_S, images) * visibleShare(up_S) * modelLength_mm(level);
 	return [&bounds, &scene, &os, need_mm](size_t f, size_t s)
 	{
 		const size_t src = os.source[s];
@@ -351,6 +355,12 @@ FocusFilter Recognizer::focusFilter(const std::vector<Feature>& scene, const Ori
 			    bounds.bound->focusSupportBound_mm(scene, f, scene[src], bounds.match_beta_mm);
 		return it->second >= need_mm;
 	};
+}
+
+double Recognizer::supportNeeded_mm(size_t level, const Eigen::Vector3d* up_S,
+                                    const ImageVerifier* images) const
+{
+	return minScore(level, up_S, images) * visibleShare(up_S) * modelLength_mm(level);
 }
 
 double Recognizer::modelLength_mm(size_t level) const

@@ -196,6 +196,11 @@ class Recognizer
 	double supportBound_mm(const std::vector<Feature>& scene) const;
 	/** Model length counted by verification at @p level (features >= its length threshold). */
 	double modelLength_mm(size_t level) const;
+	/** The supported model length a pose needs at @p level to pass verification (mm): its minimum
+	 * score (minScore) times the expected-visible share times modelLength_mm. With images and
+	 * their default pre-filter score (0) it is 0: no support bound can rule anything out then. */
+	double supportNeeded_mm(size_t level, const Eigen::Vector3d* up_S,
+	                        const ImageVerifier* images) const;
 
 	const ModelTable& table() const { return table_; }
 	/** The table whose cliques generate hypotheses with (@p images true) or without images. */
@@ -272,7 +277,8 @@ class Recognizer
 	                       Refinements& refined) const;
 
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
-	 * verify_min_score (empty unless skip_hopeless_levels). */
+	 * verify_min_score (empty unless skip_hopeless_levels, and when nothing is needed: a bound is
+	 * a length, never below 0). */
 	FocusFilter focusFilter(const std::vector<Feature>& scene, const OrientedScene& os,
 	                        size_t level, FocusBounds& bounds, const Eigen::Vector3d* up_S,
 	                        const ImageVerifier* images) const;
