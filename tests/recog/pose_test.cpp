@@ -1,9 +1,9 @@
 #include "recog_test_util.h"
 
 #include <mrolr/recog/PoseEstimation.h>
+#include <mrolr/recog/TransformCluster.h>
 #include <mrolr/sim/SyntheticObjects.h>
 #include <mrolr/sim/SyntheticScene.h>
-#include <mrolr/recog/TransformCluster.h>
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -164,4 +164,39 @@ TEST(cluster, SeparatesGroupsAndReportsSpread)
 	EXPECT_LT((cl[1].mean.translation() - B.translation()).norm(), 1e-9);
 	EXPECT_NEAR(cl[1].spread_trans_mm, 2.0, 1e-9);
 	EXPECT_EQ(clusterTransforms(hyps, c, 0.5, 6).size(), 3u);  // tighter: A's pair splits
+}
+
+// Only the heaviest clusters wanted: they are the full clustering's first ones, the same members,
+// weights, means and spreads, to the bit. Light hypotheses come first in the input and the
+// heaviest cluster is made of many light ones, so clusters cut before their order is known fail.
+TEST(cluster, TheHeaviestClustersAloneAreTheFullClusteringsFirst)
+{
+	std::mt19937 rng(5);
+	std::uniform_real_distribution<double> jitter(-0.5, 0.5);
+	const Eigen::Vector3d c(0, 0, 50);
+	std::vector<PoseHypothesis> hyps;
+	for (int g = 0; g < 12; ++g)  // group g: g + 1 hypotheses of weight 12 - g, about pose g
+		for (int i = 0; i <= g; ++i)
+		{
+			Eigen::Isometry3d T = poseFor(g);
+			T.pretranslate(Eigen::Vector3d(100.0 * g + jitter(rng), jitter(rng), jitter(rng)));
+			T.rotate(Eigen::AngleAxisd(jitter(rng) * M_PI / 180, Eigen::Vector3d::UnitX()));
+			hyps.push_back({T, 12.0 - g});
+		}
+	const auto all = clusterTransforms(hyps, c, 3, 6);
+	ASSERT_EQ(all.size(), 12u);
+	EXPECT_GE(all.front().members.size(), 6u);  // the heaviest: many light hypotheses
+	for (const size_t n : {size_t{0}, size_t{1}, size_t{5}, size_t{12}, size_t{20}})
+	{
+		const auto first = clusterTransforms(hyps, c, 3, 6, n);
+		ASSERT_EQ(first.size(), std::min(n, all.size()));
+		for (size_t k = 0; k < first.size(); ++k)
+		{
+			EXPECT_EQ(first[k].members, all[k].members) << n << " " << k;
+			EXPECT_EQ(first[k].weight, all[k].weight);
+			EXPECT_TRUE(first[k].mean.matrix() == all[k].mean.matrix());
+			EXPECT_EQ(first[k].spread_rot_deg, all[k].spread_rot_deg);
+			EXPECT_EQ(first[k].spread_trans_mm, all[k].spread_trans_mm);
+		}
+	}
 }

@@ -255,8 +255,10 @@ Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
 		const auto hyps =
 		    hypothesesAt(table, os, opts_, p, focusFilter(scene, os, level, bounds, up_S, images),
 		                 images ? bounds.members.get() : nullptr);
+		// only the heaviest verify_clusters are verified: the others' means are not wanted
 		out.clusters =
-		    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm);
+		    clusterTransforms(hyps, centroid_O_, p.max_rotation_deg, p.max_translation_mm,
+		                      static_cast<size_t>(std::max(0, opts_.verify_clusters)));
 	}
 	const StageTimer timer(times.verify_3d_ms);
 	const auto& clusters = out.clusters;

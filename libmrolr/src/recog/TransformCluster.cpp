@@ -68,7 +68,8 @@ Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts,
 
 std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hyps,
                                            const Eigen::Vector3d& centroid_O,
-                                           double max_rotation_deg, double max_translation_mm)
+                                           double max_rotation_deg, double max_translation_mm,
+                                           size_t max_clusters)
 {
 	std::vector<size_t> order(hyps.size());
 	std::iota(order.begin(), order.end(), 0);
@@ -94,9 +95,11 @@ std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hy
 		it->members.push_back(i);
 		it->weight += hyps[i].weight;
 	}
-	for (auto& c : clusters) finishCluster(c, hyps, centroid_O);
+	// the order is the weights' alone, so the heaviest are known before any mean is
 	std::stable_sort(clusters.begin(), clusters.end(),
 	                 [](const auto& a, const auto& b) { return a.weight > b.weight; });
+	if (clusters.size() > max_clusters) clusters.resize(max_clusters);
+	for (auto& c : clusters) finishCluster(c, hyps, centroid_O);
 	return clusters;
 }
 

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdint>
 #include <vector>
 
 namespace mrolr::recog
@@ -36,9 +37,11 @@ Eigen::Isometry3d meanTransform(const std::vector<Eigen::Isometry3d>& Ts,
 
 /** Greedy clustering, heaviest hypothesis first: a hypothesis joins the first cluster whose seed
  * is within @p max_rotation_deg and moves @p centroid_O (model frame, mm) to within
- * @p max_translation_mm of where the seed moves it. Clusters are returned heaviest first. */
+ * @p max_translation_mm of where the seed moves it. Clusters are returned heaviest first, at most
+ * @p max_clusters of them: the mean and spread of the lighter ones are not worked out. */
 std::vector<PoseCluster> clusterTransforms(const std::vector<PoseHypothesis>& hyps,
                                            const Eigen::Vector3d& centroid_O,
-                                           double max_rotation_deg, double max_translation_mm);
+                                           double max_rotation_deg, double max_translation_mm,
+                                           size_t max_clusters = SIZE_MAX);
 
 }  // namespace mrolr::recog
