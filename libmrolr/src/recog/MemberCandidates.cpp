@@ -47,6 +47,11 @@ MemberCandidates::MemberCandidates(const ModelTable& model, const std::vector<Fe
     : MemberCandidates(model, scene, loosestTolerance(levels))
 {
 	chain_ = chainOf(levels);
+	if (chain_.empty()) return;
+	// its last is at least as loose as every level in both terms (chainOf), as loosest_ is:
+	// consistency being monotone in the tolerance, no level's pair is left out under it
+	loosest_ = chain_.back();
+	own_rank_ = static_cast<int>(chain_.size()) - 1;
 }
 
 int MemberCandidates::rankOf(const Tolerance& t) const

@@ -25,7 +25,9 @@ class MemberCandidates
 	MemberCandidates(const ModelTable& model, const std::vector<Feature>& scene,
 	                 const Tolerance& loosest);
 	/** The same for the loosest tolerance of @p levels (loosestTolerance), remembering the levels'
-	 * retests (retest()) when their tolerances form a chain. */
+	 * retests (retest()) when their tolerances form a chain. The loosest of a chain is the
+	 * loosest in both terms: then the lists are found under it exactly, and its levels take them
+	 * without a retest. */
 	MemberCandidates(const ModelTable& model, const std::vector<Feature>& scene,
 	                 const std::vector<LevelParams>& levels);
 
@@ -55,11 +57,13 @@ class MemberCandidates
 	/** A level's consistent() of the focus match with code @p k of @p list (the level of rank
 	 * @p rank): @p test() unless a tighter level found the pair consistent or a looser one found it
 	 * not. Consistency is monotone in the tolerance (the premise of these lists), so the answer is
-	 * the test's. rank -1: always @p test(). Each answer is remembered. */
+	 * the test's. rank -1: always @p test(). Each answer is remembered. The rank of the lists'
+	 * own tolerance: true, untested. */
 	template <class Test>
 	bool retest(List& list, size_t k, int rank, Test test)
 	{
 		if (rank < 0) return test();
+		if (rank == own_rank_) return true;
 		if (list.known.empty()) list.known.resize(list.codes.size());
 		List::Known& known = list.known[k];
 		if (rank >= known.ok_from) return true;
@@ -83,6 +87,7 @@ class MemberCandidates
 	/** The levels' distinct tolerances, tightest first, when they form a chain (chainOf); else
 	 * empty, and every retest is made. */
 	std::vector<Tolerance> chain_;
+	int own_rank_ = -1;  ///< the rank in chain_ of the lists' tolerance, or -1
 	/** The oriented scene features passing a model feature's gate, also packed for
 	 * mayBeConsistent (PairPrefilter.h). */
 	struct Gated
