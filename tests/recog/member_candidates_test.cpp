@@ -100,3 +100,38 @@ TEST(MemberCandidates, RemembersRetestsOnlyAlongAChainOfTolerances)
 	const MemberCandidates alone(table, scene, loosestTolerance(opts.levels));
 	EXPECT_EQ(alone.rankOf(levelTolerance(opts.levels.front())), -1);
 }
+
+// Along a chain the lists are found under its loosest tolerance itself: each of their pairs is
+// consistent under it, so its level takes them without a test, while a tighter level tests them.
+// A cup seen as its model (every pair of its features), the default levels.
+TEST(MemberCandidates, TheLoosestLevelOfAChainTakesItsListsUntested)
+{
+	const auto levels = RecognitionOptions::defaults().levels;
+	const ModelTable table(mrolr::sim::makeCup(), 3, 3);
+	const std::vector<Feature> scene = featuresOf(mrolr::sim::makeCup());
+	MemberCandidates m(table, scene, levels);
+	const Tolerance top = loosestTolerance(levels);  // the chain's last, widened by 1e-6
+	const Tolerance own(top.beta_mm - 1e-6, top.theta_rad - 1e-6);
+	const int top_rank = m.rankOf(own), tighter = m.rankOf(levelTolerance(levels.front()));
+	ASSERT_GT(top_rank, 0);
+	ASSERT_EQ(tighter, 0);
+	const auto& mf = table.features();
+	size_t pairs = 0, tested = 0;
+	for (size_t f = 0; f < mf.size(); ++f)
+		for (size_t j = 0; j < mf.size(); ++j)
+		{
+			if (j == f) continue;
+			auto& list = m.of(f, j, f, false);
+			for (size_t e = 0; e < list.codes.size(); ++e, ++pairs)
+			{
+				const Feature& sb = list.codes[e] % 2 ? scene[list.codes[e] / 2].flipped()
+				                                      : scene[list.codes[e] / 2];
+				EXPECT_TRUE(consistent(table.relation(f, j), mf[f], mf[j], scene[f], sb, own))
+				    << f << " " << j;
+				EXPECT_TRUE(m.retest(list, e, top_rank, [&] { return ++tested, false; }));
+				m.retest(list, e, tighter, [&] { return ++tested, true; });
+			}
+		}
+	EXPECT_GT(pairs, 20u);
+	EXPECT_EQ(tested, pairs);  // the tighter level's tests alone
+}
