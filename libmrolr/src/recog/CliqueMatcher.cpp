@@ -240,17 +240,6 @@ OrientedScene orientScene(const std::vector<Feature>& scene, double min_len_mm)
 	return s;
 }
 
-bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus)
-{
-	if (m.kind != s.kind) return false;
-	const double b2 = 2 * p.position_error_mm;
-	if (s.len_mm > m.len_mm + b2 + (m.isLine() ? 0.0 : 0.05 * m.len_mm)) return false;
-	if (focus && s.len_mm < p.length_ratio * m.len_mm) return false;
-	if (m.isLine()) return true;
-	const double rtol = b2 + 0.05 * m.a_mm;
-	return std::abs(s.a_mm - m.a_mm) <= rtol && std::abs(s.b_mm - m.b_mm) <= rtol;
-}
-
 std::vector<size_t> passingUnaryGate(const Feature& m, const std::vector<Feature>& oriented,
                                      const LevelParams& p, bool focus)
 {

@@ -30,6 +30,7 @@ std::vector<Correspondence> correspondencesOf(const ModelTable& model, const Ori
                                               const CliqueMatch& cm)
 {
 	std::vector<Correspondence> cs;
+	cs.reserve(cm.matches.size());
 	for (const auto& m : cm.matches)
 		cs.push_back({model.features()[m.model], scene.oriented[m.oriented]});
 	return cs;

@@ -8,6 +8,7 @@
 #include <mrolr/recog/ModelTable.h>
 #include <mrolr/recog/RecognitionOptions.h>
 
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -47,8 +48,18 @@ struct CliqueMatch
 };
 
 /** Unary gate: same kind; a scene line no longer than the model line plus 2 beta and, for a focus,
- * at least length_ratio times it; conic radii within 2 beta + 5 %. */
-bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus);
+ * at least length_ratio times it; conic radii within 2 beta + 5 %. Inline: every level asks it of
+ * each member candidate. */
+inline bool passesUnaryGate(const Feature& m, const Feature& s, const LevelParams& p, bool focus)
+{
+	if (m.kind != s.kind) return false;
+	const double b2 = 2 * p.position_error_mm;
+	if (s.len_mm > m.len_mm + b2 + (m.isLine() ? 0.0 : 0.05 * m.len_mm)) return false;
+	if (focus && s.len_mm < p.length_ratio * m.len_mm) return false;
+	if (m.isLine()) return true;
+	const double rtol = b2 + 0.05 * m.a_mm;
+	return std::abs(s.a_mm - m.a_mm) <= rtol && std::abs(s.b_mm - m.b_mm) <= rtol;
+}
 
 /** The indices of the features of @p oriented that pass model feature @p m's unary gate at @p p
  * (passesUnaryGate), increasing. */
