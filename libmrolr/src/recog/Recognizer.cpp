@@ -269,7 +269,7 @@ Recognizer::LevelHypotheses Recognizer::computeLevelHypotheses(
 		auto [T, v] =
 		    verifyAndRefine(table_, os.features, clusters[k].mean, p, opts_, occlusionFor(up_S));
 		if (!upright(T, up_S) || (images && v.score < minScore(level, up_S, images))) continue;
-		out.verified.push_back({T, std::move(v), std::nullopt, k});
+		out.verified.push_back({T, std::move(v), std::nullopt, k, {}});
 	}
 	return out;
 }

@@ -234,7 +234,8 @@ class Recognizer
 		Eigen::Isometry3d T;
 		VerificationResult v;
 		std::optional<double> image;
-		size_t hypothesis = 0;  ///< the clique cluster or plane hypothesis it came from
+		size_t hypothesis = 0;    ///< the clique cluster or plane hypothesis it came from
+		ImageScore image_counts;  ///< the counts and cost behind image: a refinement's start
 	};
 	/** The refinements in the images made in one search (recognize(): its levels and its plane
 	 * hypotheses share them): where each started and where it ended. */
@@ -268,12 +269,12 @@ class Recognizer
 	                   const std::vector<Feature>& scene, const LevelParams& p,
 	                   const Eigen::Vector3d* up_S, Refinements& refined,
 	                   RecognitionTimes& times) const;
-	/** ImageVerifier::refine of @p start_T (a pose in S, scored with its cost only then), or the
-	 * result of an entry of @p refined that started or ended within kSameStart of it; a new
-	 * refinement is added to @p refined. */
+	/** ImageVerifier::refine of @p start (a pose in S and its score), or the result of an entry
+	 * of @p refined that started or ended within kSameStart of it; a new refinement is added to
+	 * @p refined. */
 	ScoredPose refinedOnce(const ImageVerifier& images, const SightedSamples& samples,
-	                       const Eigen::Isometry3d& start_T,
-	                       const std::vector<Eigen::Vector3d>& axes_O, Refinements& refined) const;
+	                       const ScoredPose& start, const std::vector<Eigen::Vector3d>& axes_O,
+	                       Refinements& refined) const;
 
 	/** Skips focus matches whose SupportBound::focusSupportBound_mm cannot reach the level's
 	 * verify_min_score (empty unless skip_hopeless_levels, and when nothing is needed: a bound is

@@ -25,19 +25,18 @@ bool sameStart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Eig
 }  // namespace
 
 ScoredPose Recognizer::refinedOnce(const ImageVerifier& images, const SightedSamples& samples,
-                                   const Eigen::Isometry3d& start_T,
+                                   const ScoredPose& start,
                                    const std::vector<Eigen::Vector3d>& axes_O,
                                    Refinements& refined) const
 {
 	for (const auto& m : refined.made)
-		if (sameStart(m.start, start_T, centroid_O_) || sameStart(m.result.T, start_T, centroid_O_))
+		if (sameStart(m.start, start.T, centroid_O_) || sameStart(m.result.T, start.T, centroid_O_))
 		{
 			++refined.reused;
 			return m.result;
 		}
-	const ScoredPose start{start_T, images.score(samples, start_T)};  // with its cost
 	const ScoredPose r = images.refine(samples, start, axes_O, &refined.memo);
-	refined.made.push_back({start_T, r});
+	refined.made.push_back({start.T, r});
 	return r;
 }
 
@@ -50,9 +49,8 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	const SightedSamples& samples = sightedSamples(o.sample_spacing_mm);
 	{
 		const detail::StageTimer timer(times.image_score_ms);
-		// the score alone (count() then reads no distance): only a refinement's start needs the
-		// cost, and refinedOnce scores it with it
-		for (auto& h : poses) h.image = images.score(samples, h.T, false).score;
+		for (auto& h : poses)
+			h.image_counts = images.score(samples, h.T), h.image = h.image_counts.score;
 	}
 	std::sort(poses.begin(), poses.end(),
 	          [](const VerifiedPose& a, const VerifiedPose& b) { return a.image > b.image; });
@@ -63,9 +61,9 @@ void Recognizer::judgeInImages(std::vector<VerifiedPose>& poses, const ImageVeri
 	{
 		auto& h = poses[k];
 		if (*h.image < 0.5 * o.min_score) break;
-		const ScoredPose r = refinedOnce(images, samples, h.T, axes_O, refined);
+		const ScoredPose r = refinedOnce(images, samples, {h.T, h.image_counts}, axes_O, refined);
 		if (!upright(r.T, up_S)) continue;
-		h.T = r.T, h.image = r.s.score;
+		h.T = r.T, h.image_counts = r.s, h.image = r.s.score;
 		h.v =
 		    verifyPose(table_, scene, r.T, beta, theta, p.length_threshold_mm, occlusionFor(up_S));
 	}

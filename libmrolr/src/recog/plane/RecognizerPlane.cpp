@@ -80,7 +80,9 @@ RecognitionResult Recognizer::onPlane(const std::vector<Feature>& scene, const S
 			poses.push_back({T,
 			                 verifyPose(table_, os.features, T, beta, theta, p.length_threshold_mm,
 			                            occlusionFor(up_S)),
-			                 std::nullopt, k});
+			                 std::nullopt,
+			                 k,
+			                 {}});
 		}
 	}
 	judgeInImages(poses, images, os.features, p, up_S, refined, best.times);
