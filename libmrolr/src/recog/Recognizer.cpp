@@ -118,12 +118,9 @@ const char* originName(Origin origin)
 {
 	switch (origin)
 	{
-		case Origin::Clique:
-			return "clique";
-		case Origin::SupportPlane:
-			return "support_plane";
-		case Origin::None:
-			break;
+		case Origin::Clique: return "clique";
+		case Origin::SupportPlane: return "support_plane";
+		case Origin::None: break;
 	}
 	return "none";
 }
@@ -292,11 +289,14 @@ RecognitionResult Recognizer::recognize(const std::vector<Feature>& scene,
 	for (size_t l = 0; l < opts_.levels.size() && l < last; ++l)
 	{
 		const double need_mm = supportNeeded_mm(l, up_S, images);
-		if (opts_.skip_hopeless_levels && need_mm > 0 &&
-		    *(bound_mm ? bound_mm : (bound_mm = supportBound_mm(scene))) < need_mm)
+		if (opts_.skip_hopeless_levels && need_mm > 0)
 		{
-			++skipped;
-			continue;
+			if (!bound_mm) bound_mm = supportBound_mm(scene);
+			if (*bound_mm < need_mm)
+			{
+				++skipped;
+				continue;
+			}
 		}
 		RecognitionResult r = atLevel(scene, l, bounds, up_S, images, context.repeat, refined);
 		times += r.times;
